@@ -1,0 +1,142 @@
+#include "assembly.hpp"
+
+#include <Eigen/Dense>
+#include <stdexcept>
+#include <vector>
+
+namespace contactbody {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+namespace {
+
+double signed_area(const Point& a, const Point& b, const Point& c) {
+    return 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+}
+
+SparseMatrix from_triplets(int n, const Triplets& t) {
+    SparseMatrix m(n, n);
+    m.setFromTriplets(t.begin(), t.end());
+    m.makeCompressed();
+    return m;
+}
+
+// Coordinates centred and scaled to O(1): the six moment constraints span the same space
+// under any affine change of coordinates, and C C^T is far better conditioned this way.
+std::vector<Point> normalized_points(const Mesh& mesh) {
+    std::vector<Point> p(mesh.num_nodes());
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+        const Point q = mesh.point(n);
+        p[n] = {2 * q.x / mesh.width - 1, 2 * q.y / mesh.height - 1};
+    }
+    return p;
+}
+
+// Row of the symmetric-form constraint matrix for entry (i, j).
+Eigen::Matrix<double, 6, 1> moment_row(const Point& pi, const Point& pj) {
+    Eigen::Matrix<double, 6, 1> c;
+    c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), pi.x * pj.x,
+        0.5 * (pi.x * pj.y + pj.x * pi.y), pi.y * pj.y;
+    return c;
+}
+
+}  // namespace
+
+SparseMatrix stiffness_matrix(const Mesh& mesh, double lambda, double mu) {
+    Eigen::Matrix3d D;
+    D << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
+    Triplets t;
+    t.reserve(mesh.triangles.size() * 36);
+    for (const auto& tri : mesh.triangles) {
+        const Point p[3] = {mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2])};
+        const double area = signed_area(p[0], p[1], p[2]);
+        Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
+        for (int a = 0; a < 3; ++a) {
+            const Point& q1 = p[(a + 1) % 3];
+            const Point& q2 = p[(a + 2) % 3];
+            const double dNdx = (q1.y - q2.y) / (2 * area);
+            const double dNdy = (q2.x - q1.x) / (2 * area);
+            B(0, 2 * a) = dNdx;
+            B(1, 2 * a + 1) = dNdy;
+            B(2, 2 * a) = dNdy;
+            B(2, 2 * a + 1) = dNdx;
+        }
+        const Eigen::Matrix<double, 6, 6> Ke = area * B.transpose() * D * B;
+        for (int a = 0; a < 6; ++a)
+            for (int b = 0; b < 6; ++b)
+                t.emplace_back(2 * tri[a / 2] + a % 2, 2 * tri[b / 2] + b % 2, Ke(a, b));
+    }
+    return from_triplets(mesh.num_dofs(), t);
+}
+
+SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho) {
+    Triplets t;
+    t.reserve(mesh.triangles.size() * 9);
+    for (const auto& tri : mesh.triangles) {
+        const double area =
+            signed_area(mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2]));
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                t.emplace_back(tri[a], tri[b], rho * area / 12.0 * (a == b ? 2.0 : 1.0));
+    }
+    return from_triplets(mesh.num_nodes(), t);
+}
+
+std::array<double, 6> mass_moments(const Mesh& mesh, const SparseMatrix& m) {
+    Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero();
+    for (int j = 0; j < m.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+            s += it.value() * moment_row(mesh.point(it.row()), mesh.point(it.col()));
+    return {s[0], s[1], s[2], s[3], s[4], s[5]};
+}
+
+SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass) {
+    const std::vector<Point> p = normalized_points(mesh);
+    std::vector<char> is_contact(mesh.num_nodes(), 0);
+    for (int n : mesh.contact_nodes) is_contact[n] = 1;
+
+    // Target moments (of the consistent mass) and the kept entries.
+    Eigen::Matrix<double, 6, 1> target = Eigen::Matrix<double, 6, 1>::Zero();
+    Triplets kept;
+    for (int j = 0; j < scalar_mass.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(scalar_mass, j); it; ++it) {
+            target += it.value() * moment_row(p[it.row()], p[it.col()]);
+            if (!is_contact[it.row()] && !is_contact[it.col()])
+                kept.emplace_back(it.row(), it.col(), it.value());
+        }
+
+    // Least-Frobenius correction: m <- m - C^T (C C^T)^{-1} (C m - d).
+    Eigen::Matrix<double, 6, 6> CCt = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> Cm = Eigen::Matrix<double, 6, 1>::Zero();
+    for (const auto& e : kept) {
+        const auto c = moment_row(p[e.row()], p[e.col()]);
+        CCt += c * c.transpose();
+        Cm += e.value() * c;
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(CCt);
+    if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(5))
+        throw std::invalid_argument(
+            "mass redistribution: mesh too coarse (needs ny >= 2) to keep the six moments");
+    const Eigen::Matrix<double, 6, 1> y = CCt.ldlt().solve(Cm - target);
+
+    Triplets corrected;
+    corrected.reserve(kept.size());
+    for (const auto& e : kept)
+        corrected.emplace_back(e.row(), e.col(),
+                               e.value() - moment_row(p[e.row()], p[e.col()]).dot(y));
+    return from_triplets(mesh.num_nodes(), corrected);
+}
+
+SparseMatrix vector_mass_matrix(const SparseMatrix& mass_x, const SparseMatrix& mass_y) {
+    Triplets t;
+    t.reserve(mass_x.nonZeros() + mass_y.nonZeros());
+    for (int c = 0; c < 2; ++c) {
+        const SparseMatrix& m = c == 0 ? mass_x : mass_y;
+        for (int j = 0; j < m.outerSize(); ++j)
+            for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+                t.emplace_back(2 * it.row() + c, 2 * it.col() + c, it.value());
+    }
+    return from_triplets(2 * mass_x.rows(), t);
+}
+
+}  // namespace contactbody

@@ -1,0 +1,33 @@
+// Assembly of the P1 plane-strain stiffness A, the consistent mass M and the redistributed
+// mass M_r (SPEC §2), and the contact operators B_N, B_T.
+#pragma once
+
+#include <Eigen/Sparse>
+
+#include "mesh.hpp"
+
+namespace contactbody {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;  // column major, int indices
+using RowMajorSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Plane-strain stiffness on all 2*nodes dofs (no Dirichlet condition applied).
+SparseMatrix stiffness_matrix(const Mesh& mesh, double lambda, double mu);
+
+// Consistent scalar P1 mass matrix (one entry per node pair), density rho.
+SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho);
+
+// Khenous-Laborde-Renard redistribution of a scalar mass matrix: contact nodes' rows and
+// columns zeroed, the other entries (same pattern) corrected by the least change in the
+// Frobenius norm that restores the total mass, first and second moments. Throws
+// std::invalid_argument when the mesh is too coarse for the six moments to be matched.
+SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass);
+
+// The six moments used by the redistribution: sum m_ij, sum m_ij x_i, sum m_ij y_i,
+// sum m_ij x_i x_j, sum m_ij x_i y_j, sum m_ij y_i y_j.
+std::array<double, 6> mass_moments(const Mesh& mesh, const SparseMatrix& scalar_mass);
+
+// Vector mass matrix on 2*nodes dofs with block mass_x on the x components and mass_y on y.
+SparseMatrix vector_mass_matrix(const SparseMatrix& mass_x, const SparseMatrix& mass_y);
+
+}  // namespace contactbody

@@ -1,0 +1,110 @@
+#include "discretization.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace contactbody {
+
+namespace {
+
+[[noreturn]] void reject(const char* name, const std::string& rule, double value) {
+    std::ostringstream msg;
+    msg << name << " must be " << rule << " (got " << value << ")";
+    throw std::invalid_argument(msg.str());
+}
+
+void require_positive(const char* name, double value) {
+    if (!(std::isfinite(value) && value > 0)) reject(name, "finite and > 0", value);
+}
+
+// Selection matrix: one row per listed index, picking that entry of a vector of size n.
+SparseMatrix selector(const std::vector<int>& rows, int n) {
+    SparseMatrix s(static_cast<int>(rows.size()), n);
+    std::vector<Eigen::Triplet<double>> t;
+    for (size_t r = 0; r < rows.size(); ++r) t.emplace_back(static_cast<int>(r), rows[r], 1.0);
+    s.setFromTriplets(t.begin(), t.end());
+    return s;
+}
+
+}  // namespace
+
+void check_parameters(const SceneParameters& p) {
+    require_positive("width", p.width);
+    require_positive("height", p.height);
+    if (p.nx < 1 || p.nx > max_cells_per_direction)
+        reject("nx", "between 1 and " + std::to_string(max_cells_per_direction), p.nx);
+    if (p.ny < 1 || p.ny > max_cells_per_direction)
+        reject("ny", "between 1 and " + std::to_string(max_cells_per_direction), p.ny);
+    if (static_cast<long>(p.nx + 1) * (p.ny + 1) > max_nodes)
+        reject("nx", "such that (nx+1)(ny+1) <= " + std::to_string(max_nodes), p.nx);
+    require_positive("density", p.density);
+    require_positive("mu", p.mu);
+    if (!(std::isfinite(p.lambda) && p.lambda + p.mu > 0))
+        reject("lambda", "finite with lambda + mu > 0", p.lambda);
+    if (!(std::isfinite(p.friction_coefficient) && p.friction_coefficient >= 0))
+        reject("friction_coefficient", "finite and >= 0", p.friction_coefficient);
+    const int variant = static_cast<int>(p.mass_matrix);
+    if (variant < 0 || variant > 3) reject("mass_matrix", "0, 1, 2 or 3", variant);
+    if ((p.mass_matrix == MassVariant::redistributed_normal ||
+         p.mass_matrix == MassVariant::redistributed_both) &&
+        p.ny < 2)
+        reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
+    require_positive("internal_step", p.internal_step);
+    if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
+        reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
+    if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
+        reject("initial_gap", "finite and >= 0", p.initial_gap);
+}
+
+Discretization discretize(const SceneParameters& p) {
+    check_parameters(p);
+    Discretization d;
+    d.mesh = make_structured_mesh(p.width, p.height, p.nx, p.ny);
+    d.A = stiffness_matrix(d.mesh, p.lambda, p.mu);
+
+    const SparseMatrix scalar = scalar_mass_matrix(d.mesh, p.density);
+    SparseMatrix redistributed;
+    if (p.mass_matrix == MassVariant::redistributed_normal ||
+        p.mass_matrix == MassVariant::redistributed_both)
+        redistributed = redistributed_mass(d.mesh, scalar);
+    switch (p.mass_matrix) {
+        case MassVariant::redistributed_normal:
+            d.M = vector_mass_matrix(scalar, redistributed);
+            break;
+        case MassVariant::redistributed_both:
+            d.M = vector_mass_matrix(redistributed, redistributed);
+            break;
+        default:
+            d.M = vector_mass_matrix(scalar, scalar);
+    }
+
+    const int n = d.mesh.num_dofs();
+    std::vector<char> clamped(n, 0);
+    for (int node : d.mesh.top_nodes) clamped[dof_x(node)] = clamped[dof_y(node)] = 1;
+    d.free_index.assign(n, -1);
+    for (int dof = 0; dof < n; ++dof) {
+        if (clamped[dof]) {
+            d.clamped_dofs.push_back(dof);
+        } else {
+            d.free_index[dof] = static_cast<int>(d.free_dofs.size());
+            d.free_dofs.push_back(dof);
+        }
+    }
+    const SparseMatrix Pf = selector(d.free_dofs, n), Pc = selector(d.clamped_dofs, n);
+    const SparseMatrix PfT = Pf.transpose(), PcT = Pc.transpose();
+    d.M_free_rows = Pf * d.M;
+    d.M_clamped_rows = Pc * d.M;
+    d.A_clamped_rows = Pc * d.A;
+    d.A_free_clamped = Pf * d.A * PcT;
+    d.M_free_clamped = d.M_free_rows * PcT;
+    d.A_free = Pf * d.A * PfT;
+    d.M_free = d.M_free_rows * PfT;
+    for (int node : d.mesh.contact_nodes) {
+        d.contact_x.push_back(d.free_index[dof_x(node)]);
+        d.contact_y.push_back(d.free_index[dof_y(node)]);
+    }
+    return d;
+}
+
+}  // namespace contactbody

@@ -1,0 +1,55 @@
+// Scene parameters (SPEC §1-§4) and the space discretization they define: mesh, A, the
+// variant's mass matrix, and the split of the dofs into free and clamped (top edge) ones.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "assembly.hpp"
+
+namespace contactbody {
+
+// SPEC §2: the four situations of the paper's Fig. 7.
+enum class MassVariant : int {
+    standard = 0,
+    redistributed_normal = 1,
+    redistributed_both = 2,
+    standard_implicit_contact = 3,
+};
+
+struct SceneParameters {
+    double width = 0.1, height = 0.1;
+    int nx = 20, ny = 20;
+    double density = 1000, lambda = 300e6, mu = 150e6;
+    double friction_coefficient = 1.2;
+    MassVariant mass_matrix = MassVariant::redistributed_normal;
+    double internal_step = 4e-6;
+    double contact_tolerance = 1e-10;
+    double initial_gap = 0;
+};
+
+// Limits shared by the solver and the FMI layer (which also writes them as min/max).
+constexpr int max_cells_per_direction = 4096;
+constexpr long max_nodes = 4'000'000;
+
+// Throws std::invalid_argument naming the first offending parameter (SPEC names).
+void check_parameters(const SceneParameters& p);
+
+struct Discretization {
+    Mesh mesh;
+    SparseMatrix A;                 // all dofs
+    SparseMatrix M;                 // the variant's mass matrix, all dofs
+    std::vector<int> free_dofs;     // ascending
+    std::vector<int> clamped_dofs;  // top edge, x and y, ascending
+    std::vector<int> free_index;    // dof -> position in free_dofs, or -1 when clamped
+    // Blocks used by the stepper: rows free / clamped, columns all / clamped.
+    SparseMatrix M_free_rows, A_free_clamped, M_free_clamped;
+    RowMajorSparseMatrix M_clamped_rows, A_clamped_rows;  // few rows, read row by row
+    SparseMatrix A_free, M_free;    // free x free
+    // Contact node c: free positions of its x and y dofs.
+    std::vector<int> contact_x, contact_y;
+};
+
+Discretization discretize(const SceneParameters& p);
+
+}  // namespace contactbody

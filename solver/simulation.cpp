@@ -1,0 +1,96 @@
+#include "simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace contactbody {
+
+Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
+                       double start_time)
+    : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
+    state_.time = start_time;
+    product_.resize(state_.u.size());
+}
+
+int Simulation::substeps_for(double h) const {
+    // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off.
+    const double ratio = h / stepper_.parameters().internal_step;
+    return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-12))));
+}
+
+void Simulation::do_step(double h, const StepInputs& in) {
+    if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("step size must be > 0");
+    const int n = substeps_for(h);
+    const double dt = h / n, t0 = state_.time;
+    saved_ = state_;
+    const double saved_work = friction_work_;
+
+    Observables avg;
+    SubstepLoad load;
+    const Mesh& mesh = stepper_.discretization().mesh;
+    try {
+        for (int k = 0; k < n; ++k) {
+            const double s0 = k * dt, s1 = (k + 1) * dt;
+            load.top_start = in.top_displacement + in.top_velocity * s0;
+            load.top_end = in.top_displacement + in.top_velocity * s1;
+            load.top_rate = in.top_velocity;
+            load.foundation_velocity =
+                in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
+            if (k == 0) {
+                // Held inputs may have jumped since the last step: the clamp moves with them.
+                for (int node : mesh.top_nodes) {
+                    state_.u[dof_y(node)] = load.top_start;
+                    state_.v[dof_y(node)] = load.top_rate;
+                }
+            }
+            const SubstepReport r = stepper_.substep(state_, dt, load);
+            friction_work_ += r.friction_work;
+            avg.normal_force += r.normal_force;
+            avg.friction_force += r.friction_force;
+            avg.corner_pressure -= r.corner_lambda_N;
+            avg.corner_friction += r.corner_lambda_T;
+            avg.top_reaction_x += r.top_reaction_x;
+            avg.top_reaction_y += r.top_reaction_y;
+            avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
+            avg.active_contact_nodes = r.active_nodes;
+            avg.slipping_contact_nodes = r.slipping_nodes;
+        }
+        if (!state_.u.allFinite() || !state_.v.allFinite()) {
+            std::ostringstream msg;
+            msg << "state became non-finite during the step from t = " << t0;
+            throw NumericalFailure(msg.str());
+        }
+    } catch (...) {
+        state_ = saved_;
+        friction_work_ = saved_work;
+        throw;
+    }
+    state_.time = t0 + h;  // no drift from summing substeps
+
+    const double share = 0.5 * mesh.hx();  // boundary length carried by the corner node
+    avg.normal_force /= n;
+    avg.friction_force /= n;
+    avg.corner_pressure /= n * share;
+    avg.corner_friction /= n * share;
+    avg.top_reaction_x /= n;
+    avg.top_reaction_y /= n;
+    observables_ = avg;
+    energies_current_ = false;
+}
+
+const Observables& Simulation::observables() {
+    if (!energies_current_) {
+        const Discretization& d = stepper_.discretization();
+        product_.noalias() = d.M * state_.v;
+        observables_.kinetic_energy = 0.5 * state_.v.dot(product_);
+        product_.noalias() = d.A * state_.u;
+        observables_.strain_energy = 0.5 * state_.u.dot(product_);
+        observables_.energy = observables_.kinetic_energy + observables_.strain_energy;
+        observables_.friction_work = friction_work_;
+        observables_.energy_minus_friction_work = observables_.energy - friction_work_;
+        energies_current_ = true;
+    }
+    return observables_;
+}
+
+}  // namespace contactbody

@@ -1,0 +1,58 @@
+// Communication steps of the body (SPEC §3) and the observables of SPEC §4.
+#pragma once
+
+#include "stepper.hpp"
+
+namespace contactbody {
+
+struct Observables {
+    double energy = 0, kinetic_energy = 0, strain_energy = 0;
+    double friction_work = 0, energy_minus_friction_work = 0;
+    // Averaged over the last communication step.
+    double normal_force = 0, friction_force = 0;
+    double corner_pressure = 0, corner_friction = 0;
+    double top_reaction_x = 0, top_reaction_y = 0;
+    double max_penetration = 0;  // over the substeps of the last communication step
+    int active_contact_nodes = 0, slipping_contact_nodes = 0;  // at the last substep
+};
+
+// Inputs over one communication step: values at its start and their time derivatives
+// (zero derivatives hold the inputs constant, as FMI 2.0 does without input derivatives).
+struct StepInputs {
+    double foundation_velocity = 0, top_displacement = 0;
+    double foundation_acceleration = 0, top_velocity = 0;
+};
+
+class NumericalFailure : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class Simulation {
+public:
+    Simulation(const SceneParameters& params, double initial_top_displacement,
+               double start_time = 0);
+
+    // Runs n = ceil(h / internal_step) substeps of size h / n. On failure (contact solve or a
+    // non-finite state) the state is restored to the start of the step and the exception
+    // (ContactSolveError or NumericalFailure) propagates.
+    void do_step(double h, const StepInputs& inputs);
+
+    const Observables& observables();  // energies computed here, only when asked
+    double time() const { return state_.time; }
+    const State& state() const { return state_; }
+    Stepper& stepper() { return stepper_; }
+    void set_friction_coefficient(double friction) { stepper_.set_friction_coefficient(friction); }
+    // Substeps per step for a step of size h.
+    int substeps_for(double h) const;
+
+private:
+    Stepper stepper_;
+    State state_, saved_;
+    double friction_work_ = 0;
+    Observables observables_;
+    bool energies_current_ = false;
+    Eigen::VectorXd product_;
+};
+
+}  // namespace contactbody

@@ -1,0 +1,92 @@
+// One midpoint substep with frictional contact (SPEC §3, paper eq. 20-22).
+//
+// The unknown is u^{k+1/2}. On the free dofs it solves
+//   K u = M (4/dt^2 u^k + 2/dt v^k) - K_fc u_c^{k+1/2} + B^T lambda,   K = 4/dt^2 M + A,
+// condensed to the contact unknowns: u = u0 + K^-1 B^T lambda with u0 = K^-1 rhs, so that
+// B u = B u0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square).
+#pragma once
+
+#include <Eigen/CholmodSupport>
+#include <memory>
+
+#include "contact_solver.hpp"
+#include "discretization.hpp"
+
+namespace contactbody {
+
+struct State {
+    Eigen::VectorXd u, v;    // all dofs (clamped ones carry the top displacement)
+    Eigen::VectorXd lambda;  // last multipliers: lambda_N[n_c], then lambda_T[n_c] if F > 0
+    double time = 0;
+};
+
+// Loads over one substep: top displacement at its ends (and its rate, for the clamped
+// velocity), foundation velocity.
+struct SubstepLoad {
+    double top_start = 0, top_end = 0, top_rate = 0;
+    double foundation_velocity = 0;
+};
+
+// What one substep contributes to the observables (forces on the body, N/m).
+struct SubstepReport {
+    double normal_force = 0;       // -sum lambda_N
+    double friction_force = 0;     // sum lambda_T
+    double corner_lambda_N = 0, corner_lambda_T = 0;
+    double top_reaction_x = 0, top_reaction_y = 0;
+    double friction_work = 0;      // sum lambda_T (u_x^{k+1} - u_x^k)
+    double max_penetration = 0;    // max(0, -gap) at u^{k+1}
+    int active_nodes = 0, slipping_nodes = 0;
+    int contact_iterations = 0;
+};
+
+// The last substep's contact quantities recomputed from the displacement u^{k+1/2}
+// (not from the condensed problem), so that tests can check the contact law independently.
+struct ContactSnapshot {
+    Eigen::VectorXd normal_displacement;  // B_N u^{k+1/2}
+    Eigen::VectorXd gap_limit;            // B_N u^{k+1/2} <= gap_limit
+    Eigen::VectorXd slip;                 // B_T u^{k+1/2} - slip origin (sign of the slip velocity)
+    Eigen::VectorXd lambda_N, lambda_T;
+    Eigen::VectorXd delassus_diagonal;    // diag(W): displacement per unit multiplier
+};
+
+class Stepper {
+public:
+    explicit Stepper(const SceneParameters& params);
+    ~Stepper();
+
+    const Discretization& discretization() const { return disc_; }
+    const SceneParameters& parameters() const { return params_; }
+    int num_contact_nodes() const { return static_cast<int>(disc_.contact_x.size()); }
+
+    // The paper's initial state: u_x = 0, u_y = top * y / H, v = 0.
+    State initial_state(double top_displacement) const;
+    // Friction coefficient is tunable between substeps (F = 0 drops the tangential unknowns).
+    void set_friction_coefficient(double friction);
+
+    // Advances s by one substep of size dt. Throws ContactSolveError if the contact problem
+    // cannot be solved to the tolerance; s is then unchanged but for lambda.
+    SubstepReport substep(State& s, double dt, const SubstepLoad& load);
+
+    const ContactSnapshot& last_contact() const { return snapshot_; }
+    int factorizations() const { return factorizations_; }
+    ContactSolverOptions& contact_options() { return options_; }
+
+private:
+    struct Factor;
+    Factor& factor_for(double dt);
+    void setup_contact_problem(const Factor& f);
+
+    SceneParameters params_;
+    Discretization disc_;
+    ContactSolverOptions options_;
+    ContactSolver solver_;
+    ContactProblem problem_;
+    std::unique_ptr<Factor> cache_[2];  // most recent first: masters alternate step sizes
+    const Factor* problem_factor_ = nullptr;
+    int factorizations_ = 0;
+    ContactSnapshot snapshot_;
+    // Workspace, sized once.
+    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, scratch_free_;
+};
+
+}  // namespace contactbody

@@ -93,7 +93,7 @@ void Stepper::setup_contact_problem(const Factor& f) {
     problem_.W = friction ? f.delassus : Eigen::MatrixXd(f.delassus.topLeftCorner(nc, nc));
     problem_.a.resize(friction ? 2 * nc : nc);
     problem_.friction = params_.friction_coefficient;
-    snapshot_.delassus_diagonal = f.delassus.diagonal().head(nc);
+    snapshot_.delassus_diagonal = f.delassus.diagonal();
     problem_factor_ = &f;
 }
 

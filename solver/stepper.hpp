@@ -46,7 +46,7 @@ struct ContactSnapshot {
     Eigen::VectorXd gap_limit;            // B_N u^{k+1/2} <= gap_limit
     Eigen::VectorXd slip;                 // B_T u^{k+1/2} - slip origin (sign of the slip velocity)
     Eigen::VectorXd lambda_N, lambda_T;
-    Eigen::VectorXd delassus_diagonal;    // diag(W): displacement per unit multiplier
+    Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
 };
 
 class Stepper {

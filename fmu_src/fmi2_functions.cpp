@@ -1,0 +1,332 @@
+// The exported FMI 2.0 Co-Simulation functions. Each checks its state and pointers in its
+// first lines (BEGIN / REQUIRE), then runs its body through `guarded`, which turns the
+// model's exceptions into fmi2Status and a log message naming the function.
+#include <cmath>
+#include <cstring>
+#include <new>
+
+#include "instance.hpp"
+
+using namespace contactbody;
+using namespace contactbody::fmu;
+
+namespace {
+
+constexpr unsigned any_state =
+    Instantiated | InitializationMode | StepComplete | StepFailed | Terminated | Error;
+constexpr unsigned readable = InitializationMode | StepComplete | StepFailed | Terminated | Error;
+constexpr unsigned settable = Instantiated | InitializationMode | StepComplete;
+
+template <class Body>
+fmi2Status guarded(Instance* instance, const char* function, Body&& body) {
+    try {
+        return body();
+    } catch (const StepDiscarded& e) {
+        instance->log(fmi2Discard, LogCategory::error, std::string(function) + ": " + e.what());
+        return fmi2Discard;
+    } catch (const ModelError& e) {
+        instance->error(function, e.what());
+        return fmi2Error;
+    } catch (const std::bad_alloc&) {
+        instance->error(function, "out of memory");
+    } catch (const std::exception& e) {
+        instance->error(function, e.what());
+    } catch (...) {
+        instance->error(function, "unknown failure");
+    }
+    instance->state = Error;  // an unexpected failure: only fmi2Reset or fmi2FreeInstance help
+    return fmi2Error;
+}
+
+bool initialized(const Instance* instance) {
+    return instance->state & (StepComplete | StepFailed | Terminated | Error);
+}
+
+const Variable& variable(unsigned vr) {
+    const Variable* v = find_variable(vr);
+    if (!v) throw ModelError("unknown value reference " + std::to_string(vr));
+    return *v;
+}
+
+}  // namespace
+
+#define BEGIN(function, states)                                   \
+    if (!c) return fmi2Error;                                     \
+    auto* instance = static_cast<Instance*>(c);                   \
+    if (!instance->allowed(function, states)) return fmi2Error;
+#define REQUIRE(function, pointer, count)                                              \
+    if ((count) > 0 && !(pointer)) {                                                    \
+        instance->error(function, std::string(#pointer) + " is NULL but its size is " + \
+                                      std::to_string(count));                          \
+        return fmi2Error;                                                               \
+    }
+#define NOT_SUPPORTED(function, what)                                      \
+    BEGIN(function, any_state)                                             \
+    instance->error(function, std::string("not supported: ") + (what));    \
+    return fmi2Error;
+
+extern "C" {
+
+const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char* fmi2GetVersion(void) { return fmi2Version; }
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String /*fmuResourceLocation*/,
+                              const fmi2CallbackFunctions* functions, fmi2Boolean /*visible*/,
+                              fmi2Boolean loggingOn) {
+    if (!functions) return nullptr;
+    auto fail = [&](const char* message) -> fmi2Component {
+        if (functions->logger)
+            functions->logger(functions->componentEnvironment, instanceName ? instanceName : "",
+                              fmi2Error, "logStatusError", "fmi2Instantiate: %s", message);
+        return nullptr;
+    };
+    if (!instanceName || !*instanceName) return fail("instanceName is missing");
+    if (fmuType != fmi2CoSimulation) return fail("only fmi2CoSimulation is supported");
+    if (!fmuGUID || std::strcmp(fmuGUID, guid) != 0)
+        return fail("fmuGUID does not match this FMU's modelDescription.xml");
+    try {
+        return new Instance(instanceName, functions, loggingOn);
+    } catch (...) {
+        return fail("out of memory");
+    }
+}
+
+void fmi2FreeInstance(fmi2Component c) { delete static_cast<Instance*>(c); }
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+    BEGIN("fmi2SetDebugLogging", any_state)
+    return instance->set_debug_logging(loggingOn, nCategories, categories);
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean /*toleranceDefined*/,
+                               fmi2Real /*tolerance*/, fmi2Real startTime,
+                               fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    BEGIN("fmi2SetupExperiment", Instantiated)
+    return guarded(instance, "fmi2SetupExperiment", [&] {
+        if (stopTimeDefined && !(stopTime >= startTime))
+            throw ModelError("stopTime must be >= startTime");
+        instance->model.set_start_time(startTime);
+        instance->last_successful_time = startTime;
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    BEGIN("fmi2EnterInitializationMode", Instantiated)
+    instance->state = InitializationMode;
+    return fmi2OK;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+    BEGIN("fmi2ExitInitializationMode", InitializationMode)
+    return guarded(instance, "fmi2ExitInitializationMode", [&] {
+        instance->model.initialize();
+        instance->state = StepComplete;
+        instance->log(fmi2OK, LogCategory::events, "initialized");
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) {
+    BEGIN("fmi2Terminate", StepComplete | StepFailed)
+    instance->state = Terminated;
+    return fmi2OK;
+}
+
+fmi2Status fmi2Reset(fmi2Component c) {
+    BEGIN("fmi2Reset", any_state)
+    instance->model.reset();
+    instance->last_successful_time = 0;
+    instance->state = Instantiated;
+    return fmi2OK;
+}
+
+// ---- getters and setters ----
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       fmi2Real value[]) {
+    BEGIN("fmi2GetReal", readable)
+    REQUIRE("fmi2GetReal", vr, nvr) REQUIRE("fmi2GetReal", value, nvr)
+    return guarded(instance, "fmi2GetReal", [&] {
+        for (size_t k = 0; k < nvr; ++k) value[k] = instance->model.get_real(variable(vr[k]));
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Integer value[]) {
+    BEGIN("fmi2GetInteger", readable)
+    REQUIRE("fmi2GetInteger", vr, nvr) REQUIRE("fmi2GetInteger", value, nvr)
+    return guarded(instance, "fmi2GetInteger", [&] {
+        for (size_t k = 0; k < nvr; ++k) value[k] = instance->model.get_integer(variable(vr[k]));
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
+    BEGIN("fmi2GetBoolean", readable)
+    REQUIRE("fmi2GetBoolean", vr, nvr) REQUIRE("fmi2GetBoolean", value, nvr)
+    return guarded(instance, "fmi2GetBoolean", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
+                             " is not a Boolean variable (this FMU has none)");
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) {
+    BEGIN("fmi2GetString", readable)
+    REQUIRE("fmi2GetString", vr, nvr) REQUIRE("fmi2GetString", value, nvr)
+    return guarded(instance, "fmi2GetString", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
+                             " is not a String variable (this FMU has none)");
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       const fmi2Real value[]) {
+    BEGIN("fmi2SetReal", settable)
+    REQUIRE("fmi2SetReal", vr, nvr) REQUIRE("fmi2SetReal", value, nvr)
+    return guarded(instance, "fmi2SetReal", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            instance->model.set_real(variable(vr[k]), value[k], initialized(instance));
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Integer value[]) {
+    BEGIN("fmi2SetInteger", settable)
+    REQUIRE("fmi2SetInteger", vr, nvr) REQUIRE("fmi2SetInteger", value, nvr)
+    return guarded(instance, "fmi2SetInteger", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            instance->model.set_integer(variable(vr[k]), value[k], initialized(instance));
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Boolean value[]) {
+    BEGIN("fmi2SetBoolean", settable)
+    REQUIRE("fmi2SetBoolean", vr, nvr) REQUIRE("fmi2SetBoolean", value, nvr)
+    return guarded(instance, "fmi2SetBoolean", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
+                             " is not a Boolean variable (this FMU has none)");
+        return fmi2OK;
+    });
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[]) {
+    BEGIN("fmi2SetString", settable)
+    REQUIRE("fmi2SetString", vr, nvr) REQUIRE("fmi2SetString", value, nvr)
+    return guarded(instance, "fmi2SetString", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
+                             " is not a String variable (this FMU has none)");
+        return fmi2OK;
+    });
+}
+
+// ---- stepping and status ----
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize,
+                      fmi2Boolean /*noSetFMUStatePriorToCurrentPoint*/) {
+    BEGIN("fmi2DoStep", StepComplete)
+    const fmi2Status status = guarded(instance, "fmi2DoStep", [&] {
+        instance->model.do_step(currentCommunicationPoint, communicationStepSize);
+        instance->last_successful_time = instance->model.time();
+        return fmi2OK;
+    });
+    if (status == fmi2Discard) instance->state = StepFailed;
+    return status;
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c) {
+    NOT_SUPPORTED("fmi2CancelStep", "steps are never asynchronous")
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind /*s*/, fmi2Status* /*value*/) {
+    NOT_SUPPORTED("fmi2GetStatus", "steps are never asynchronous")
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
+    BEGIN("fmi2GetRealStatus", StepComplete | StepFailed | Terminated)
+    REQUIRE("fmi2GetRealStatus", value, 1)
+    if (s != fmi2LastSuccessfulTime) {
+        instance->error("fmi2GetRealStatus", "only fmi2LastSuccessfulTime is available");
+        return fmi2Error;
+    }
+    *value = instance->last_successful_time;
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind /*s*/,
+                                fmi2Integer* /*value*/) {
+    NOT_SUPPORTED("fmi2GetIntegerStatus", "no integer status is defined")
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
+    BEGIN("fmi2GetBooleanStatus", StepComplete | StepFailed | Terminated)
+    REQUIRE("fmi2GetBooleanStatus", value, 1)
+    if (s != fmi2Terminated) {
+        instance->error("fmi2GetBooleanStatus", "only fmi2Terminated is available");
+        return fmi2Error;
+    }
+    // After a discarded step the slave asks to end the simulation: retrying the same step
+    // would fail the same way.
+    *value = instance->state == StepFailed ? fmi2True : fmi2False;
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind /*s*/,
+                               fmi2String* /*value*/) {
+    NOT_SUPPORTED("fmi2GetStringStatus", "no string status is defined")
+}
+
+// ---- capabilities this FMU does not declare ----
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
+                                       const fmi2Integer[], const fmi2Real[]) {
+    NOT_SUPPORTED("fmi2SetRealInputDerivatives", "canInterpolateInputs is false")
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
+                                        const fmi2Integer[], fmi2Real[]) {
+    NOT_SUPPORTED("fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0")
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference[], size_t,
+                                        const fmi2ValueReference[], size_t, const fmi2Real[],
+                                        fmi2Real[]) {
+    NOT_SUPPORTED("fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false")
+}
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate*) {
+    NOT_SUPPORTED("fmi2GetFMUstate", "canGetAndSetFMUstate is false")
+}
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate) {
+    NOT_SUPPORTED("fmi2SetFMUstate", "canGetAndSetFMUstate is false")
+}
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate*) {
+    NOT_SUPPORTED("fmi2FreeFMUstate", "canGetAndSetFMUstate is false")
+}
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate, size_t*) {
+    NOT_SUPPORTED("fmi2SerializedFMUstateSize", "canSerializeFMUstate is false")
+}
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate, fmi2Byte[], size_t) {
+    NOT_SUPPORTED("fmi2SerializeFMUstate", "canSerializeFMUstate is false")
+}
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte[], size_t, fmi2FMUstate*) {
+    NOT_SUPPORTED("fmi2DeSerializeFMUstate", "canSerializeFMUstate is false")
+}
+
+}  // extern "C"

@@ -1,0 +1,128 @@
+#include "model.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace contactbody::fmu {
+
+namespace {
+
+template <class... Parts>
+std::string concat(const Parts&... parts) {
+    std::ostringstream s;
+    s.precision(17);
+    (s << ... << parts);
+    return s.str();
+}
+
+}  // namespace
+
+void ContactBodyModel::reset() {
+    values_ = start_values();
+    sim_.reset();
+    rebuild_ = true;
+    start_time_ = 0;
+}
+
+void ContactBodyModel::set_start_time(double t) {
+    if (!std::isfinite(t)) throw ModelError(concat("start time must be finite (got ", t, ")"));
+    start_time_ = t;
+    rebuild_ = true;
+}
+
+void ContactBodyModel::check_value(const Variable& v, double value, bool initialized) const {
+    if (v.causality == Causality::output)
+        throw ModelError(concat("variable ", v.name, " is an output and cannot be set"));
+    if (initialized && !v.settable_after_initialization())
+        throw ModelError(concat("parameter ", v.name,
+                                " is fixed and cannot be set after initialization"));
+    if (!std::isfinite(value))
+        throw ModelError(concat("variable ", v.name, " must be finite (got ", value, ")"));
+    const bool below = v.min_exclusive ? !(value > v.min) : value < v.min;
+    if (below || value > v.max) {
+        throw ModelError(concat("variable ", v.name, " = ", value, " is out of range: must be ",
+                                v.min_exclusive ? "> " : ">= ", v.min, " and <= ", v.max));
+    }
+}
+
+void ContactBodyModel::set_real(const Variable& v, double value, bool initialized) {
+    if (!v.real) throw ModelError(concat("variable ", v.name, " is not of type Real"));
+    check_value(v, value, initialized);
+    v.real(values_) = value;
+    if (!initialized) {
+        rebuild_ = true;  // parameters and initial inputs define the initial state
+    } else if (sim_ && &v.real(values_) == &values_.friction_coefficient) {
+        sim_->set_friction_coefficient(value);
+    }
+}
+
+void ContactBodyModel::set_integer(const Variable& v, int value, bool initialized) {
+    if (!v.integer)
+        throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
+    check_value(v, value, initialized);
+    v.integer(values_) = value;
+    if (!initialized) rebuild_ = true;
+}
+
+double ContactBodyModel::get_real(const Variable& v) {
+    if (!v.real) throw ModelError(concat("variable ", v.name, " is not of type Real"));
+    if (v.causality == Causality::output) refresh_outputs();
+    return v.real(values_);
+}
+
+int ContactBodyModel::get_integer(const Variable& v) {
+    if (!v.integer)
+        throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
+    if (v.causality == Causality::output) refresh_outputs();
+    return v.integer(values_);
+}
+
+void ContactBodyModel::initialize() {
+    if (!rebuild_ && sim_) return;
+    try {
+        sim_ = std::make_unique<Simulation>(values_.scene(), values_.top_displacement,
+                                            start_time_);
+    } catch (const std::invalid_argument& e) {
+        sim_.reset();
+        throw ModelError(e.what());
+    }
+    values_.out = Observables{};
+    rebuild_ = false;
+}
+
+void ContactBodyModel::refresh_outputs() {
+    initialize();  // outputs read in initialization mode come from the initial state
+    const Observables& o = sim_->observables();
+    values_.out = o;
+}
+
+double ContactBodyModel::time() const { return sim_ ? sim_->time() : start_time_; }
+
+void ContactBodyModel::do_step(double current_time, double h) {
+    if (!sim_ || rebuild_) throw ModelError("the model is not initialized");
+    if (!(std::isfinite(h) && h > 0))
+        throw ModelError(concat("communicationStepSize must be finite and > 0 (got ", h, ")"));
+    const double t = sim_->time();
+    if (!std::isfinite(current_time) ||
+        std::abs(current_time - t) > 1e-9 * std::max(1.0, std::abs(t)) + 1e-12)
+        throw ModelError(concat("currentCommunicationPoint ", current_time,
+                                " does not match the FMU's time ", t));
+    const double steps = h / values_.internal_step;
+    if (steps > 1e8)
+        throw ModelError(concat("communicationStepSize ", h, " needs ", steps,
+                                " substeps of internal_step; use smaller steps"));
+    StepInputs in;
+    in.foundation_velocity = values_.foundation_velocity;
+    in.top_displacement = values_.top_displacement;
+    try {
+        sim_->do_step(h, in);
+    } catch (const ContactSolveError& e) {
+        throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
+    } catch (const NumericalFailure& e) {
+        throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(e.what());
+    }
+}
+
+}  // namespace contactbody::fmu

@@ -1,0 +1,109 @@
+#include "variables.hpp"
+
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+namespace contactbody::fmu {
+
+namespace {
+
+constexpr double none = std::numeric_limits<double>::quiet_NaN();
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// Argument order of Variable after the description: start, min, max, min_exclusive, accessors.
+#define ACCESS_REAL(field) [](Values& v) -> double& { return v.field; }, nullptr
+#define ACCESS_INT(field) nullptr, [](Values& v) -> int& { return v.field; }
+
+using T = Type;
+using C = Causality;
+using V = Variability;
+
+const std::vector<Variable> table = {
+    // Parameters (SPEC §4)
+    {"width", 1, T::Real, C::parameter, V::fixed, "m", "Width W of the body", 0.1, 0, inf, true, ACCESS_REAL(width)},
+    {"height", 2, T::Real, C::parameter, V::fixed, "m", "Height H of the body", 0.1, 0, inf, true, ACCESS_REAL(height)},
+    {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, false, ACCESS_INT(nx)},
+    {"ny", 4, T::Integer, C::parameter, V::fixed, "", "Cells along y", 20, 1, max_cells_per_direction, false, ACCESS_INT(ny)},
+    {"density", 5, T::Real, C::parameter, V::fixed, "kg/m3", "Density rho", 1000, 0, inf, true, ACCESS_REAL(density)},
+    {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, false, ACCESS_REAL(lambda)},
+    {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 0, inf, true, ACCESS_REAL(mu)},
+    {"friction_coefficient", 8, T::Real, C::parameter, V::tunable, "", "Coulomb friction coefficient F", 1.2, 0, inf, false, ACCESS_REAL(friction_coefficient)},
+    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, 3, false, ACCESS_INT(mass_matrix)},
+    {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 0, inf, true, ACCESS_REAL(internal_step)},
+    {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve", 1e-10, 0, 1, true, ACCESS_REAL(contact_tolerance)},
+    {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},
+    // Inputs
+    {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
+    {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
+    // Outputs
+    {"energy", 100, T::Real, C::output, V::continuous, "J/m", "Total energy E (paper eq. 19) with the variant's mass matrix", none, none, none, false, ACCESS_REAL(out.energy)},
+    {"kinetic_energy", 101, T::Real, C::output, V::continuous, "J/m", "Kinetic part of E", none, none, none, false, ACCESS_REAL(out.kinetic_energy)},
+    {"strain_energy", 102, T::Real, C::output, V::continuous, "J/m", "Strain part of E", none, none, none, false, ACCESS_REAL(out.strain_energy)},
+    {"friction_work", 103, T::Real, C::output, V::continuous, "J/m", "Work xi of friction on the body since the start", none, none, none, false, ACCESS_REAL(out.friction_work)},
+    {"energy_minus_friction_work", 104, T::Real, C::output, V::continuous, "J/m", "E - xi (paper Fig. 8)", none, none, none, false, ACCESS_REAL(out.energy_minus_friction_work)},
+    {"normal_force", 105, T::Real, C::output, V::continuous, "N/m", "Total normal contact force on the body, averaged over the last step", none, none, none, false, ACCESS_REAL(out.normal_force)},
+    {"friction_force", 106, T::Real, C::output, V::continuous, "N/m", "Total friction force on the body (x), averaged over the last step", none, none, none, false, ACCESS_REAL(out.friction_force)},
+    {"corner_pressure", 107, T::Real, C::output, V::continuous, "Pa", "Contact pressure at node (0,0), averaged over the last step", none, none, none, false, ACCESS_REAL(out.corner_pressure)},
+    {"corner_friction", 108, T::Real, C::output, V::continuous, "Pa", "Friction force density at node (0,0), averaged over the last step", none, none, none, false, ACCESS_REAL(out.corner_friction)},
+    {"top_reaction_x", 109, T::Real, C::output, V::continuous, "N/m", "Force of the clamp on the body (x), averaged over the last step", none, none, none, false, ACCESS_REAL(out.top_reaction_x)},
+    {"top_reaction_y", 110, T::Real, C::output, V::continuous, "N/m", "Force of the clamp on the body (y), averaged over the last step", none, none, none, false, ACCESS_REAL(out.top_reaction_y)},
+    {"active_contact_nodes", 111, T::Integer, C::output, V::discrete, "", "Contact nodes in contact at the last substep", none, none, none, false, ACCESS_INT(out.active_contact_nodes)},
+    {"slipping_contact_nodes", 112, T::Integer, C::output, V::discrete, "", "Contact nodes slipping at the last substep", none, none, none, false, ACCESS_INT(out.slipping_contact_nodes)},
+    {"max_penetration", 113, T::Real, C::output, V::continuous, "m", "Largest penetration over the contact nodes and substeps of the last step", none, none, none, false, ACCESS_REAL(out.max_penetration)},
+};
+
+}  // namespace
+
+SceneParameters Values::scene() const {
+    SceneParameters p;
+    p.width = width;
+    p.height = height;
+    p.nx = nx;
+    p.ny = ny;
+    p.density = density;
+    p.lambda = lambda;
+    p.mu = mu;
+    p.friction_coefficient = friction_coefficient;
+    p.mass_matrix = static_cast<MassVariant>(mass_matrix);
+    p.internal_step = internal_step;
+    p.contact_tolerance = contact_tolerance;
+    p.initial_gap = initial_gap;
+    return p;
+}
+
+const std::vector<Variable>& variables() { return table; }
+
+const Variable* find_variable(unsigned value_reference) {
+    static const std::unordered_map<unsigned, const Variable*> index = [] {
+        std::unordered_map<unsigned, const Variable*> m;
+        for (const Variable& v : table) m.emplace(v.value_reference, &v);
+        return m;
+    }();
+    const auto it = index.find(value_reference);
+    return it == index.end() ? nullptr : it->second;
+}
+
+Values start_values() {
+    Values values{};
+    for (const Variable& v : table) {
+        if (v.causality == Causality::output) continue;
+        if (v.real) v.real(values) = v.start;
+        else v.integer(values) = static_cast<int>(v.start);
+    }
+    return values;
+}
+
+const std::vector<std::string>& mass_matrix_items() {
+    static const std::vector<std::string> items = {
+        "standard", "redistributed_normal", "redistributed_both", "standard_implicit_contact"};
+    return items;
+}
+
+const std::vector<std::string>& log_categories() {
+    static const std::vector<std::string> categories = {
+        "logEvents", "logStatusWarning", "logStatusError", "logAll", "logContactSolver"};
+    return categories;
+}
+
+}  // namespace contactbody::fmu

@@ -1,0 +1,61 @@
+// The FMU's variables, declared once (SPEC §4). The FMI layer reads and writes through this
+// table and generate_model_description writes modelDescription.xml from it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace contactbody::fmu {
+
+constexpr const char* model_identifier = "ContactBody";
+constexpr const char* guid = "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
+
+// Everything the variables read and write, as plain data.
+struct Values {
+    double width, height, density, lambda, mu, friction_coefficient;
+    int nx, ny, mass_matrix;
+    double internal_step, contact_tolerance, initial_gap;
+    double foundation_velocity, top_displacement;
+    Observables out;
+
+    SceneParameters scene() const;
+};
+
+enum class Type { Real, Integer, Enumeration };
+enum class Causality { parameter, input, output };
+enum class Variability { fixed, tunable, continuous, discrete };
+
+struct Variable {
+    const char* name;
+    unsigned value_reference;
+    Type type;
+    Causality causality;
+    Variability variability;
+    const char* unit;  // "" for none
+    const char* description;
+    double start;      // for parameters and inputs
+    double min, max;   // inclusive limits written to the XML; NaN for none
+    bool min_exclusive;  // the value must be > min (not expressible in the XML)
+    double& (*real)(Values&);  // exactly one of real / integer is set, by type
+    int& (*integer)(Values&);
+
+    bool is_real() const { return type == Type::Real; }
+    bool settable_after_initialization() const {
+        return causality == Causality::input || variability == Variability::tunable;
+    }
+};
+
+const std::vector<Variable>& variables();
+// nullptr when no variable has this reference.
+const Variable* find_variable(unsigned value_reference);
+// Values with every start value.
+Values start_values();
+
+// Names of the enumeration items of mass_matrix, in value order (SPEC §2).
+const std::vector<std::string>& mass_matrix_items();
+// Log categories, in the order of the XML.
+const std::vector<std::string>& log_categories();
+
+}  // namespace contactbody::fmu

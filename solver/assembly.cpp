@@ -1,6 +1,7 @@
 #include "assembly.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <stdexcept>
 #include <vector>
 
@@ -124,7 +125,24 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     for (const auto& e : kept)
         corrected.emplace_back(e.row(), e.col(),
                                e.value() - moment_row(p[e.row()], p[e.col()]).dot(y));
-    return from_triplets(mesh.num_nodes(), corrected);
+    SparseMatrix redistributed = from_triplets(mesh.num_nodes(), corrected);
+
+    // The minimal correction is not positive definite on every mesh (very coarse or
+    // elongated cells): check on the non-contact nodes rather than return an unusable M_r.
+    std::vector<int> rest;
+    for (int n = 0; n < mesh.num_nodes(); ++n)
+        if (!is_contact[n]) rest.push_back(n);
+    Triplets restricted;
+    std::vector<int> position(mesh.num_nodes(), -1);
+    for (size_t k = 0; k < rest.size(); ++k) position[rest[k]] = static_cast<int>(k);
+    for (const auto& e : corrected)
+        restricted.emplace_back(position[e.row()], position[e.col()], e.value());
+    Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(static_cast<int>(rest.size()), restricted));
+    if (llt.info() != Eigen::Success)
+        throw std::invalid_argument(
+            "mass redistribution: the corrected mass matrix is not positive definite on this "
+            "mesh (too coarse); refine nx, ny");
+    return redistributed;
 }
 
 SparseMatrix vector_mass_matrix(const SparseMatrix& mass_x, const SparseMatrix& mass_y) {

@@ -1,0 +1,73 @@
+"""Shared fixtures: the built FMU, its extracted copy, and low-level instances that record
+every log message."""
+import ctypes
+import pathlib
+import shutil
+import tempfile
+
+import fmpy
+import pytest
+from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+from fmpy.logging import addLoggerProxy
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+FMU = ROOT / "build" / "ContactBody.fmu"
+
+
+@pytest.fixture(scope="session")
+def fmu_path():
+    assert FMU.exists(), "build the FMU first (scripts/setup.sh)"
+    return str(FMU)
+
+
+@pytest.fixture(scope="session")
+def model_description(fmu_path):
+    return fmpy.read_model_description(fmu_path)
+
+
+@pytest.fixture(scope="session")
+def unzipped(fmu_path):
+    directory = tempfile.mkdtemp(prefix="ContactBody_")
+    fmpy.extract(fmu_path, directory)
+    yield directory
+    shutil.rmtree(directory, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def vr(model_description):
+    return {v.name: v.valueReference for v in model_description.modelVariables}
+
+
+class Instance:
+    """An FMU2Slave whose log messages are kept in .messages as (status, category, text)."""
+
+    def __init__(self, model_description, unzipped, name="instance"):
+        self.messages = []
+        self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
+                               modelIdentifier=model_description.coSimulation.modelIdentifier,
+                               instanceName=name)
+
+        def log(_env, _name, status, category, message):
+            self.messages.append((status, category.decode(), message.decode()))
+
+        self._logger = fmi2CallbackLoggerTYPE(log)  # kept alive as long as the instance
+        self.callbacks = fmi2CallbackFunctions()
+        self.callbacks.logger = self._logger
+        addLoggerProxy(ctypes.byref(self.callbacks))
+        self.slave.instantiate(callbacks=self.callbacks)
+
+    def __getattr__(self, name):
+        return getattr(self.slave, name)
+
+    def text(self):
+        return "\n".join(m[2] for m in self.messages)
+
+    def close(self):
+        self.slave.freeInstance()
+
+
+@pytest.fixture
+def instance(model_description, unzipped):
+    inst = Instance(model_description, unzipped)
+    yield inst
+    inst.close()

@@ -1,0 +1,182 @@
+"""Bad input never crashes the host (SPEC §5, issue 2 item 7): each bad call returns
+fmi2Error (or fmi2Discard for a step that cannot be completed), logs a message naming the
+function and the cause, and leaves the instance usable."""
+import math
+
+import numpy as np
+import pytest
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import fmi2LastSuccessfulTime, fmi2Terminated
+
+ERROR, DISCARD = 3, 2
+REAL_SETTABLE = ["width", "height", "density", "lambda", "mu", "friction_coefficient",
+                 "internal_step", "contact_tolerance", "initial_gap", "foundation_velocity",
+                 "top_displacement"]
+
+
+def expect_error(inst, call, *words, status=ERROR):
+    before = len(inst.messages)
+    with pytest.raises(FMICallException) as failure:
+        call()
+    assert failure.value.status == status
+    new = [m for m in inst.messages[before:] if m[0] == status]
+    assert new, "no log message for a failed call"
+    for word in words:
+        assert any(word in m[2] for m in new), f"'{word}' not in {new}"
+
+
+def initialize(inst):
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.exitInitializationMode()
+
+
+def step_and_read(inst, vr, t=0.0):
+    inst.doStep(t, 1e-4)
+    return inst.getReal([vr["energy"]])[0]
+
+
+@pytest.mark.parametrize("name", REAL_SETTABLE)
+@pytest.mark.parametrize("value", [math.nan, math.inf, -math.inf])
+def test_non_finite_values_are_refused_and_named(instance, vr, name, value):
+    instance.setupExperiment(startTime=0)
+    expect_error(instance, lambda: instance.setReal([vr[name]], [value]), "fmi2SetReal", name,
+                 "finite")
+    instance.enterInitializationMode()
+    expect_error(instance, lambda: instance.setReal([vr[name]], [value]), name)
+    instance.exitInitializationMode()  # the refused value changed nothing
+    if name in ("foundation_velocity", "top_displacement", "friction_coefficient"):
+        expect_error(instance, lambda: instance.setReal([vr[name]], [value]), name)
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+@pytest.mark.parametrize("name,value,words", [
+    ("density", -1000.0, ["density", "range"]),
+    ("density", 0.0, ["density"]),
+    ("internal_step", -4e-6, ["internal_step"]),
+    ("internal_step", 0.0, ["internal_step"]),
+    ("mu", -1.0, ["mu"]),
+    ("width", -0.1, ["width"]),
+    ("contact_tolerance", 2.0, ["contact_tolerance"]),
+    ("initial_gap", -1e-3, ["initial_gap"]),
+    ("friction_coefficient", -0.5, ["friction_coefficient"]),
+])
+def test_out_of_range_reals_are_refused(instance, vr, name, value, words):
+    expect_error(instance, lambda: instance.setReal([vr[name]], [value]), *words)
+    initialize(instance)
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+@pytest.mark.parametrize("name,value", [("nx", 0), ("ny", -3), ("nx", 10**6), ("mass_matrix", 4),
+                                        ("mass_matrix", -1)])
+def test_out_of_range_integers_are_refused(instance, vr, name, value):
+    expect_error(instance, lambda: instance.setInteger([vr[name]], [value]), "fmi2SetInteger", name)
+    initialize(instance)
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+def test_inconsistent_parameters_fail_initialization_and_can_be_fixed(instance, vr):
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    instance.setInteger([vr["ny"]], [1])  # in range, but M_r needs ny >= 2
+    expect_error(instance, instance.exitInitializationMode, "fmi2ExitInitializationMode", "ny")
+    instance.setInteger([vr["ny"]], [10])
+    instance.exitInitializationMode()
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+def test_fixed_parameters_cannot_change_after_initialization(instance, vr):
+    initialize(instance)
+    for name in ["density", "width", "internal_step", "contact_tolerance"]:
+        expect_error(instance, lambda: instance.setReal([vr[name]], [1.0]), name, "fixed")
+    expect_error(instance, lambda: instance.setInteger([vr["nx"]], [10]), "nx", "fixed")
+    instance.setReal([vr["friction_coefficient"]], [0.5])  # tunable
+    instance.setReal([vr["foundation_velocity"]], [10.0])  # input
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+def test_outputs_cannot_be_set(instance, vr):
+    initialize(instance)
+    expect_error(instance, lambda: instance.setReal([vr["energy"]], [1.0]), "energy", "output")
+
+
+@pytest.mark.parametrize("call", ["getReal", "setReal", "getInteger", "setInteger"])
+def test_unknown_value_references_are_refused(instance, vr, call):
+    initialize(instance)
+    fn = getattr(instance, call)
+    args = ([987654],) if call.startswith("get") else ([987654], [1])
+    expect_error(instance, lambda: fn(*args), "value reference 987654")
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+def test_type_mismatch_is_refused(instance, vr):
+    initialize(instance)
+    expect_error(instance, lambda: instance.getReal([vr["nx"]]), "nx", "Real")
+    expect_error(instance, lambda: instance.getInteger([vr["energy"]]), "energy", "Integer")
+    expect_error(instance, lambda: instance.getBoolean([vr["energy"]]), "Boolean")
+    expect_error(instance, lambda: instance.getString([vr["energy"]]), "String")
+
+
+def test_calls_out_of_order_are_refused(instance, vr):
+    expect_error(instance, lambda: instance.doStep(0.0, 1e-4), "fmi2DoStep", "Instantiated")
+    expect_error(instance, instance.exitInitializationMode, "fmi2ExitInitializationMode")
+    expect_error(instance, lambda: instance.getReal([vr["energy"]]), "fmi2GetReal")
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    expect_error(instance, lambda: instance.setupExperiment(startTime=0), "fmi2SetupExperiment")
+    instance.exitInitializationMode()
+    expect_error(instance, instance.enterInitializationMode, "fmi2EnterInitializationMode")
+    assert np.isfinite(step_and_read(instance, vr))
+    instance.terminate()
+    expect_error(instance, lambda: instance.doStep(1e-4, 1e-4), "fmi2DoStep", "Terminated")
+    instance.reset()  # back to a fresh instance
+    initialize(instance)
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+@pytest.mark.parametrize("t,h,words", [(0.0, -1e-4, ["communicationStepSize"]),
+                                       (0.0, 0.0, ["communicationStepSize"]),
+                                       (0.0, math.nan, ["communicationStepSize"]),
+                                       (0.5, 1e-4, ["currentCommunicationPoint"]),
+                                       (math.nan, 1e-4, ["currentCommunicationPoint"])])
+def test_bad_steps_are_refused(instance, vr, t, h, words):
+    initialize(instance)
+    expect_error(instance, lambda: instance.doStep(t, h), "fmi2DoStep", *words)
+    assert np.isfinite(step_and_read(instance, vr))
+
+
+def test_unsupported_capabilities_answer_with_an_error(instance):
+    initialize(instance)
+    expect_error(instance, lambda: instance.getFMUstate(), "fmi2GetFMUstate", "not supported")
+
+
+def test_unknown_log_category_is_refused(instance):
+    expect_error(instance, lambda: instance.setDebugLogging(True, ["noSuchCategory"]),
+                 "noSuchCategory")
+    instance.setDebugLogging(True, ["logEvents"])
+    initialize(instance)
+    assert any("initialized" in m[2] for m in instance.messages)
+
+
+def test_failed_contact_solve_discards_the_step_and_keeps_the_state(instance, vr):
+    """A tolerance below round-off cannot be met: the step is discarded with its cause, the
+    state stays at the step's start and the master is told to stop."""
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    instance.setReal([vr["contact_tolerance"]], [1e-300])
+    instance.exitInitializationMode()
+    e0 = instance.getReal([vr["energy"]])[0]
+    expect_error(instance, lambda: instance.doStep(0.0, 1e-4), "fmi2DoStep", "contact solver",
+                 "did not converge", status=DISCARD)
+    assert instance.getRealStatus(fmi2LastSuccessfulTime) == 0.0
+    assert instance.getBooleanStatus(fmi2Terminated)
+    assert instance.getReal([vr["energy"]])[0] == e0
+    expect_error(instance, lambda: instance.doStep(0.0, 1e-4), "StepFailed")
+    instance.terminate()
+
+
+def test_fmpy_master_stops_cleanly_on_a_discarded_step(fmu_path):
+    from fmpy import simulate_fmu
+    r = simulate_fmu(fmu_path, stop_time=0.001, output_interval=1e-4,
+                     start_values={"contact_tolerance": 1e-300}, output=["energy"])
+    assert r["time"][-1] == 0.0 and np.all(np.isfinite(r["energy"]))

@@ -65,6 +65,29 @@ const Variable& variable(unsigned vr) {
     instance->error(function, std::string("not supported: ") + (what));    \
     return fmi2Error;
 
+namespace {
+
+// The body of every get/set: state and pointer checks, then `each` on every (variable, value).
+template <class Value, class Each>
+fmi2Status for_each_variable(fmi2Component c, const char* function, unsigned states,
+                             const fmi2ValueReference vr[], size_t nvr, Value* value, Each&& each) {
+    BEGIN(function, states)
+    REQUIRE(function, vr, nvr) REQUIRE(function, value, nvr)
+    return guarded(instance, function, [&] {
+        for (size_t k = 0; k < nvr; ++k) each(instance, variable(vr[k]), value[k]);
+        return fmi2OK;
+    });
+}
+
+auto refuse(const char* type) {
+    return [type](Instance*, const Variable& v, const auto&) {
+        throw ModelError(std::string("variable ") + v.name + " is not of type " + type +
+                         " (this FMU has no " + type + " variables)");
+    };
+}
+
+}  // namespace
+
 extern "C" {
 
 const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
@@ -147,92 +170,55 @@ fmi2Status fmi2Reset(fmi2Component c) {
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        fmi2Real value[]) {
-    BEGIN("fmi2GetReal", readable)
-    REQUIRE("fmi2GetReal", vr, nvr) REQUIRE("fmi2GetReal", value, nvr)
-    return guarded(instance, "fmi2GetReal", [&] {
-        for (size_t k = 0; k < nvr; ++k) value[k] = instance->model.get_real(variable(vr[k]));
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2GetReal", readable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, fmi2Real& x) {
+                                 x = i->model.get_real(v);
+                             });
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Integer value[]) {
-    BEGIN("fmi2GetInteger", readable)
-    REQUIRE("fmi2GetInteger", vr, nvr) REQUIRE("fmi2GetInteger", value, nvr)
-    return guarded(instance, "fmi2GetInteger", [&] {
-        for (size_t k = 0; k < nvr; ++k) value[k] = instance->model.get_integer(variable(vr[k]));
-        return fmi2OK;
-    });
-}
-
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Boolean value[]) {
-    BEGIN("fmi2GetBoolean", readable)
-    REQUIRE("fmi2GetBoolean", vr, nvr) REQUIRE("fmi2GetBoolean", value, nvr)
-    return guarded(instance, "fmi2GetBoolean", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
-                             " is not a Boolean variable (this FMU has none)");
-        return fmi2OK;
-    });
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         fmi2String value[]) {
-    BEGIN("fmi2GetString", readable)
-    REQUIRE("fmi2GetString", vr, nvr) REQUIRE("fmi2GetString", value, nvr)
-    return guarded(instance, "fmi2GetString", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
-                             " is not a String variable (this FMU has none)");
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2GetInteger", readable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, fmi2Integer& x) {
+                                 x = i->model.get_integer(v);
+                             });
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        const fmi2Real value[]) {
-    BEGIN("fmi2SetReal", settable)
-    REQUIRE("fmi2SetReal", vr, nvr) REQUIRE("fmi2SetReal", value, nvr)
-    return guarded(instance, "fmi2SetReal", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            instance->model.set_real(variable(vr[k]), value[k], initialized(instance));
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2SetReal", settable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, const fmi2Real& x) {
+                                 i->model.set_real(v, x, initialized(i));
+                             });
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[]) {
-    BEGIN("fmi2SetInteger", settable)
-    REQUIRE("fmi2SetInteger", vr, nvr) REQUIRE("fmi2SetInteger", value, nvr)
-    return guarded(instance, "fmi2SetInteger", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            instance->model.set_integer(variable(vr[k]), value[k], initialized(instance));
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2SetInteger", settable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, const fmi2Integer& x) {
+                                 i->model.set_integer(v, x, initialized(i));
+                             });
+}
+
+// This FMU has no Boolean or String variables: any value reference is refused.
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
+    return for_each_variable(c, "fmi2GetBoolean", readable, vr, nvr, value, refuse("Boolean"));
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) {
+    return for_each_variable(c, "fmi2GetString", readable, vr, nvr, value, refuse("String"));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[]) {
-    BEGIN("fmi2SetBoolean", settable)
-    REQUIRE("fmi2SetBoolean", vr, nvr) REQUIRE("fmi2SetBoolean", value, nvr)
-    return guarded(instance, "fmi2SetBoolean", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
-                             " is not a Boolean variable (this FMU has none)");
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2SetBoolean", settable, vr, nvr, value, refuse("Boolean"));
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[]) {
-    BEGIN("fmi2SetString", settable)
-    REQUIRE("fmi2SetString", vr, nvr) REQUIRE("fmi2SetString", value, nvr)
-    return guarded(instance, "fmi2SetString", [&] {
-        for (size_t k = 0; k < nvr; ++k)
-            throw ModelError(std::string("value reference ") + std::to_string(vr[k]) +
-                             " is not a String variable (this FMU has none)");
-        return fmi2OK;
-    });
+    return for_each_variable(c, "fmi2SetString", settable, vr, nvr, value, refuse("String"));
 }
 
 // ---- stepping and status ----

@@ -9,7 +9,8 @@ if(fmpy_missing OR NOT EXISTS "${FMI_HEADERS_DIR}/fmi2Functions.h")
   message(FATAL_ERROR "FMI 2 headers not found: install fmpy for ${Python3_EXECUTABLE} (scripts/setup.sh does)")
 endif()
 
-set(FMU_SOURCES fmu_src/fmi2_functions.cpp fmu_src/instance.cpp fmu_src/model.cpp fmu_src/variables.cpp)
+set(FMU_SOURCES fmu_src/fmi2_functions.cpp fmu_src/instance.cpp fmu_src/model.cpp fmu_src/variables.cpp
+  fmu_src/fmu_state.cpp)
 
 add_library(ContactBody SHARED ${FMU_SOURCES})
 target_include_directories(ContactBody PRIVATE fmu_src ${FMI_HEADERS_DIR})

@@ -3,6 +3,7 @@
 // model's exceptions into fmi2Status and a log message naming the function.
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <new>
 
 #include "instance.hpp"
@@ -16,6 +17,7 @@ constexpr unsigned any_state =
     Instantiated | InitializationMode | StepComplete | StepFailed | Terminated | Error;
 constexpr unsigned readable = InitializationMode | StepComplete | StepFailed | Terminated | Error;
 constexpr unsigned settable = Instantiated | InitializationMode | StepComplete;
+constexpr unsigned saveable = InitializationMode | StepComplete | StepFailed | Terminated;
 
 template <class Body>
 fmi2Status guarded(Instance* instance, const char* function, Body&& body) {
@@ -42,10 +44,33 @@ bool initialized(const Instance* instance) {
     return instance->state & (StepComplete | StepFailed | Terminated | Error);
 }
 
+// Events (a new factorization) and the contact solver's statistics of the last step.
+void log_step(Instance* instance, Simulation& sim) {
+    const int factorizations = sim.stepper().factorizations();
+    if (factorizations != instance->factorizations_logged) {
+        instance->factorizations_logged = factorizations;
+        instance->log(fmi2OK, LogCategory::events,
+                      "factorized 4/dt^2 M + A (factorization " + std::to_string(factorizations) + ")");
+    }
+    const StepStatistics& s = sim.statistics();
+    instance->log(fmi2OK, LogCategory::contact_solver,
+                  "substeps " + std::to_string(s.substeps) + ", contact solves " +
+                      std::to_string(s.contact_solves) + ", Newton iterations " +
+                      std::to_string(s.contact_iterations) + " (max " +
+                      std::to_string(s.max_contact_iterations) + " in one substep)");
+}
+
 const Variable& variable(unsigned vr) {
     const Variable* v = find_variable(vr);
     if (!v) throw ModelError("unknown value reference " + std::to_string(vr));
     return *v;
+}
+
+FmuState* known_state(Instance* instance, fmi2FMUstate s) {
+    auto* state = static_cast<FmuState*>(s);
+    if (!instance->states.count(state))
+        throw ModelError("FMUstate was not made by this instance, or was freed");
+    return state;
 }
 
 }  // namespace
@@ -233,6 +258,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
         return fmi2OK;
     });
     if (status == fmi2Discard) instance->state = StepFailed;
+    if (Simulation* sim = instance->model.simulation()) log_step(instance, *sim);
     return status;
 }
 
@@ -280,9 +306,18 @@ fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind /*s*/,
 
 // ---- capabilities this FMU does not declare ----
 
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
-                                       const fmi2Integer[], const fmi2Real[]) {
-    NOT_SUPPORTED("fmi2SetRealInputDerivatives", "canInterpolateInputs is false")
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
+                                       size_t nvr, const fmi2Integer order[],
+                                       const fmi2Real value[]) {
+    BEGIN("fmi2SetRealInputDerivatives", InitializationMode | StepComplete)
+    REQUIRE("fmi2SetRealInputDerivatives", vr, nvr)
+    REQUIRE("fmi2SetRealInputDerivatives", order, nvr)
+    REQUIRE("fmi2SetRealInputDerivatives", value, nvr)
+    return guarded(instance, "fmi2SetRealInputDerivatives", [&] {
+        for (size_t k = 0; k < nvr; ++k)
+            instance->model.set_input_derivative(variable(vr[k]), order[k], value[k]);
+        return fmi2OK;
+    });
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
@@ -296,23 +331,88 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
     NOT_SUPPORTED("fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false")
 }
 
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate*) {
-    NOT_SUPPORTED("fmi2GetFMUstate", "canGetAndSetFMUstate is false")
+// ---- FMU state: plain data owned by the instance, bytes with a versioned header ----
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+    BEGIN("fmi2GetFMUstate", saveable)
+    REQUIRE("fmi2GetFMUstate", FMUstate, 1)
+    return guarded(instance, "fmi2GetFMUstate", [&] {
+        FmuState* target = static_cast<FmuState*>(*FMUstate);
+        if (target && !instance->states.count(target))
+            throw ModelError("*FMUstate is not a state of this instance (pass NULL for a new one)");
+        FmuState saved{instance->state, instance->last_successful_time, instance->model.save()};
+        if (target) {
+            *target = std::move(saved);  // overwrite, as FMI 2.0 asks for a non-NULL state
+        } else {
+            auto fresh = std::make_unique<FmuState>(std::move(saved));
+            instance->states.insert(fresh.get());
+            *FMUstate = fresh.release();
+        }
+        return fmi2OK;
+    });
 }
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate) {
-    NOT_SUPPORTED("fmi2SetFMUstate", "canGetAndSetFMUstate is false")
+
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
+    BEGIN("fmi2SetFMUstate", saveable)
+    REQUIRE("fmi2SetFMUstate", FMUstate, 1)
+    return guarded(instance, "fmi2SetFMUstate", [&] {
+        const FmuState* s = known_state(instance, FMUstate);
+        instance->model.load(s->model);
+        instance->state = static_cast<FmiState>(s->instance_state);
+        instance->last_successful_time = s->last_successful_time;
+        return fmi2OK;
+    });
 }
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate*) {
-    NOT_SUPPORTED("fmi2FreeFMUstate", "canGetAndSetFMUstate is false")
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+    BEGIN("fmi2FreeFMUstate", any_state)
+    REQUIRE("fmi2FreeFMUstate", FMUstate, 1)
+    if (!*FMUstate) return fmi2OK;
+    return guarded(instance, "fmi2FreeFMUstate", [&] {
+        FmuState* s = known_state(instance, *FMUstate);
+        instance->states.erase(s);
+        delete s;
+        *FMUstate = nullptr;
+        return fmi2OK;
+    });
 }
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate, size_t*) {
-    NOT_SUPPORTED("fmi2SerializedFMUstateSize", "canSerializeFMUstate is false")
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
+    BEGIN("fmi2SerializedFMUstateSize", any_state)
+    REQUIRE("fmi2SerializedFMUstateSize", FMUstate, 1)
+    REQUIRE("fmi2SerializedFMUstateSize", size, 1)
+    return guarded(instance, "fmi2SerializedFMUstateSize", [&] {
+        *size = serialize(*known_state(instance, FMUstate)).size();
+        return fmi2OK;
+    });
 }
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate, fmi2Byte[], size_t) {
-    NOT_SUPPORTED("fmi2SerializeFMUstate", "canSerializeFMUstate is false")
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte bytes[],
+                                 size_t size) {
+    BEGIN("fmi2SerializeFMUstate", any_state)
+    REQUIRE("fmi2SerializeFMUstate", FMUstate, 1)
+    REQUIRE("fmi2SerializeFMUstate", bytes, 1)
+    return guarded(instance, "fmi2SerializeFMUstate", [&] {
+        const std::vector<char> data = serialize(*known_state(instance, FMUstate));
+        if (size != data.size())
+            throw ModelError("size is " + std::to_string(size) + ", the state needs " +
+                             std::to_string(data.size()) + " (fmi2SerializedFMUstateSize)");
+        std::memcpy(bytes, data.data(), data.size());
+        return fmi2OK;
+    });
 }
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte[], size_t, fmi2FMUstate*) {
-    NOT_SUPPORTED("fmi2DeSerializeFMUstate", "canSerializeFMUstate is false")
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
+                                   size_t size, fmi2FMUstate* FMUstate) {
+    BEGIN("fmi2DeSerializeFMUstate", any_state)
+    REQUIRE("fmi2DeSerializeFMUstate", serializedState, 1)
+    REQUIRE("fmi2DeSerializeFMUstate", FMUstate, 1)
+    return guarded(instance, "fmi2DeSerializeFMUstate", [&] {
+        auto fresh = std::make_unique<FmuState>(deserialize(serializedState, size));
+        instance->states.insert(fresh.get());
+        *FMUstate = fresh.release();
+        return fmi2OK;
+    });
 }
 
 }  // extern "C"

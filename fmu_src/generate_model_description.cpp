@@ -68,13 +68,13 @@ int main(int argc, char** argv) {
   <CoSimulation
     modelIdentifier=")" << model_identifier << R"("
     canHandleVariableCommunicationStepSize="true"
-    canInterpolateInputs="false"
+    canInterpolateInputs="true"
     maxOutputDerivativeOrder="0"
     canRunAsynchronuously="false"
     canBeInstantiatedOnlyOncePerProcess="false"
     canNotUseMemoryManagementFunctions="true"
-    canGetAndSetFMUstate="false"
-    canSerializeFMUstate="false"
+    canGetAndSetFMUstate="true"
+    canSerializeFMUstate="true"
     providesDirectionalDerivative="false"/>
   <UnitDefinitions>
 )";

@@ -4,7 +4,7 @@ namespace contactbody::fmu {
 
 namespace {
 
-const char* state_name(State s) {
+const char* state_name(FmiState s) {
     switch (s) {
         case Instantiated: return "Instantiated";
         case InitializationMode: return "InitializationMode";
@@ -31,6 +31,10 @@ void Instance::log(fmi2Status status, LogCategory category, const std::string& m
     // The message goes through "%s": the host formats the logger's message printf-style.
     callbacks.logger(callbacks.componentEnvironment, name.c_str(), status,
                      log_categories()[index].c_str(), "%s", message.c_str());
+}
+
+Instance::~Instance() {
+    for (FmuState* s : states) delete s;
 }
 
 bool Instance::allowed(const char* function, unsigned states) const {

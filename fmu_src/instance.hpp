@@ -2,19 +2,21 @@
 #pragma once
 
 #include <array>
+#include <memory>
+#include <set>
 #include <string>
 
 extern "C" {
 #include "fmi2Functions.h"
 }
 
-#include "model.hpp"
+#include "fmu_state.hpp"
 
 namespace contactbody::fmu {
 
 // States of the FMI 2.0 Co-Simulation state machine, as bits so that each entry point
 // names the set it is allowed in.
-enum State : unsigned {
+enum FmiState : unsigned {
     Instantiated = 1u << 0,
     InitializationMode = 1u << 1,
     StepComplete = 1u << 2,
@@ -27,6 +29,9 @@ enum class LogCategory { events, warning, error, all, contact_solver };
 
 struct Instance {
     Instance(std::string name, const fmi2CallbackFunctions* callbacks, bool logging_on);
+    ~Instance();
+    Instance(const Instance&) = delete;
+    Instance& operator=(const Instance&) = delete;
 
     // Errors are always passed to the logger; other messages per the enabled categories.
     void log(fmi2Status status, LogCategory category, const std::string& message) const;
@@ -39,11 +44,14 @@ struct Instance {
 
     std::string name;
     fmi2CallbackFunctions callbacks;
-    State state = Instantiated;
+    FmiState state = Instantiated;
     bool logging_on;
     std::array<bool, 5> category_on;
     double last_successful_time = 0;
     ContactBodyModel model;
+    // FMU states handed out by this instance: only these pointers are accepted back.
+    std::set<FmuState*> states;
+    int factorizations_logged = 0;
 };
 
 }  // namespace contactbody::fmu

@@ -30,25 +30,24 @@ void ContactBodyModel::set_start_time(double t) {
     rebuild_ = true;
 }
 
-void ContactBodyModel::check_value(const Variable& v, double value, bool initialized) const {
+void ContactBodyModel::check_settable(const Variable& v, double value, bool initialized) const {
     if (v.causality == Causality::output)
         throw ModelError(concat("variable ", v.name, " is an output and cannot be set"));
     if (initialized && !v.settable_after_initialization())
         throw ModelError(concat("parameter ", v.name,
                                 " is fixed and cannot be set after initialization"));
-    if (!std::isfinite(value))
-        throw ModelError(concat("variable ", v.name, " must be finite (got ", value, ")"));
-    const bool below = v.min_exclusive ? !(value > v.min) : value < v.min;
-    if (below || value > v.max) {
-        throw ModelError(concat("variable ", v.name, " = ", value, " is out of range: must be ",
-                                v.min_exclusive ? "> " : ">= ", v.min, " and <= ", v.max));
+    try {
+        check_range(v, value);
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(e.what());
     }
 }
 
 void ContactBodyModel::set_real(const Variable& v, double value, bool initialized) {
     if (!v.real) throw ModelError(concat("variable ", v.name, " is not of type Real"));
-    check_value(v, value, initialized);
+    check_settable(v, value, initialized);
     v.real(values_) = value;
+    if (input_index(v) >= 0) input_rates_[input_index(v)] = 0;  // a new value is held
     if (!initialized) {
         rebuild_ = true;  // parameters and initial inputs define the initial state
     } else if (sim_ && &v.real(values_) == &values_.friction_coefficient) {
@@ -59,7 +58,7 @@ void ContactBodyModel::set_real(const Variable& v, double value, bool initialize
 void ContactBodyModel::set_integer(const Variable& v, int value, bool initialized) {
     if (!v.integer)
         throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
-    check_value(v, value, initialized);
+    check_settable(v, value, initialized);
     v.integer(values_) = value;
     if (!initialized) rebuild_ = true;
 }
@@ -77,17 +76,70 @@ int ContactBodyModel::get_integer(const Variable& v) {
     return v.integer(values_);
 }
 
-void ContactBodyModel::initialize() {
-    if (!rebuild_ && sim_) return;
+void ContactBodyModel::set_input_derivative(const Variable& v, int order, double value) {
+    if (input_index(v) < 0)
+        throw ModelError(concat("variable ", v.name, " is not an input: it has no derivative"));
+    if (order != 1)
+        throw ModelError(concat("derivative order ", order, " of ", v.name,
+                                " is not supported (only 1: linear interpolation)"));
+    if (!std::isfinite(value))
+        throw ModelError(concat("derivative of ", v.name, " must be finite (got ", value, ")"));
+    input_rates_[input_index(v)] = value;
+}
+
+void ContactBodyModel::build_simulation(const Values& values) {
     try {
-        sim_ = std::make_unique<Simulation>(values_.scene(), values_.top_displacement,
-                                            start_time_);
+        sim_ = std::make_unique<Simulation>(values.scene(), values.top_displacement, start_time_);
     } catch (const std::invalid_argument& e) {
         sim_.reset();
         throw ModelError(e.what());
     }
+}
+
+void ContactBodyModel::initialize() {
+    if (!rebuild_ && sim_) return;
+    build_simulation(values_);
     values_.out = Observables{};
     rebuild_ = false;
+}
+
+ModelState ContactBodyModel::save() const {
+    ModelState s;
+    s.values = values_;
+    s.start_time = start_time_;
+    s.input_rates = input_rates_;
+    s.has_simulation = sim_ && !rebuild_;
+    if (s.has_simulation) s.simulation = sim_->snapshot();
+    return s;
+}
+
+void ContactBodyModel::load(const ModelState& state) {
+    Values saved = state.values;
+    if (sim_ && !rebuild_) {
+        for (const Variable& v : variables()) {
+            if (v.causality != Causality::parameter || v.variability != Variability::fixed) continue;
+            const double mine = v.real ? v.real(values_) : v.integer(values_);
+            const double theirs = v.real ? v.real(saved) : v.integer(saved);
+            if (mine != theirs)
+                throw ModelError(concat("the state was saved with ", v.name, " = ", theirs,
+                                        ", this instance has ", v.name, " = ", mine));
+        }
+    }
+    if (state.has_simulation) {
+        if (!sim_ || rebuild_) build_simulation(saved);
+        try {
+            sim_->restore(state.simulation);
+        } catch (const std::invalid_argument& e) {
+            throw ModelError(concat("the state does not fit this instance: ", e.what()));
+        }
+        sim_->set_friction_coefficient(saved.friction_coefficient);
+    } else {
+        sim_.reset();
+    }
+    values_ = saved;
+    start_time_ = state.start_time;
+    input_rates_ = state.input_rates;
+    rebuild_ = !state.has_simulation;
 }
 
 void ContactBodyModel::refresh_outputs() {
@@ -114,8 +166,13 @@ void ContactBodyModel::do_step(double current_time, double h) {
     StepInputs in;
     in.foundation_velocity = values_.foundation_velocity;
     in.top_displacement = values_.top_displacement;
+    in.foundation_acceleration = input_rates_[0];
+    in.top_velocity = input_rates_[1];
     try {
         sim_->do_step(h, in);
+        // Interpolated inputs go on along their line until the master sets them again.
+        values_.foundation_velocity += input_rates_[0] * h;
+        values_.top_displacement += input_rates_[1] * h;
     } catch (const ContactSolveError& e) {
         throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
     } catch (const NumericalFailure& e) {

@@ -2,20 +2,21 @@
 // errors as exceptions (the FMI shim in fmi2_functions.cpp turns them into fmi2Status).
 #pragma once
 
+#include <array>
 #include <memory>
-#include <stdexcept>
 
+#include "errors.hpp"
 #include "variables.hpp"
 
 namespace contactbody::fmu {
 
-// Bad input or call: fmi2Error.
-struct ModelError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-// A step that cannot be completed (the state stays at the step's start): fmi2Discard.
-struct StepDiscarded : std::runtime_error {
-    using std::runtime_error::runtime_error;
+// The model's whole state as plain data (fmi2GetFMUstate / fmi2SetFMUstate).
+struct ModelState {
+    Values values;
+    double start_time = 0;
+    std::array<double, 2> input_rates{};  // d/dt foundation_velocity, top_displacement
+    bool has_simulation = false;
+    SimulationSnapshot simulation;
 };
 
 class ContactBodyModel {
@@ -31,6 +32,14 @@ public:
     double get_real(const Variable& v);
     int get_integer(const Variable& v);
 
+    // First time derivative of an input over the next steps (canInterpolateInputs); setting
+    // the input's value again resets it to zero (held input).
+    void set_input_derivative(const Variable& v, int order, double value);
+
+    ModelState save() const;
+    // Restores a saved state; refuses one saved with other fixed parameters (another mesh).
+    void load(const ModelState& state);
+
     // Builds the simulation from the parameters if they changed (throws ModelError).
     void initialize();
     void do_step(double current_time, double step_size);
@@ -38,10 +47,12 @@ public:
     Simulation* simulation() { return sim_.get(); }
 
 private:
-    void check_value(const Variable& v, double value, bool initialized) const;
+    void check_settable(const Variable& v, double value, bool initialized) const;
     void refresh_outputs();
+    void build_simulation(const Values& values);
 
     Values values_;
+    std::array<double, 2> input_rates_{};
     std::unique_ptr<Simulation> sim_;
     bool rebuild_ = true;
     double start_time_ = 0;

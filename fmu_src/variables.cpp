@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace contactbody::fmu {
@@ -73,6 +75,26 @@ SceneParameters Values::scene() const {
 }
 
 const std::vector<Variable>& variables() { return table; }
+
+void check_range(const Variable& v, double value) {
+    std::ostringstream msg;
+    msg.precision(17);
+    if (!std::isfinite(value)) {
+        msg << "variable " << v.name << " must be finite (got " << value << ")";
+        throw std::invalid_argument(msg.str());
+    }
+    const bool below = v.min_exclusive ? !(value > v.min) : value < v.min;
+    if (below || value > v.max) {
+        msg << "variable " << v.name << " = " << value << " is out of range: must be "
+            << (v.min_exclusive ? "> " : ">= ") << v.min << " and <= " << v.max;
+        throw std::invalid_argument(msg.str());
+    }
+}
+
+int input_index(const Variable& v) {
+    if (v.causality != Causality::input) return -1;
+    return std::string(v.name) == "foundation_velocity" ? 0 : 1;
+}
 
 const Variable* find_variable(unsigned value_reference) {
     static const std::unordered_map<unsigned, const Variable*> index = [] {

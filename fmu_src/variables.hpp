@@ -48,6 +48,11 @@ struct Variable {
 };
 
 const std::vector<Variable>& variables();
+// Throws std::invalid_argument naming the variable if value is not finite or out of range.
+void check_range(const Variable& v, double value);
+// True for the two inputs; index 0 = foundation_velocity, 1 = top_displacement.
+int input_index(const Variable& v);
+
 // nullptr when no variable has this reference.
 const Variable* find_variable(unsigned value_reference);
 // Values with every start value.

@@ -147,7 +147,8 @@ def test_bad_steps_are_refused(instance, vr, t, h, words):
 
 def test_unsupported_capabilities_answer_with_an_error(instance):
     initialize(instance)
-    expect_error(instance, lambda: instance.getFMUstate(), "fmi2GetFMUstate", "not supported")
+    expect_error(instance, lambda: instance.getDirectionalDerivative([100], [20], [1.0]),
+                 "fmi2GetDirectionalDerivative", "not supported")
 
 
 def test_unknown_log_category_is_refused(instance):

@@ -26,6 +26,8 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const double saved_work = friction_work_;
 
     Observables avg;
+    StepStatistics stats;
+    stats.substeps = n;
     SubstepLoad load;
     const Mesh& mesh = stepper_.discretization().mesh;
     try {
@@ -54,6 +56,9 @@ void Simulation::do_step(double h, const StepInputs& in) {
             avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
             avg.active_contact_nodes = r.active_nodes;
             avg.slipping_contact_nodes = r.slipping_nodes;
+            stats.contact_solves += r.contact_solved;
+            stats.contact_iterations += r.contact_iterations;
+            stats.max_contact_iterations = std::max(stats.max_contact_iterations, r.contact_iterations);
         }
         if (!state_.u.allFinite() || !state_.v.allFinite()) {
             std::ostringstream msg;
@@ -75,6 +80,20 @@ void Simulation::do_step(double h, const StepInputs& in) {
     avg.top_reaction_x /= n;
     avg.top_reaction_y /= n;
     observables_ = avg;
+    statistics_ = stats;
+    energies_current_ = false;
+}
+
+void Simulation::restore(const SimulationSnapshot& snapshot) {
+    const State& s = snapshot.state;
+    const Eigen::Index dofs = stepper_.discretization().mesh.num_dofs();
+    const Eigen::Index nc = stepper_.num_contact_nodes();
+    if (s.u.size() != dofs || s.v.size() != dofs ||
+        (s.lambda.size() != nc && s.lambda.size() != 2 * nc))
+        throw std::invalid_argument("state does not fit this mesh");
+    state_ = s;
+    friction_work_ = snapshot.friction_work;
+    observables_ = snapshot.observables;
     energies_current_ = false;
 }
 

@@ -23,6 +23,22 @@ struct StepInputs {
     double foundation_acceleration = 0, top_velocity = 0;
 };
 
+// Everything that evolves in time, as plain data (the factorizations are derived from the
+// parameters and rebuilt on demand, so they are not part of it).
+struct SimulationSnapshot {
+    State state;
+    double friction_work = 0;
+    Observables observables;  // the last step's averages
+};
+
+// What the last communication step cost.
+struct StepStatistics {
+    int substeps = 0;
+    int contact_solves = 0;          // substeps where some node could touch
+    int contact_iterations = 0;      // Newton iterations, summed over the substeps
+    int max_contact_iterations = 0;  // in one substep
+};
+
 class NumericalFailure : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
@@ -46,11 +62,17 @@ public:
     // Substeps per step for a step of size h.
     int substeps_for(double h) const;
 
+    SimulationSnapshot snapshot() const { return {state_, friction_work_, observables_}; }
+    // Throws std::invalid_argument if the snapshot does not fit this discretization.
+    void restore(const SimulationSnapshot& snapshot);
+    const StepStatistics& statistics() const { return statistics_; }
+
 private:
     Stepper stepper_;
     State state_, saved_;
     double friction_work_ = 0;
     Observables observables_;
+    StepStatistics statistics_;
     bool energies_current_ = false;
     Eigen::VectorXd product_;
 };

@@ -139,6 +139,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     SubstepReport report;
     if (touching) {
         report.contact_iterations = solver_.solve(problem_, options_, s.lambda).iterations;
+        report.contact_solved = true;
         for (int i = 0; i < nc; ++i) {
             rhs_[d.contact_y[i]] -= s.lambda[i];
             if (friction) rhs_[d.contact_x[i]] += s.lambda[nc + i];

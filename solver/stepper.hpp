@@ -37,6 +37,7 @@ struct SubstepReport {
     double max_penetration = 0;    // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
     int contact_iterations = 0;
+    bool contact_solved = false;   // false when no node could touch (solve skipped)
 };
 
 // The last substep's contact quantities recomputed from the displacement u^{k+1/2}

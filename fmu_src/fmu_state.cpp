@@ -1,0 +1,211 @@
+#include "fmu_state.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "instance.hpp"
+
+namespace contactbody::fmu {
+
+namespace {
+
+constexpr char magic[8] = {'C', 'B', 'F', 'M', 'U', 'S', 'T', '\0'};
+constexpr size_t header_size = sizeof(magic) + 4 + 8 + 8;  // magic, version, size, checksum
+constexpr unsigned restorable_states = InitializationMode | StepComplete | StepFailed | Terminated;
+
+uint64_t fnv1a(const char* data, size_t size) {
+    uint64_t h = 1469598103934665603ull;
+    for (size_t i = 0; i < size; ++i) {
+        h ^= static_cast<unsigned char>(data[i]);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+// The observables' fields, listed once for writing and reading.
+template <class O, class F>
+void visit(O& o, F&& f) {
+    for (auto* x : {&o.energy, &o.kinetic_energy, &o.strain_energy, &o.friction_work,
+                    &o.energy_minus_friction_work, &o.normal_force, &o.friction_force,
+                    &o.corner_pressure, &o.corner_friction, &o.top_reaction_x, &o.top_reaction_y,
+                    &o.max_penetration})
+        f(*x);
+    f(o.active_contact_nodes);
+    f(o.slipping_contact_nodes);
+}
+
+class Writer {
+public:
+    template <class T>
+    void value(const T& x) {
+        const char* p = reinterpret_cast<const char*>(&x);
+        bytes.insert(bytes.end(), p, p + sizeof(T));
+    }
+    void vector(const Eigen::VectorXd& v) {
+        value<uint64_t>(static_cast<uint64_t>(v.size()));
+        const char* p = reinterpret_cast<const char*>(v.data());
+        bytes.insert(bytes.end(), p, p + sizeof(double) * v.size());
+    }
+    std::vector<char> bytes;
+};
+
+class Reader {
+public:
+    Reader(const char* data, size_t size) : data_(data), size_(size) {}
+
+    template <class T>
+    T value(const char* what) {
+        need(sizeof(T), what);
+        T x;
+        std::memcpy(&x, data_ + offset_, sizeof(T));
+        offset_ += sizeof(T);
+        return x;
+    }
+    double finite(const char* what) {
+        const double x = value<double>(what);
+        if (!std::isfinite(x)) fail(std::string(what) + " is not finite");
+        return x;
+    }
+    // A vector of `expected` (or `alternative`) entries.
+    Eigen::VectorXd vector(const char* what, Eigen::Index expected, Eigen::Index alternative = -1) {
+        const uint64_t n = value<uint64_t>(what);
+        if (n != static_cast<uint64_t>(expected) && n != static_cast<uint64_t>(alternative))
+            fail(std::string(what) + " has " + std::to_string(n) + " entries, the mesh needs " +
+                 std::to_string(expected));
+        need(n * sizeof(double), what);
+        Eigen::VectorXd v(static_cast<Eigen::Index>(n));
+        std::memcpy(v.data(), data_ + offset_, n * sizeof(double));
+        offset_ += n * sizeof(double);
+        if (!v.allFinite()) fail(std::string(what) + " has non-finite entries");
+        return v;
+    }
+    bool at_end() const { return offset_ == size_; }
+    [[noreturn]] void fail(const std::string& why) const {
+        throw ModelError("FMU state bytes rejected: " + why + " (at byte " +
+                         std::to_string(offset_ + header_size) + ")");
+    }
+
+private:
+    void need(uint64_t n, const char* what) const {
+        if (n > size_ - offset_) fail(std::string("truncated while reading ") + what);
+    }
+    const char* data_;
+    size_t size_, offset_ = 0;
+};
+
+}  // namespace
+
+std::vector<char> serialize(const FmuState& s) {
+    Writer w;
+    w.value<uint32_t>(s.instance_state);
+    w.value(s.last_successful_time);
+    Values values = s.model.values;
+    w.value<uint32_t>(static_cast<uint32_t>(variables().size()));
+    for (const Variable& v : variables()) {
+        if (v.real) w.value(v.real(values));
+        else w.value<int32_t>(v.integer(values));
+    }
+    w.value(s.model.start_time);
+    w.value(s.model.input_rates[0]);
+    w.value(s.model.input_rates[1]);
+    w.value<uint8_t>(s.model.has_simulation);
+    if (s.model.has_simulation) {
+        const SimulationSnapshot& sim = s.model.simulation;
+        w.value(sim.state.time);
+        w.vector(sim.state.u);
+        w.vector(sim.state.v);
+        w.vector(sim.state.lambda);
+        w.value(sim.friction_work);
+        visit(sim.observables, [&](const auto& x) { w.value(x); });
+    }
+
+    std::vector<char> out(header_size + w.bytes.size());
+    std::memcpy(out.data(), magic, sizeof(magic));
+    const uint32_t version = state_format_version;
+    const uint64_t size = w.bytes.size(), checksum = fnv1a(w.bytes.data(), w.bytes.size());
+    std::memcpy(out.data() + 8, &version, 4);
+    std::memcpy(out.data() + 12, &size, 8);
+    std::memcpy(out.data() + 20, &checksum, 8);
+    std::memcpy(out.data() + header_size, w.bytes.data(), w.bytes.size());
+    return out;
+}
+
+FmuState deserialize(const char* bytes, size_t size) {
+    if (!bytes) throw ModelError("FMU state bytes rejected: NULL");
+    if (size < header_size)
+        throw ModelError("FMU state bytes rejected: " + std::to_string(size) +
+                         " bytes, shorter than the header");
+    if (std::memcmp(bytes, magic, sizeof(magic)) != 0)
+        throw ModelError("FMU state bytes rejected: not a ContactBody state (wrong magic)");
+    uint32_t version;
+    uint64_t payload_size, checksum;
+    std::memcpy(&version, bytes + 8, 4);
+    std::memcpy(&payload_size, bytes + 12, 8);
+    std::memcpy(&checksum, bytes + 20, 8);
+    if (version != state_format_version)
+        throw ModelError("FMU state bytes rejected: format version " + std::to_string(version) +
+                         ", this FMU reads version " + std::to_string(state_format_version));
+    if (payload_size != size - header_size)
+        throw ModelError("FMU state bytes rejected: header says " + std::to_string(payload_size) +
+                         " payload bytes, got " + std::to_string(size - header_size));
+    const char* payload = bytes + header_size;
+    if (fnv1a(payload, payload_size) != checksum)
+        throw ModelError("FMU state bytes rejected: checksum mismatch (corrupted)");
+
+    Reader r(payload, payload_size);
+    FmuState s;
+    s.instance_state = r.value<uint32_t>("instance state");
+    if (!(s.instance_state & restorable_states) || (s.instance_state & (s.instance_state - 1)))
+        r.fail("invalid instance state " + std::to_string(s.instance_state));
+    s.last_successful_time = r.finite("last successful time");
+    if (r.value<uint32_t>("variable count") != variables().size())
+        r.fail("variable count differs from this FMU's");
+    Values& values = s.model.values;
+    for (const Variable& v : variables()) {
+        if (v.real) {
+            v.real(values) = r.value<double>(v.name);
+        } else {
+            v.integer(values) = r.value<int32_t>(v.name);
+        }
+        if (v.causality == Causality::output) continue;
+        try {
+            check_range(v, v.real ? v.real(values) : v.integer(values));
+        } catch (const std::invalid_argument& e) {
+            r.fail(e.what());
+        }
+    }
+    s.model.start_time = r.finite("start time");
+    s.model.input_rates[0] = r.finite("foundation_velocity derivative");
+    s.model.input_rates[1] = r.finite("top_displacement derivative");
+    const uint8_t has_simulation = r.value<uint8_t>("simulation flag");
+    if (has_simulation > 1) r.fail("invalid simulation flag");
+    s.model.has_simulation = has_simulation;
+    if (has_simulation) {
+        try {
+            check_parameters(values.scene());
+        } catch (const std::invalid_argument& e) {
+            r.fail(e.what());
+        }
+        const Eigen::Index dofs = 2 * static_cast<Eigen::Index>(values.nx + 1) * (values.ny + 1);
+        const Eigen::Index nc = values.nx + 1;
+        SimulationSnapshot& sim = s.model.simulation;
+        sim.state.time = r.finite("time");
+        sim.state.u = r.vector("displacement", dofs);
+        sim.state.v = r.vector("velocity", dofs);
+        sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
+        sim.friction_work = r.finite("friction work");
+        visit(sim.observables, [&](auto& x) {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, double>) x = r.finite("observable");
+            else x = r.value<int32_t>("observable");
+        });
+    }
+    if (!r.at_end()) r.fail("trailing bytes after the state");
+    return s;
+}
+
+}  // namespace contactbody::fmu

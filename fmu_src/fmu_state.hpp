@@ -1,0 +1,25 @@
+// The FMU state (fmi2GetFMUstate) as plain data, and its versioned byte format
+// (fmi2SerializeFMUstate): a header with magic, format version, payload size and checksum,
+// then the payload. Nothing in it is a pointer.
+#pragma once
+
+#include <vector>
+
+#include "model.hpp"
+
+namespace contactbody::fmu {
+
+struct FmuState {
+    unsigned instance_state = 0;  // one bit of fmu::FmiState
+    double last_successful_time = 0;
+    ModelState model;
+};
+
+constexpr unsigned state_format_version = 1;
+
+std::vector<char> serialize(const FmuState& state);
+// Throws ModelError naming the defect: wrong magic or version, truncation, checksum, sizes
+// that do not match the mesh, non-finite numbers, trailing bytes.
+FmuState deserialize(const char* bytes, size_t size);
+
+}  // namespace contactbody::fmu

@@ -408,7 +408,12 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     REQUIRE("fmi2DeSerializeFMUstate", serializedState, 1)
     REQUIRE("fmi2DeSerializeFMUstate", FMUstate, 1)
     return guarded(instance, "fmi2DeSerializeFMUstate", [&] {
-        auto fresh = std::make_unique<FmuState>(deserialize(serializedState, size));
+        FmuState parsed = deserialize(serializedState, size);
+        if (*FMUstate) {  // reuse the given state, as FMI 2.0 allows
+            *known_state(instance, *FMUstate) = std::move(parsed);
+            return fmi2OK;
+        }
+        auto fresh = std::make_unique<FmuState>(std::move(parsed));
         instance->states.insert(fresh.get());
         *FMUstate = fresh.release();
         return fmi2OK;

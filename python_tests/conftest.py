@@ -1,6 +1,7 @@
 """Shared fixtures: the built FMU, its extracted copy, and low-level instances that record
 every log message."""
 import ctypes
+import itertools
 import pathlib
 import shutil
 import tempfile
@@ -38,21 +39,31 @@ def vr(model_description):
     return {v.name: v.valueReference for v in model_description.modelVariables}
 
 
+# fmpy's native logger proxy (which formats the variadic message) holds one Python logger
+# for the whole process: messages are routed to their instance by instance name.
+_messages_by_instance = {}
+
+
+def _log(_env, name, status, category, message):
+    _messages_by_instance.setdefault(name.decode(), []).append(
+        (status, category.decode(), message.decode()))
+
+
+_logger = fmi2CallbackLoggerTYPE(_log)
+_serial = itertools.count()
+
+
 class Instance:
     """An FMU2Slave whose log messages are kept in .messages as (status, category, text)."""
 
     def __init__(self, model_description, unzipped, name="instance"):
-        self.messages = []
+        self.name = f"{name}#{next(_serial)}"
+        self.messages = _messages_by_instance.setdefault(self.name, [])
         self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
                                modelIdentifier=model_description.coSimulation.modelIdentifier,
-                               instanceName=name)
-
-        def log(_env, _name, status, category, message):
-            self.messages.append((status, category.decode(), message.decode()))
-
-        self._logger = fmi2CallbackLoggerTYPE(log)  # kept alive as long as the instance
+                               instanceName=self.name)
         self.callbacks = fmi2CallbackFunctions()
-        self.callbacks.logger = self._logger
+        self.callbacks.logger = _logger
         addLoggerProxy(ctypes.byref(self.callbacks))
         self.slave.instantiate(callbacks=self.callbacks)
 

@@ -1,0 +1,321 @@
+"""Issue 5: FMU state save/restore/serialize, reset, variable step sizes, input derivatives,
+threads."""
+import json
+import struct
+import subprocess
+import sys
+import threading
+
+import numpy as np
+import pytest
+from fmpy.fmi1 import FMICallException
+
+from conftest import ROOT, Instance
+
+H = 1e-4
+READ = ["energy", "kinetic_energy", "friction_work", "normal_force", "friction_force",
+        "corner_pressure", "top_reaction_y", "max_penetration"]
+
+
+def start(md, unzipped, name="i", **reals):
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    inst = Instance(md, unzipped, name)
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    for k, v in reals.items():
+        inst.setReal([vr[k]], [v])
+    inst.exitInitializationMode()
+    return inst
+
+
+def outputs(inst, vr):
+    return inst.getReal([vr[n] for n in READ]) + inst.getInteger([vr["active_contact_nodes"]])
+
+
+def run(inst, vr, k0, k1):
+    rows = []
+    for k in range(k0, k1):
+        inst.doStep(k * H, H)
+        rows.append(outputs(inst, vr))
+    return rows
+
+
+def test_rollback_and_replay_are_bit_identical(model_description, unzipped, vr):
+    inst = start(model_description, unzipped)
+    saved = {0: inst.getFMUstate()}
+    rows = []
+    for k in range(20):
+        inst.doStep(k * H, H)
+        rows.append(outputs(inst, vr))
+        if k + 1 in (5, 13):
+            saved[k + 1] = inst.getFMUstate()
+    for k0 in (13, 5, 0, 13):  # repeated and out of order
+        inst.setFMUstate(saved[k0])
+        assert run(inst, vr, k0, 20) == rows[k0:], f"replay from step {k0}"
+    # A state can be overwritten in place, and freed.
+    inst.setFMUstate(saved[5])
+    inst.slave.fmi2GetFMUstate(inst.component, __import__("ctypes").byref(saved[13]))
+    inst.setFMUstate(saved[13])
+    assert run(inst, vr, 5, 20) == rows[5:]
+    for s in saved.values():
+        inst.freeFMUstate(s)
+    inst.close()
+
+
+def test_serialized_state_restores_in_this_and_another_process(model_description, unzipped, vr,
+                                                               tmp_path):
+    inst = start(model_description, unzipped, friction_coefficient=0.7)
+    run(inst, vr, 0, 7)
+    blob = inst.serializeFMUstate(inst.getFMUstate())
+    expected = run(inst, vr, 7, 12)
+
+    inst.setFMUstate(inst.deSerializeFMUstate(blob))
+    assert run(inst, vr, 7, 12) == expected
+
+    (tmp_path / "state.bin").write_bytes(blob)
+    script = f"""
+import json, sys
+sys.path.insert(0, {str(ROOT / 'python_tests')!r})
+import fmpy
+from conftest import Instance
+md = fmpy.read_model_description({str(ROOT / 'build' / 'ContactBody.fmu')!r})
+vr = {{v.name: v.valueReference for v in md.modelVariables}}
+inst = Instance(md, {unzipped!r})
+inst.setupExperiment(startTime=0)
+inst.enterInitializationMode()
+inst.exitInitializationMode()
+inst.setFMUstate(inst.deSerializeFMUstate(open({str(tmp_path / 'state.bin')!r}, 'rb').read()))
+rows = []
+for k in range(7, 12):
+    inst.doStep(k * {H!r}, {H!r})
+    rows.append([x.hex() if isinstance(x, float) else x for x in
+                 inst.getReal([vr[n] for n in {READ!r}]) + inst.getInteger([vr['active_contact_nodes']])])
+print(json.dumps(rows))
+"""
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
+    other = [[float.fromhex(x) if isinstance(x, str) else x for x in row]
+             for row in json.loads(out.stdout.strip().splitlines()[-1])]
+    assert other == expected
+    inst.close()
+
+
+# ---- corrupt, truncated and foreign bytes ----
+
+HEADER = 28
+
+
+def fnv1a(data):
+    h = 1469598103934665603
+    for b in data:
+        h = ((h ^ b) * 1099511628211) % 2**64
+    return h
+
+
+def reseal(blob):
+    """Recompute size and checksum so that the payload's own checks are what rejects it."""
+    payload = blob[HEADER:]
+    return blob[:12] + struct.pack("<QQ", len(payload), fnv1a(payload)) + payload
+
+
+def payload_offsets(md):
+    """Byte offsets of the payload fields, walking the variable table as serialize() does."""
+    off = {"instance_state": 0, "last_successful_time": 4, "variable_count": 12}
+    pos = 16
+    for v in md.modelVariables:
+        off[v.name] = pos
+        pos += 8 if v.type == "Real" else 4
+    off["start_time"] = pos
+    off["simulation_flag"] = pos + 24
+    off["time"] = pos + 25
+    off["u_length"] = pos + 33
+    off["u"] = pos + 41
+    return off
+
+
+def patch(blob, offset, fmt, value):
+    at = HEADER + offset
+    return reseal(blob[:at] + struct.pack(fmt, value) + blob[at + struct.calcsize(fmt):])
+
+
+def corruptions(blob, md):
+    o = payload_offsets(md)
+    n_u = struct.unpack_from("<Q", blob, HEADER + o["u_length"])[0]
+    v_length = o["u"] + 8 * n_u
+    flipped = bytearray(blob)
+    flipped[HEADER + 100] ^= 0x40
+    return {
+        "empty": b"",
+        "one byte": blob[:1],
+        "header only, short": blob[:HEADER - 1],
+        "header only": blob[:HEADER],
+        "wrong magic": b"X" + blob[1:],
+        "version 2": blob[:8] + struct.pack("<I", 2) + blob[12:],
+        "version 0": blob[:8] + struct.pack("<I", 0) + blob[12:],
+        "size field too large": blob[:12] + struct.pack("<Q", len(blob)) + blob[20:],
+        "size field too small": blob[:12] + struct.pack("<Q", 10) + blob[20:],
+        "checksum flipped": blob[:20] + bytes([blob[20] ^ 1]) + blob[21:],
+        "payload byte flipped": bytes(flipped),
+        "truncated by one": blob[:-1],
+        "truncated to half": blob[: len(blob) // 2],
+        "trailing byte": blob + b"\0",
+        "garbage": bytes(np.random.default_rng(1).integers(0, 256, len(blob), dtype=np.uint8)),
+        "zeros": bytes(len(blob)),
+        "resealed truncation": reseal(blob[:-8]),
+        "resealed trailing byte": reseal(blob + b"\0"),
+        "no instance state": patch(blob, o["instance_state"], "<I", 0),
+        "two instance states": patch(blob, o["instance_state"], "<I", 0b110),
+        "unknown instance state": patch(blob, o["instance_state"], "<I", 1 << 20),
+        "variable count": patch(blob, o["variable_count"], "<I", 3),
+        "nx = 0": patch(blob, o["nx"], "<i", 0),
+        "nx of another mesh": patch(blob, o["nx"], "<i", 10),
+        "mass_matrix = 9": patch(blob, o["mass_matrix"], "<i", 9),
+        "density NaN": patch(blob, o["density"], "<d", float("nan")),
+        "negative density": patch(blob, o["density"], "<d", -1.0),
+        "time infinite": patch(blob, o["time"], "<d", float("inf")),
+        "huge vector length": patch(blob, o["u_length"], "<Q", 2**60),
+        "NaN displacement": patch(blob, o["u"] + 80, "<d", float("nan")),
+        "velocity length": patch(blob, v_length, "<Q", 3),
+        "simulation flag 7": patch(blob, o["simulation_flag"], "<B", 7),
+    }
+
+
+def test_corrupt_state_bytes_are_rejected(model_description, unzipped, vr):
+    inst = start(model_description, unzipped)
+    run(inst, vr, 0, 3)
+    blob = inst.serializeFMUstate(inst.getFMUstate())
+    cases = corruptions(blob, model_description)
+    assert len(cases) >= 20
+    for name, bad in cases.items():
+        before = len(inst.messages)
+        with pytest.raises(FMICallException) as failure:
+            inst.deSerializeFMUstate(bad)
+        assert failure.value.status == 3, name
+        assert any("rejected" in m[2] for m in inst.messages[before:]), name
+    # The instance is untouched: the good bytes still restore and replay.
+    inst.setFMUstate(inst.deSerializeFMUstate(blob))
+    assert run(inst, vr, 3, 5) == run(start(model_description, unzipped, "ref"), vr, 0, 5)[3:]
+    inst.close()
+
+
+def test_state_of_another_mesh_is_refused_by_set(model_description, unzipped, vr):
+    coarse = start(model_description, unzipped, "coarse")
+    fine = Instance(model_description, unzipped, "fine")
+    fine.setupExperiment(startTime=0)
+    fine.enterInitializationMode()
+    fine.setInteger([vr["nx"]], [10])
+    fine.exitInitializationMode()
+    blob = fine.serializeFMUstate(fine.getFMUstate())
+    state = coarse.deSerializeFMUstate(blob)  # well-formed bytes...
+    with pytest.raises(FMICallException):
+        coarse.setFMUstate(state)  # ...of another mesh
+    assert any("nx" in m[2] for m in coarse.messages)
+    assert np.isfinite(run(coarse, vr, 0, 1)[0][0])
+
+
+def test_state_pointers_not_made_by_the_instance_are_refused(model_description, unzipped):
+    from fmpy.fmi2 import fmi2FMUstate
+    a, b = start(model_description, unzipped, "a"), start(model_description, unzipped, "b")
+    sa = a.getFMUstate()
+    with pytest.raises(FMICallException):
+        b.setFMUstate(sa)
+    with pytest.raises(FMICallException):
+        a.setFMUstate(fmi2FMUstate(12345))
+    a.freeFMUstate(sa)
+    with pytest.raises(FMICallException):
+        a.setFMUstate(sa)  # freed
+
+
+def test_reset_returns_to_the_instantiated_state(model_description, unzipped, vr):
+    inst = start(model_description, unzipped, friction_coefficient=0.3)
+    run(inst, vr, 0, 5)
+    inst.reset()
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.exitInitializationMode()
+    assert run(inst, vr, 0, 5) == run(start(model_description, unzipped, "fresh"), vr, 0, 5)
+
+
+def test_alternating_step_sizes_factor_at_most_twice(model_description, unzipped, vr):
+    inst = Instance(model_description, unzipped)
+    inst.setDebugLogging(True, ["logEvents"])
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.exitInitializationMode()
+    t = 0.0
+    for k in range(20):
+        h = 1e-4 if k % 2 == 0 else 7e-5
+        inst.doStep(t, h)
+        t += h
+    factorizations = [m for m in inst.messages if "factorized" in m[2]]
+    assert 1 <= len(factorizations) <= 2
+    assert inst.getRealStatus(2) == pytest.approx(t, rel=1e-12)  # fmi2LastSuccessfulTime
+
+
+def test_contact_solver_statistics_are_logged_on_request(model_description, unzipped):
+    inst = Instance(model_description, unzipped)
+    inst.setDebugLogging(True, ["logContactSolver"])
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.exitInitializationMode()
+    inst.doStep(0.0, H)
+    stats = [m for m in inst.messages if m[1] == "logContactSolver"]
+    assert stats and "substeps 25" in stats[0][2] and "Newton iterations" in stats[0][2]
+    assert not any(m[1] == "logEvents" for m in inst.messages)  # not requested
+
+
+def ramp(model_description, unzipped, vr, with_derivatives, h=1e-3, T=0.004):
+    """Top displacement ramped from -2.5e-5 to -5e-5 m over T, frictionless and at rest."""
+    inst = start(model_description, unzipped, friction_coefficient=0.0, foundation_velocity=0.0)
+    slope = -2.5e-5 / T
+    reaction, kinetic = [], []
+    for k in range(int(round(2 * T / h))):
+        t = k * h
+        inst.setReal([vr["top_displacement"]], [-2.5e-5 + slope * min(t, T)])
+        if with_derivatives and t < T - 1e-12:
+            inst.setRealInputDerivatives([vr["top_displacement"]], [1], [slope])
+        inst.doStep(t, h)
+        reaction.append(inst.getReal([vr["top_reaction_y"]])[0])
+        kinetic.append(inst.getReal([vr["kinetic_energy"]])[0])
+        if with_derivatives and t < T - 1e-12:  # the input moved on along its line
+            assert inst.getReal([vr["top_displacement"]])[0] == pytest.approx(
+                -2.5e-5 + slope * (t + h), rel=1e-12)
+    return np.array(reaction), np.array(kinetic)
+
+
+def test_input_derivatives_ramp_the_load_instead_of_jumping(model_description, unzipped, vr):
+    held_r, held_k = ramp(model_description, unzipped, vr, False)
+    ramped_r, ramped_k = ramp(model_description, unzipped, vr, True)
+    # Held inputs jump the clamp at every step and pump kinetic energy into the body.
+    assert held_k.max() > 5 * ramped_k.max()
+    assert np.abs(held_r - ramped_r).max() > 0.02 * np.abs(ramped_r).max()
+
+
+def test_input_derivatives_are_checked(instance, vr):
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    instance.exitInitializationMode()
+    for bad in ([vr["density"]], [1], [1.0]), ([vr["top_displacement"]], [2], [1.0]), \
+               ([vr["top_displacement"]], [1], [float("nan")]), ([424242], [1], [1.0]):
+        with pytest.raises(FMICallException):
+            instance.setRealInputDerivatives(*bad)
+
+
+def test_four_instances_in_four_threads_match_each_run_alone(model_description, unzipped, vr):
+    frictions = [1.2, 0.6, 0.2, 0.0]
+
+    def simulate(i, results):
+        inst = start(model_description, unzipped, f"t{i}", friction_coefficient=frictions[i])
+        results[i] = run(inst, vr, 0, 40)
+        inst.close()
+
+    alone = {}
+    for i in range(4):
+        simulate(i, alone)
+    together = {}
+    threads = [threading.Thread(target=simulate, args=(i, together)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for i in range(4):
+        assert together[i] == alone[i], f"instance {i}"

@@ -19,8 +19,11 @@ set_target_properties(ContactBody PROPERTIES
   PREFIX "" CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
   BUILD_RPATH "$ORIGIN" INSTALL_RPATH "$ORIGIN")
 # Self-contained: libstdc++/libgcc inside, their symbols hidden; other libraries beside it.
-target_link_options(ContactBody PRIVATE -static-libstdc++ -static-libgcc
-  -Wl,--exclude-libs,ALL -Wl,--enable-new-dtags -Wl,--no-undefined)
+# (The sanitizer build links them dynamically: the sanitizer runtimes need the shared ones.)
+if(NOT CONTACTBODY_SANITIZE)
+  target_link_options(ContactBody PRIVATE -static-libstdc++ -static-libgcc -Wl,--exclude-libs,ALL)
+endif()
+target_link_options(ContactBody PRIVATE -Wl,--enable-new-dtags -Wl,--no-undefined)
 
 add_executable(generate_model_description fmu_src/generate_model_description.cpp fmu_src/variables.cpp)
 target_include_directories(generate_model_description PRIVATE fmu_src)

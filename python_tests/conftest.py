@@ -2,6 +2,7 @@
 every log message."""
 import ctypes
 import itertools
+import os
 import pathlib
 import shutil
 import tempfile
@@ -12,7 +13,9 @@ from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
 from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-FMU = ROOT / "build" / "ContactBody.fmu"
+# CONTACTBODY_FMU points the suite at another build (the sanitizer job's).
+FMU = pathlib.Path(os.environ.get("CONTACTBODY_FMU", ROOT / "build" / "ContactBody.fmu"))
+SANITIZED = os.environ.get("CONTACTBODY_SANITIZED") == "1"
 
 
 @pytest.fixture(scope="session")

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from conftest import ROOT, Instance
+from conftest import FMU, ROOT, Instance
 
 H = 1e-4
 READ = ["energy", "kinetic_energy", "friction_work", "normal_force", "friction_force",
@@ -78,7 +78,7 @@ import json, sys
 sys.path.insert(0, {str(ROOT / 'python_tests')!r})
 import fmpy
 from conftest import Instance
-md = fmpy.read_model_description({str(ROOT / 'build' / 'ContactBody.fmu')!r})
+md = fmpy.read_model_description({str(FMU)!r})
 vr = {{v.name: v.valueReference for v in md.modelVariables}}
 inst = Instance(md, {unzipped!r})
 inst.setupExperiment(startTime=0)

@@ -15,6 +15,7 @@ Simulation::Simulation(const SceneParameters& params, double initial_top_displac
 int Simulation::substeps_for(double h) const {
     // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off.
     const double ratio = h / stepper_.parameters().internal_step;
+    if (!(ratio <= 1e9)) throw std::invalid_argument("step needs more than 1e9 substeps");
     return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-12))));
 }
 

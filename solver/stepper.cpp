@@ -1,8 +1,29 @@
 #include "stepper.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace contactbody {
+
+namespace {
+
+// Adds the time since the last lap to one of the timings (no cost when timing is off).
+class Laps {
+public:
+    explicit Laps(bool on) : on_(on) { if (on_) last_ = std::chrono::steady_clock::now(); }
+    void lap(double& into) {
+        if (!on_) return;
+        const auto now = std::chrono::steady_clock::now();
+        into += std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+    }
+
+private:
+    bool on_;
+    std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace
 
 using Cholesky = Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>;
 
@@ -98,8 +119,10 @@ void Stepper::setup_contact_problem(const Factor& f) {
 }
 
 SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
+    Laps laps(timing_);
     const Factor& f = factor_for(dt);
     if (problem_factor_ != &f) setup_contact_problem(f);
+    laps.lap(timings_.factor);
     const Discretization& d = disc_;
     const int nc = num_contact_nodes();
     const bool friction = problem_.has_friction();
@@ -115,7 +138,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     rhs_.noalias() = d.M_free_rows * z_;
     rhs_.noalias() -= c1 * (d.M_free_clamped * clamped_half_);
     rhs_.noalias() -= d.A_free_clamped * clamped_half_;
+    laps.lap(timings_.update);
     u_half_free_ = f.cholesky.solve(rhs_);
+    laps.lap(timings_.solve);
 
     // Condensed contact problem on u^{k+1/2}; the standard_implicit_contact variant
     // imposes the conditions at the end of the step, an affine map of u^{k+1/2}.
@@ -144,9 +169,12 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
             rhs_[d.contact_y[i]] -= s.lambda[i];
             if (friction) rhs_[d.contact_x[i]] += s.lambda[nc + i];
         }
+        laps.lap(timings_.contact);
         u_half_free_ = f.cholesky.solve(rhs_);
+        laps.lap(timings_.solve);
     } else {
         s.lambda.setZero();  // no node can touch: the contact solve is skipped
+        laps.lap(timings_.contact);
     }
 
     for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
@@ -200,6 +228,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         s.v[dof] = y ? load.top_rate : 0.0;
     }
     s.time += dt;
+    laps.lap(timings_.update);
     return report;
 }
 

@@ -50,6 +50,14 @@ struct ContactSnapshot {
     Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
 };
 
+// Where a substep's time goes, accumulated when timing is enabled (benchmarks).
+struct SubstepTimings {
+    double solve = 0;    // sparse forward/backward solves
+    double contact = 0;  // condensed problem set-up and Newton
+    double update = 0;   // right-hand side, state update, reaction, snapshot
+    double factor = 0;   // factorization and Delassus operator
+};
+
 class Stepper {
 public:
     explicit Stepper(const SceneParameters& params);
@@ -70,6 +78,8 @@ public:
 
     const ContactSnapshot& last_contact() const { return snapshot_; }
     int factorizations() const { return factorizations_; }
+    void enable_timing(bool on) { timing_ = on; }
+    const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() { return options_; }
 
 private:
@@ -85,6 +95,8 @@ private:
     std::unique_ptr<Factor> cache_[2];  // most recent first: masters alternate step sizes
     const Factor* problem_factor_ = nullptr;
     int factorizations_ = 0;
+    bool timing_ = false;
+    SubstepTimings timings_;
     ContactSnapshot snapshot_;
     // Workspace, sized once.
     Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, scratch_free_;

@@ -1,0 +1,105 @@
+// Cost of one midpoint substep on the paper scene against its floor, one bare sparse solve
+// with the same Cholesky factor, measured in the same run. Prints one JSON object.
+//   bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP_DISPLACEMENT]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "simulation.hpp"
+
+using namespace contactbody;
+using Clock = std::chrono::steady_clock;
+
+// Peak resident memory of this process image in MB (VmHWM; ru_maxrss would include the
+// parent's peak, which survives execve).
+static double peak_rss_mb() {
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    double kb = 0;
+    while (status >> key) {
+        if (key == "VmHWM:") {
+            status >> kb;
+            break;
+        }
+    }
+    return kb / 1024.0;
+}
+
+static double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+int main(int argc, char** argv) {
+    if (argc < 4) {
+        std::fprintf(stderr, "usage: bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP]\n");
+        return 2;
+    }
+    SceneParameters p;
+    p.nx = p.ny = std::atoi(argv[1]);
+    const double dt = std::atof(argv[2]);
+    const int substeps = std::atoi(argv[3]);
+    if (argc > 4) p.friction_coefficient = std::atof(argv[4]);
+    if (argc > 5) p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[5]));
+    const double top = argc > 6 ? std::atof(argv[6]) : -2.5e-5;  // > 0 lifts the body off
+    p.internal_step = dt;
+
+    auto t0 = Clock::now();
+    Stepper stepper(p);
+    const double setup_assembly = seconds_since(t0);
+    State s = stepper.initial_state(top);
+    const SubstepLoad load{top, top, 0, 20};
+
+    stepper.enable_timing(true);
+    stepper.substep(s, dt, load);  // factorization + Delassus, then one substep
+    const double setup_factor = stepper.timings().factor;
+    const SubstepTimings first = stepper.timings();
+
+    long iterations = 0, solves = 0;
+    t0 = Clock::now();
+    for (int k = 0; k < substeps; ++k) {
+        const SubstepReport r = stepper.substep(s, dt, load);
+        iterations += r.contact_iterations;
+        solves += r.contact_solved;
+    }
+    const double per_substep = seconds_since(t0) / substeps;
+    SubstepTimings t = stepper.timings();
+    t.solve -= first.solve;
+    t.contact -= first.contact;
+    t.update -= first.update;
+
+    // The floor: the same factor (same matrix, same CHOLMOD settings), one solve per call.
+    const Discretization& d = stepper.discretization();
+    const SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
+    Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> factor(K);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Random(K.rows()), x(K.rows());
+    const int bare = std::max(50, substeps / 2);
+    t0 = Clock::now();
+    for (int k = 0; k < bare; ++k) {
+        x = factor.solve(rhs);
+        rhs[k % rhs.size()] += 1e-3 * x[0];  // the right-hand side changes every time
+    }
+    const double floor = seconds_since(t0) / bare;
+
+    // Energies, computed only when an output asks for them.
+    Simulation sim(p, top);
+    t0 = Clock::now();
+    double e = 0;
+    for (int k = 0; k < 200; ++k) {
+        e += sim.observables().energy;
+        sim.set_friction_coefficient(p.friction_coefficient);  // no-op, but reads again
+    }
+    std::printf(
+        "{\"nx\": %d, \"dt\": %g, \"friction\": %g, \"mass_matrix\": %d, \"unknowns\": %zu, "
+        "\"substeps\": %d, \"per_substep\": %.6e, \"floor_solve\": %.6e, \"ratio\": %.3f, "
+        "\"split_solve\": %.6e, \"split_contact\": %.6e, \"split_update\": %.6e, "
+        "\"contact_iterations\": %.3f, \"contact_solve_fraction\": %.3f, "
+        "\"setup_assembly\": %.4f, \"setup_factor_delassus\": %.4f, \"peak_rss_mb\": %.1f, "
+        "\"top_displacement\": %g}\n",
+        p.nx, dt, p.friction_coefficient, static_cast<int>(p.mass_matrix), d.free_dofs.size(),
+        substeps, per_substep, floor, per_substep / floor, t.solve / substeps,
+        t.contact / substeps, t.update / substeps, double(iterations) / substeps,
+        double(solves) / substeps, setup_assembly, setup_factor, peak_rss_mb(), top);
+    return e > 0 ? 0 : 1;
+}

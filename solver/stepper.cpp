@@ -32,6 +32,7 @@ struct Stepper::Factor {
     double dt = 0;
     Cholesky cholesky;
     Eigen::MatrixXd delassus;  // (N, T) x (N, T), 2 n_c square
+    SparseMatrix K_free_clamped;  // the coupling of free and clamped dofs in K
 };
 
 Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discretize(params)) {
@@ -79,6 +80,7 @@ Stepper::Factor& Stepper::factor_for(double dt) {
     f->dt = dt;
     const SparseMatrix K = (4.0 / (dt * dt)) * disc_.M_free + disc_.A_free;
     f->cholesky.compute(K);
+    f->K_free_clamped = (4.0 / (dt * dt)) * disc_.M_free_clamped + disc_.A_free_clamped;
     if (f->cholesky.info() != Eigen::Success)
         throw std::runtime_error("Cholesky factorization of 4/dt^2 M + A failed");
     ++factorizations_;
@@ -136,8 +138,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
 
     z_ = c1 * s.u + c2 * s.v;
     rhs_.noalias() = d.M_free_rows * z_;
-    rhs_.noalias() -= c1 * (d.M_free_clamped * clamped_half_);
-    rhs_.noalias() -= d.A_free_clamped * clamped_half_;
+    rhs_.noalias() -= f.K_free_clamped * clamped_half_;
     laps.lap(timings_.update);
     u_half_free_ = f.cholesky.solve(rhs_);
     laps.lap(timings_.solve);
@@ -194,7 +195,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     snapshot_.gap_limit = problem_.gap_limit;
     snapshot_.slip.setZero(nc);
     snapshot_.lambda_N = s.lambda.head(nc);
-    snapshot_.lambda_T = friction ? Eigen::VectorXd(s.lambda.tail(nc)) : Eigen::VectorXd::Zero(nc);
+    snapshot_.lambda_T.resize(nc);  // no reallocation once sized
+    if (friction) snapshot_.lambda_T = s.lambda.tail(nc);
+    else snapshot_.lambda_T.setZero();
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
         snapshot_.normal_displacement[i] = -u_half_[dof_y(node)];

@@ -41,7 +41,6 @@ struct Variable {
     double& (*real)(Values&);  // exactly one of real / integer is set, by type
     int& (*integer)(Values&);
 
-    bool is_real() const { return type == Type::Real; }
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
     }

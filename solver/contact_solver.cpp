@@ -1,10 +1,22 @@
 #include "contact_solver.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda,
+             const int* ipiv, double* b, const int* ldb, int* info);
+}
+
 namespace contactbody {
+
+std::uint64_t ContactProblem::next_revision() {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
 
 // Alart-Curnier residual phi(lambda), zero exactly at a solution; piecewise linear in lambda,
 // so a semi-smooth Newton step lands on the solution once the node states are right.
@@ -17,6 +29,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
     u_hat_ += p.a;
     phi.resize(lambda.size());
     status_.resize(n);
+    pattern_.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) {
         const double pressure = -lambda[i];
         const double trial = pressure - r_[i] * (p.gap_limit[i] - u_hat_[i]);
@@ -24,9 +37,11 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
             phi[i] = pressure;
             if (friction) phi[n + i] = lambda[n + i];
             status_[i] = NodeStatus::open;
+            pattern_[i] = 0;
             continue;
         }
         phi[i] = pressure - trial;
+        pattern_[i] = 1;
         if (!friction) {
             status_[i] = NodeStatus::stick;
             continue;
@@ -39,6 +54,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
         } else {
             phi[n + i] = lambda[n + i] - std::copysign(bound, z);
             status_[i] = NodeStatus::slip;
+            pattern_[i] = z > 0 ? 2 : -2;
         }
     }
     const double scale = lambda.lpNorm<Eigen::Infinity>();
@@ -47,30 +63,74 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
     return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
 }
 
-// Generalized Jacobian of phi at lambda, for the node states found by residual().
-void ContactSolver::jacobian(const ContactProblem& p, const Eigen::VectorXd& lambda) {
-    const Eigen::Index n = p.gap_limit.size(), m = lambda.size();
+// Semi-smooth Newton direction delta (J delta = -phi, J the generalized Jacobian of phi for
+// the node states found by residual()), computed on the reduced system: open nodes' unknowns
+// and slipping nodes' tangential ones follow explicitly from the others,
+//   open:      delta_N = phi_N, delta_T = -phi_T     (lambda goes to 0)
+//   slipping:  delta_T = -phi_T + sf (phi_N - delta_N),  sf = +-F
+// and the remaining rows (N of active nodes, T of sticking ones), divided by r, read
+//   W(N_i, :) delta = phi_N / r_N,   W(T_i, :) delta = -phi_T / r_T.
+// The reduced matrix depends only on W and the pattern, so its LU is reused while they hold.
+void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
+    const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();
-    jacobian_.setZero(m, m);
+    explicit_.setZero(m);  // the delta_R-independent part of delta
     for (Eigen::Index i = 0; i < n; ++i) {
-        if (status_[i] == NodeStatus::open) {
-            jacobian_(i, i) = -1;
-            if (friction) jacobian_(n + i, n + i) = 1;
-            continue;
-        }
-        jacobian_.row(i) = -r_[i] * p.W.row(i);
-        if (!friction) continue;
-        if (status_[i] == NodeStatus::stick) {
-            jacobian_.row(n + i) = r_[n + i] * p.W.row(n + i);
-        } else {
-            const double z = lambda[n + i] - r_[n + i] * (u_hat_[n + i] - p.slip_origin[i]);
-            const double sf = std::copysign(p.friction, z);
-            // d(trial)/d(lambda) = -e_N + r_N W(N, :)
-            jacobian_.row(n + i) = -sf * r_[i] * p.W.row(i);
-            jacobian_(n + i, i) += sf;
-            jacobian_(n + i, n + i) += 1;
+        if (pattern_[i] == 0) {
+            explicit_[i] = phi_[i];
+            if (friction) explicit_[n + i] = -phi_[n + i];
+        } else if (friction && pattern_[i] != 1) {
+            explicit_[n + i] = -phi_[n + i] + slip_sign(i, p.friction) * phi_[i];
         }
     }
+    if (!reuse) {
+        reduced_.clear();
+        for (Eigen::Index i = 0; i < n; ++i)
+            if (pattern_[i] != 0) reduced_.push_back(static_cast<int>(i));
+        if (friction)
+            for (Eigen::Index i = 0; i < n; ++i)
+                if (pattern_[i] == 1) reduced_.push_back(static_cast<int>(n + i));
+        const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
+        // LAPACK on a buffer sized once for all m unknowns: the reduced size changes with the
+        // active set, and Eigen's LU would reallocate every time it does.
+        if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
+        for (Eigen::Index b = 0; b < k; ++b) {
+            const int col = reduced_[b];
+            const bool slipping = friction && col < n && pattern_[col] != 1;
+            const double sf = slipping ? slip_sign(col, p.friction) : 0;
+            for (Eigen::Index a = 0; a < k; ++a)
+                reduced_matrix_(a, b) = p.W(reduced_[a], col) -
+                                        (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
+        }
+        if (k > 0) {
+            pivots_.resize(static_cast<size_t>(m));
+            int rows = static_cast<int>(k), lda = static_cast<int>(m), info = 0;
+            dgetrf_(&rows, &rows, reduced_matrix_.data(), &lda, pivots_.data(), &info);
+            if (info != 0) {
+                lu_revision_ = 0;
+                throw ContactSolveError("contact solver: singular Newton matrix");
+            }
+        }
+    }
+    const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
+    reduced_rhs_.resize(m);
+    for (Eigen::Index a = 0; a < k; ++a) {
+        const int row = reduced_[a];
+        const double target = row < n ? phi_[row] * p.W(row, row) : -phi_[row] * p.W(row, row);
+        reduced_rhs_[a] = target - p.W.row(row).dot(explicit_);
+    }
+    step_ = explicit_;
+    if (k > 0) {
+        int rows = static_cast<int>(k), lda = static_cast<int>(m), one = 1, info = 0;
+        char no_transpose = 'N';
+        dgetrs_(&no_transpose, &rows, &one, reduced_matrix_.data(), &lda, pivots_.data(),
+                reduced_rhs_.data(), &rows, &info);
+        for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
+    }
+    if (friction)
+        for (Eigen::Index i = 0; i < n; ++i)
+            if (pattern_[i] == 2 || pattern_[i] == -2)
+                step_[n + i] -= slip_sign(i, p.friction) * step_[i];
 }
 
 ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
@@ -92,25 +152,39 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
-        jacobian(p, lambda);
-        lu_.compute(jacobian_);
-        step_ = lu_.solve(-phi_);
-        if (!step_.allFinite())
+        // The reduced Newton matrix is fixed by W and the node states: when the states of
+        // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
+        const bool reuse = p.revision != 0 && p.revision == lu_revision_ &&
+                           pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_;
+        newton_direction(p, reuse);
+        if (!reuse) {
+            lu_pattern_ = pattern_;
+            lu_revision_ = p.revision;
+            ++factorizations_;
+        }
+        if (!step_.allFinite()) {
+            lu_revision_ = 0;
             throw ContactSolveError("contact solver: singular Newton matrix");
+        }
         // Backtracking on |phi|^2; if no step decreases it, take the full one anyway
         // (phi is piecewise linear: the full step is exact once the states settle).
-        double alpha = 1;
+        double alpha = 1, res = 0;
         bool decreased = false;
         for (int k = 0; k < 8 && !decreased; ++k) {
             if (k > 0) alpha *= 0.5;
             trial_ = lambda + alpha * step_;
-            const double res = residual(p, trial_, trial_phi_);
+            res = residual(p, trial_, trial_phi_);
             decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit ||
                         res <= options.tolerance;
         }
-        if (!decreased) alpha = 1;
-        lambda += alpha * step_;
-        info.residual = residual(p, lambda, phi_);
+        if (decreased) {  // the residual at the accepted point is the trial's
+            lambda.swap(trial_);
+            phi_.swap(trial_phi_);
+            info.residual = res;
+        } else {
+            lambda += step_;
+            info.residual = residual(p, lambda, phi_);
+        }
         merit = phi_.squaredNorm();
     }
     return info;

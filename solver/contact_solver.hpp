@@ -9,8 +9,10 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace contactbody {
 
@@ -22,6 +24,11 @@ struct ContactProblem {
     Eigen::VectorXd gap_limit;   // n: u_N must not exceed it
     Eigen::VectorXd slip_origin; // n: slip is u_T - slip_origin (unused without friction)
     double friction = 0;         // F
+    // Identifies W: the solver reuses its Newton factorization across solves while the revision
+    // (nonzero) and the node states are unchanged. Set a new one whenever W changes; 0 = never
+    // reuse. next_revision() gives process-wide unique values.
+    std::uint64_t revision = 0;
+    static std::uint64_t next_revision();
     bool has_friction() const { return W.rows() == 2 * gap_limit.size(); }
 };
 
@@ -47,17 +54,29 @@ public:
                            Eigen::VectorXd& lambda);
     // Node states of the last solution (open / sticking / slipping).
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
+    // Newton matrices factored so far (the rest of the iterations reused one).
+    long factorizations() const { return factorizations_; }
 
 private:
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
-    void jacobian(const ContactProblem& p, const Eigen::VectorXd& lambda);
+    void newton_direction(const ContactProblem& p, bool reuse);
+    // +-F for a slipping node, the sign of its slip.
+    double slip_sign(Eigen::Index i, double friction) const {
+        return pattern_[i] > 0 ? friction : -friction;
+    }
 
     // Workspace kept between calls so that steady stepping does not reallocate.
-    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_;
-    Eigen::MatrixXd jacobian_;
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_;
+    std::vector<int> reduced_;  // unknowns of the reduced Newton system
+    Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
+    std::vector<int> pivots_;
+    Eigen::VectorXd reduced_rhs_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
+    // What the Jacobian depends on besides W: per node 0 open, 1 stick, +-2 slip direction.
+    Eigen::Matrix<signed char, Eigen::Dynamic, 1> pattern_, lu_pattern_;
+    std::uint64_t lu_revision_ = 0;
+    long factorizations_ = 0;
 };
 
 }  // namespace contactbody

@@ -107,4 +107,10 @@ Discretization discretize(const SceneParameters& p) {
     return d;
 }
 
+std::vector<int> Discretization::contact_unknowns() const {
+    std::vector<int> dofs(contact_y);
+    dofs.insert(dofs.end(), contact_x.begin(), contact_x.end());
+    return dofs;
+}
+
 }  // namespace contactbody

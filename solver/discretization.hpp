@@ -48,6 +48,8 @@ struct Discretization {
     SparseMatrix A_free, M_free;    // free x free
     // Contact node c: free positions of its x and y dofs.
     std::vector<int> contact_x, contact_y;
+    // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T).
+    std::vector<int> contact_unknowns() const;
 };
 
 Discretization discretize(const SceneParameters& p);

@@ -1,5 +1,7 @@
 #include "stepper.hpp"
 
+#include "trailing_cholesky.hpp"
+
 #include <chrono>
 #include <cmath>
 
@@ -25,13 +27,16 @@ private:
 
 }  // namespace
 
-using Cholesky = Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>;
-
-// Factor of K = 4/dt^2 M + A on the free dofs, with its Delassus operator.
+// Factor of K = 4/dt^2 M + A on the free dofs with the contact dofs ordered last, and the
+// contact operators that live on its trailing block L22 (m = 2 n_c unknowns, N then T):
+//   G = L22^-1 S with S the signed placement of B^T's columns,  W = B K^-1 B^T = G^T G.
+// Then with y = L^-1 P rhs:  B K^-1 rhs = G^T y_2, and adding B^T lambda to the right-hand
+// side only adds G lambda to y_2, so a substep is one forward and one backward solve.
 struct Stepper::Factor {
     double dt = 0;
-    Cholesky cholesky;
-    Eigen::MatrixXd delassus;  // (N, T) x (N, T), 2 n_c square
+    std::unique_ptr<TrailingCholesky> cholesky;
+    Eigen::MatrixXd G;         // trailing positions x (N, T)
+    Eigen::MatrixXd delassus;  // G^T G, (N, T) x (N, T)
     SparseMatrix K_free_clamped;  // the coupling of free and clamped dofs in K
 };
 
@@ -78,33 +83,20 @@ Stepper::Factor& Stepper::factor_for(double dt) {
     }
     auto f = std::make_unique<Factor>();
     f->dt = dt;
+    const int nc = num_contact_nodes(), m = 2 * nc;
+    const std::vector<int> contact_dofs = disc_.contact_unknowns();
     const SparseMatrix K = (4.0 / (dt * dt)) * disc_.M_free + disc_.A_free;
-    f->cholesky.compute(K);
+    f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
     f->K_free_clamped = (4.0 / (dt * dt)) * disc_.M_free_clamped + disc_.A_free_clamped;
-    if (f->cholesky.info() != Eigen::Success)
-        throw std::runtime_error("Cholesky factorization of 4/dt^2 M + A failed");
     ++factorizations_;
 
-    // W = B K^-1 B^T, one block of right-hand sides at a time to bound memory.
-    const int nc = num_contact_nodes(), m = 2 * nc;
-    const Eigen::Index nf = static_cast<Eigen::Index>(disc_.free_dofs.size());
-    f->delassus.resize(m, m);
-    constexpr int block = 32;
-    Eigen::MatrixXd rhs(nf, block);
-    for (int c0 = 0; c0 < m; c0 += block) {
-        const int width = std::min(block, m - c0);
-        rhs.setZero();
-        for (int j = 0; j < width; ++j) {
-            const int c = c0 + j;  // B rows: N_i = -e_y(i), T_i = +e_x(i)
-            if (c < nc) rhs(disc_.contact_y[c], j) = -1;
-            else rhs(disc_.contact_x[c - nc], j) = 1;
-        }
-        const Eigen::MatrixXd x = f->cholesky.solve(rhs.leftCols(width));
-        for (int i = 0; i < nc; ++i) {
-            f->delassus.block(i, c0, 1, width) = -x.row(disc_.contact_y[i]);
-            f->delassus.block(nc + i, c0, 1, width) = x.row(disc_.contact_x[i]);
-        }
-    }
+    // B rows: N_i = -e_y(i), T_i = +e_x(i).
+    const Eigen::Index first = f->cholesky->size() - m;
+    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m, m);
+    for (int c = 0; c < m; ++c)
+        S(f->cholesky->position(contact_dofs[static_cast<size_t>(c)]) - first, c) = c < nc ? -1 : 1;
+    f->G = f->cholesky->trailing_block().triangularView<Eigen::Lower>().solve(S);
+    f->delassus.noalias() = f->G.transpose() * f->G;
     cache_[1] = std::move(cache_[0]);
     cache_[0] = std::move(f);
     return *cache_[0];
@@ -116,6 +108,7 @@ void Stepper::setup_contact_problem(const Factor& f) {
     problem_.W = friction ? f.delassus : Eigen::MatrixXd(f.delassus.topLeftCorner(nc, nc));
     problem_.a.resize(friction ? 2 * nc : nc);
     problem_.friction = params_.friction_coefficient;
+    problem_.revision = ContactProblem::next_revision();
     snapshot_.delassus_diagonal = f.delassus.diagonal();
     problem_factor_ = &f;
 }
@@ -140,22 +133,24 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     rhs_.noalias() = d.M_free_rows * z_;
     rhs_.noalias() -= f.K_free_clamped * clamped_half_;
     laps.lap(timings_.update);
-    u_half_free_ = f.cholesky.solve(rhs_);
+    Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
     laps.lap(timings_.solve);
 
     // Condensed contact problem on u^{k+1/2}; the standard_implicit_contact variant
     // imposes the conditions at the end of the step, an affine map of u^{k+1/2}.
+    const int unknowns = static_cast<int>(problem_.W.rows());
+    const auto G = f.G.leftCols(unknowns);
+    auto y_contact = y.tail(f.G.rows());
+    problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
     const bool implicit = params_.mass_matrix == MassVariant::standard_implicit_contact;
     bool touching = false;
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
         const double uN_old = -s.u[dof_y(node)];
-        problem_.a[i] = -u_half_free_[d.contact_y[i]];
         problem_.gap_limit[i] = implicit ? 0.5 * (params_.initial_gap + uN_old)
                                          : params_.initial_gap;
         touching = touching || problem_.a[i] > problem_.gap_limit[i];
         if (friction) {
-            problem_.a[nc + i] = u_half_free_[d.contact_x[i]];
             const double ux_old = s.u[dof_x(node)], vx_old = s.v[dof_x(node)];
             problem_.slip_origin[i] =
                 implicit ? ux_old + 0.25 * dt * (vx_old + load.foundation_velocity)
@@ -166,17 +161,13 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     if (touching) {
         report.contact_iterations = solver_.solve(problem_, options_, s.lambda).iterations;
         report.contact_solved = true;
-        for (int i = 0; i < nc; ++i) {
-            rhs_[d.contact_y[i]] -= s.lambda[i];
-            if (friction) rhs_[d.contact_x[i]] += s.lambda[nc + i];
-        }
-        laps.lap(timings_.contact);
-        u_half_free_ = f.cholesky.solve(rhs_);
-        laps.lap(timings_.solve);
+        y_contact.noalias() += G * s.lambda;  // L^-1 P B^T lambda lives in the trailing block
     } else {
         s.lambda.setZero();  // no node can touch: the contact solve is skipped
-        laps.lap(timings_.contact);
     }
+    laps.lap(timings_.contact);
+    f.cholesky->backward(u_half_free_);
+    laps.lap(timings_.solve);
 
     for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];

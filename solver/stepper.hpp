@@ -3,10 +3,11 @@
 // The unknown is u^{k+1/2}. On the free dofs it solves
 //   K u = M (4/dt^2 u^k + 2/dt v^k) - K_fc u_c^{k+1/2} + B^T lambda,   K = 4/dt^2 M + A,
 // condensed to the contact unknowns: u = u0 + K^-1 B^T lambda with u0 = K^-1 rhs, so that
-// B u = B u0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square).
+// B u = B u0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square),
+// evaluated on the trailing block of a factor with the contact dofs ordered last.
 #pragma once
 
-#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
 #include <memory>
 
 #include "contact_solver.hpp"
@@ -81,6 +82,7 @@ public:
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() { return options_; }
+    const ContactSolver& contact_solver() const { return solver_; }
 
 private:
     struct Factor;

@@ -1,0 +1,56 @@
+// Sparse Cholesky factor P K P^T = L L^T (CHOLMOD) with a chosen set of unknowns ordered last.
+//
+// With the contact dofs last, a substep needs one forward solve, a small dense correction of
+// the trailing entries, and one backward solve: the contact multipliers only enter the
+// right-hand side at trailing positions, so L^-1 of them stays in the trailing block L22.
+// Forward and backward solves are exposed separately for that, and allocate nothing after
+// the first call (CHOLMOD's solve2 with kept workspaces).
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+#include <vector>
+
+#include "assembly.hpp"
+
+namespace contactbody {
+
+class TrailingCholesky {
+public:
+    // Factors the symmetric positive definite K (only its lower triangle is read) with the
+    // unknowns in `trailing` ordered last (fill-reducing order elsewhere, and among them).
+    // Throws std::runtime_error naming the cause if K is not positive definite.
+    TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing);
+    ~TrailingCholesky();
+    TrailingCholesky(const TrailingCholesky&) = delete;
+    TrailingCholesky& operator=(const TrailingCholesky&) = delete;
+
+    Eigen::Index size() const { return n_; }
+    Eigen::Index trailing_size() const { return m_; }
+    // Position in factor order (n - m .. n-1 for trailing unknowns) of unknown `index`.
+    int position(int index) const { return inverse_perm_[static_cast<size_t>(index)]; }
+    // The trailing diagonal block of L (dense, lower triangular, m x m).
+    const Eigen::MatrixXd& trailing_block() const { return trailing_block_; }
+    // Nonzeros of L (memory of the factor, and what a solve costs).
+    double factor_nonzeros() const;
+
+    // y = L^-1 P b; the returned view is valid until the next forward() and may be
+    // modified in place before backward().
+    Eigen::Map<Eigen::VectorXd> forward(const Eigen::VectorXd& b);
+    // x = P^T L^-T y, with y the (possibly modified) result of the last forward().
+    void backward(Eigen::VectorXd& x);
+    // x = K^-1 b: one forward and one backward solve (the floor of a substep).
+    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+        forward(b);
+        backward(x);
+    }
+
+private:
+    struct Cholmod;
+    std::unique_ptr<Cholmod> c_;
+    Eigen::Index n_ = 0, m_ = 0;
+    std::vector<int> inverse_perm_;
+    Eigen::MatrixXd trailing_block_;
+};
+
+}  // namespace contactbody

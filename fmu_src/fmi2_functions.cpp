@@ -225,15 +225,26 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                              });
 }
 
-// This FMU has no Boolean or String variables: any value reference is refused.
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) {
+    return for_each_variable(c, "fmi2GetString", readable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, fmi2String& x) {
+                                 x = i->model.get_string(v);
+                             });
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[]) {
+    return for_each_variable(c, "fmi2SetString", settable, vr, nvr, value,
+                             [](Instance* i, const Variable& v, const fmi2String& x) {
+                                 i->model.set_string(v, x, initialized(i));
+                             });
+}
+
+// This FMU has no Boolean variables: any value reference is refused.
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Boolean value[]) {
     return for_each_variable(c, "fmi2GetBoolean", readable, vr, nvr, value, refuse("Boolean"));
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         fmi2String value[]) {
-    return for_each_variable(c, "fmi2GetString", readable, vr, nvr, value, refuse("String"));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -241,10 +252,6 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
     return for_each_variable(c, "fmi2SetBoolean", settable, vr, nvr, value, refuse("Boolean"));
 }
 
-fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         const fmi2String value[]) {
-    return for_each_variable(c, "fmi2SetString", settable, vr, nvr, value, refuse("String"));
-}
 
 // ---- stepping and status ----
 

@@ -45,6 +45,15 @@ public:
         const char* p = reinterpret_cast<const char*>(&x);
         bytes.insert(bytes.end(), p, p + sizeof(T));
     }
+    void string(const std::string& s) {
+        value<uint64_t>(s.size());
+        bytes.insert(bytes.end(), s.begin(), s.end());
+    }
+    void doubles(const std::vector<double>& v) {
+        value<uint64_t>(v.size());
+        const char* p = reinterpret_cast<const char*>(v.data());
+        bytes.insert(bytes.end(), p, p + sizeof(double) * v.size());
+    }
     void vector(const Eigen::VectorXd& v) {
         value<uint64_t>(static_cast<uint64_t>(v.size()));
         const char* p = reinterpret_cast<const char*>(v.data());
@@ -76,11 +85,29 @@ public:
         if (n != static_cast<uint64_t>(expected) && n != static_cast<uint64_t>(alternative))
             fail(std::string(what) + " has " + std::to_string(n) + " entries, the mesh needs " +
                  std::to_string(expected));
-        need(n * sizeof(double), what);
+        need_doubles(n, what);
         Eigen::VectorXd v(static_cast<Eigen::Index>(n));
         std::memcpy(v.data(), data_ + offset_, n * sizeof(double));
         offset_ += n * sizeof(double);
         if (!v.allFinite()) fail(std::string(what) + " has non-finite entries");
+        return v;
+    }
+    std::string string(const char* what, size_t max_size) {
+        const uint64_t n = value<uint64_t>(what);
+        if (n > max_size) fail(std::string(what) + " is longer than " + std::to_string(max_size));
+        need(n, what);
+        std::string s(data_ + offset_, n);
+        offset_ += n;
+        return s;
+    }
+    std::vector<double> finite_doubles(const char* what) {
+        const uint64_t n = value<uint64_t>(what);
+        need_doubles(n, what);  // bounds n before anything is allocated
+        std::vector<double> v(n);
+        if (n) std::memcpy(v.data(), data_ + offset_, n * sizeof(double));
+        offset_ += n * sizeof(double);
+        for (double x : v)
+            if (!std::isfinite(x)) fail(std::string(what) + " has non-finite entries");
         return v;
     }
     bool at_end() const { return offset_ == size_; }
@@ -92,6 +119,10 @@ public:
 private:
     void need(uint64_t n, const char* what) const {
         if (n > size_ - offset_) fail(std::string("truncated while reading ") + what);
+    }
+    // n doubles, checked without computing n * 8 (which can wrap around).
+    void need_doubles(uint64_t n, const char* what) const {
+        if (n > (size_ - offset_) / sizeof(double)) fail(std::string("truncated while reading ") + what);
     }
     const char* data_;
     size_t size_, offset_ = 0;
@@ -107,11 +138,14 @@ std::vector<char> serialize(const FmuState& s) {
     w.value<uint32_t>(static_cast<uint32_t>(variables().size()));
     for (const Variable& v : variables()) {
         if (v.real) w.value(v.real(values));
-        else w.value<int32_t>(v.integer(values));
+        else if (v.integer) w.value<int32_t>(v.integer(values));
+        else w.string(v.string(values));
     }
     w.value(s.model.start_time);
     w.value(s.model.input_rates[0]);
     w.value(s.model.input_rates[1]);
+    w.doubles(s.model.field_output_times);
+    w.value<uint64_t>(s.model.next_field_output);
     w.value<uint8_t>(s.model.has_simulation);
     if (s.model.has_simulation) {
         const SimulationSnapshot& sim = s.model.simulation;
@@ -166,6 +200,17 @@ FmuState deserialize(const char* bytes, size_t size) {
         r.fail("variable count differs from this FMU's");
     Values& values = s.model.values;
     for (const Variable& v : variables()) {
+        if (v.string) {
+            v.string(values) = r.string(v.name, max_string_length);
+            try {
+                check_string(v, v.string(values).c_str());
+                if (v.string(values).size() != std::strlen(v.string(values).c_str()))
+                    throw std::invalid_argument(std::string(v.name) + " contains a NUL byte");
+            } catch (const std::invalid_argument& e) {
+                r.fail(e.what());
+            }
+            continue;
+        }
         if (v.real) {
             v.real(values) = r.value<double>(v.name);
         } else {
@@ -181,6 +226,10 @@ FmuState deserialize(const char* bytes, size_t size) {
     s.model.start_time = r.finite("start time");
     s.model.input_rates[0] = r.finite("foundation_velocity derivative");
     s.model.input_rates[1] = r.finite("top_displacement derivative");
+    s.model.field_output_times = r.finite_doubles("field output times");
+    s.model.next_field_output = r.value<uint64_t>("next field output");
+    if (s.model.next_field_output < s.model.field_output_times.size())
+        r.fail("next field output index is below the number of files written");
     const uint8_t has_simulation = r.value<uint8_t>("simulation flag");
     if (has_simulation > 1) r.fail("invalid simulation flag");
     s.model.has_simulation = has_simulation;

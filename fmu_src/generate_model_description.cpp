@@ -112,13 +112,15 @@ int main(int argc, char** argv) {
             case Type::Real: x << "Real"; break;
             case Type::Integer: x << "Integer"; break;
             case Type::Enumeration: x << "Enumeration declaredType=\"MassMatrix\""; break;
+            case Type::String: x << "String"; break;
         }
         if (*v.unit) x << " unit=\"" << v.unit << "\"";
-        if (v.type != Type::Enumeration) {
+        if (v.type == Type::Real || v.type == Type::Integer) {
             if (!std::isnan(v.min)) x << " min=\"" << number(v.min) << "\"";
             if (!std::isnan(v.max) && std::isfinite(v.max)) x << " max=\"" << number(v.max) << "\"";
         }
-        if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
+        if (v.type == Type::String) x << " start=\"\"";
+        else if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
         x << "/>\n    </ScalarVariable>\n";
     }
     x << "  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n";

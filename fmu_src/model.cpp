@@ -19,6 +19,7 @@ std::string concat(const Parts&... parts) {
 
 void ContactBodyModel::reset() {
     values_ = start_values();
+    fields_.reset();
     sim_.reset();
     rebuild_ = true;
     start_time_ = 0;
@@ -63,6 +64,25 @@ void ContactBodyModel::set_integer(const Variable& v, int value, bool initialize
     if (!initialized) rebuild_ = true;
 }
 
+void ContactBodyModel::set_string(const Variable& v, const char* value, bool initialized) {
+    if (!v.string) throw ModelError(concat("variable ", v.name, " is not of type String"));
+    if (initialized && !v.settable_after_initialization())
+        throw ModelError(concat("parameter ", v.name,
+                                " is fixed and cannot be set after initialization"));
+    try {
+        check_string(v, value);
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(e.what());
+    }
+    v.string(values_) = value;
+    rebuild_ = true;
+}
+
+const char* ContactBodyModel::get_string(const Variable& v) {
+    if (!v.string) throw ModelError(concat("variable ", v.name, " is not of type String"));
+    return v.string(values_).c_str();
+}
+
 double ContactBodyModel::get_real(const Variable& v) {
     if (!v.real) throw ModelError(concat("variable ", v.name, " is not of type Real"));
     if (v.causality == Causality::output) refresh_outputs();
@@ -88,6 +108,7 @@ void ContactBodyModel::set_input_derivative(const Variable& v, int order, double
 }
 
 void ContactBodyModel::build_simulation(const Values& values) {
+    fields_.reset();  // it refers to the old simulation's mesh
     try {
         sim_ = std::make_unique<Simulation>(values.scene(), values.top_displacement, start_time_);
     } catch (const std::invalid_argument& e) {
@@ -96,11 +117,40 @@ void ContactBodyModel::build_simulation(const Values& values) {
     }
 }
 
+// Creates the writer for result_directory (an unwritable directory is an error here, at
+// initialization, not in the middle of a run).
+void ContactBodyModel::open_field_output() {
+    fields_.reset();
+    if (values_.result_directory.empty()) return;
+    try {
+        fields_ = std::make_unique<FieldWriter>(sim_->stepper().discretization().mesh,
+                                                values_.result_directory);
+    } catch (const std::exception& e) {
+        throw ModelError(e.what());
+    }
+}
+
+// Writes one file at the first communication point at or after each due output time.
+void ContactBodyModel::write_due_fields() {
+    const double interval = values_.field_output_interval;
+    const double elapsed = sim_->time() - start_time_;
+    if (elapsed < (static_cast<double>(next_field_output_) - 1e-9) * interval) return;
+    try {
+        fields_->write(sim_->state());
+    } catch (const std::exception& e) {
+        throw ModelError(concat("field output failed at t = ", sim_->time(), ": ", e.what()));
+    }
+    next_field_output_ = static_cast<uint64_t>(std::floor(elapsed / interval + 1e-9)) + 1;
+}
+
 void ContactBodyModel::initialize() {
     if (!rebuild_ && sim_) return;
     build_simulation(values_);
+    open_field_output();
     values_.out = Observables{};
     rebuild_ = false;
+    next_field_output_ = 0;
+    if (fields_) write_due_fields();  // the initial state
 }
 
 ModelState ContactBodyModel::save() const {
@@ -110,6 +160,8 @@ ModelState ContactBodyModel::save() const {
     s.input_rates = input_rates_;
     s.has_simulation = sim_ && !rebuild_;
     if (s.has_simulation) s.simulation = sim_->snapshot();
+    if (fields_) s.field_output_times = fields_->times();
+    s.next_field_output = next_field_output_;
     return s;
 }
 
@@ -118,6 +170,13 @@ void ContactBodyModel::load(const ModelState& state) {
     if (sim_ && !rebuild_) {
         for (const Variable& v : variables()) {
             if (v.causality != Causality::parameter || v.variability != Variability::fixed) continue;
+            if (v.string) {
+                if (v.string(values_) != v.string(saved))
+                    throw ModelError(concat("the state was saved with ", v.name, " = '",
+                                            v.string(saved), "', this instance has '",
+                                            v.string(values_), "'"));
+                continue;
+            }
             const double mine = v.real ? v.real(values_) : v.integer(values_);
             const double theirs = v.real ? v.real(saved) : v.integer(saved);
             if (mine != theirs)
@@ -134,12 +193,26 @@ void ContactBodyModel::load(const ModelState& state) {
         }
         sim_->set_friction_coefficient(saved.friction_coefficient);
     } else {
+        fields_.reset();
         sim_.reset();
     }
     values_ = saved;
     start_time_ = state.start_time;
     input_rates_ = state.input_rates;
     rebuild_ = !state.has_simulation;
+    next_field_output_ = state.next_field_output;
+    if (state.has_simulation) {
+        // The collection lists what was written up to the saved time: a rolled-back run
+        // overwrites the later files as it goes.
+        if (!fields_) open_field_output();
+        if (fields_) {
+            try {
+                fields_->set_times(state.field_output_times);
+            } catch (const std::exception& e) {
+                throw ModelError(e.what());
+            }
+        }
+    }
 }
 
 void ContactBodyModel::refresh_outputs() {
@@ -173,6 +246,7 @@ void ContactBodyModel::do_step(double current_time, double h) {
         // Interpolated inputs go on along their line until the master sets them again.
         values_.foundation_velocity += input_rates_[0] * h;
         values_.top_displacement += input_rates_[1] * h;
+        if (fields_) write_due_fields();
     } catch (const ContactSolveError& e) {
         throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
     } catch (const NumericalFailure& e) {

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "errors.hpp"
+#include "field_output.hpp"
 #include "variables.hpp"
 
 namespace contactbody::fmu {
@@ -17,6 +20,10 @@ struct ModelState {
     std::array<double, 2> input_rates{};  // d/dt foundation_velocity, top_displacement
     bool has_simulation = false;
     SimulationSnapshot simulation;
+    // Field output so far: the times of the files written, and the index k of the next
+    // output time start_time + k * field_output_interval.
+    std::vector<double> field_output_times;
+    uint64_t next_field_output = 0;
 };
 
 class ContactBodyModel {
@@ -29,8 +36,10 @@ public:
     // parameters may then change.
     void set_real(const Variable& v, double value, bool initialized);
     void set_integer(const Variable& v, int value, bool initialized);
+    void set_string(const Variable& v, const char* value, bool initialized);
     double get_real(const Variable& v);
     int get_integer(const Variable& v);
+    const char* get_string(const Variable& v);
 
     // First time derivative of an input over the next steps (canInterpolateInputs); setting
     // the input's value again resets it to zero (held input).
@@ -50,10 +59,14 @@ private:
     void check_settable(const Variable& v, double value, bool initialized) const;
     void refresh_outputs();
     void build_simulation(const Values& values);
+    void open_field_output();
+    void write_due_fields();
 
     Values values_;
     std::array<double, 2> input_rates_{};
     std::unique_ptr<Simulation> sim_;
+    std::unique_ptr<FieldWriter> fields_;  // present while result_directory is set
+    uint64_t next_field_output_ = 0;
     bool rebuild_ = true;
     double start_time_ = 0;
 };

@@ -1,6 +1,7 @@
 #include "variables.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +17,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 // Argument order of Variable after the description: start, min, max, min_exclusive, accessors.
 #define ACCESS_REAL(field) [](Values& v) -> double& { return v.field; }, nullptr
 #define ACCESS_INT(field) nullptr, [](Values& v) -> int& { return v.field; }
+#define ACCESS_STRING(field) nullptr, nullptr, [](Values& v) -> std::string& { return v.field; }
 
 using T = Type;
 using C = Causality;
@@ -35,6 +37,8 @@ const std::vector<Variable> table = {
     {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 0, inf, true, ACCESS_REAL(internal_step)},
     {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve", 1e-10, 0, 1, true, ACCESS_REAL(contact_tolerance)},
     {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},
+    {"result_directory", 13, T::String, C::parameter, V::fixed, "", "Directory for field output (.vtu files and a .pvd collection); empty = none", 0, none, none, false, ACCESS_STRING(result_directory)},
+    {"field_output_interval", 14, T::Real, C::parameter, V::fixed, "s", "Time between field output files (written at the first communication point at or after each multiple)", 1e-4, 0, inf, true, ACCESS_REAL(field_output_interval)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -76,6 +80,18 @@ SceneParameters Values::scene() const {
 
 const std::vector<Variable>& variables() { return table; }
 
+void check_string(const Variable& v, const char* value) {
+    if (!value) throw std::invalid_argument(std::string("variable ") + v.name + " cannot be NULL");
+    const size_t n = std::strlen(value);
+    if (n > max_string_length)
+        throw std::invalid_argument(std::string("variable ") + v.name + " is longer than " +
+                                    std::to_string(max_string_length) + " bytes");
+    for (size_t i = 0; i < n; ++i)
+        if (static_cast<unsigned char>(value[i]) < 0x20)
+            throw std::invalid_argument(std::string("variable ") + v.name +
+                                        " contains a control character at byte " + std::to_string(i));
+}
+
 void check_range(const Variable& v, double value) {
     std::ostringstream msg;
     msg.precision(17);
@@ -111,7 +127,7 @@ Values start_values() {
     for (const Variable& v : table) {
         if (v.causality == Causality::output) continue;
         if (v.real) v.real(values) = v.start;
-        else v.integer(values) = static_cast<int>(v.start);
+        else if (v.integer) v.integer(values) = static_cast<int>(v.start);
     }
     return values;
 }

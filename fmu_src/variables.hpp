@@ -17,13 +17,15 @@ struct Values {
     double width, height, density, lambda, mu, friction_coefficient;
     int nx, ny, mass_matrix;
     double internal_step, contact_tolerance, initial_gap;
+    std::string result_directory;  // field output; empty = none
+    double field_output_interval;
     double foundation_velocity, top_displacement;
     Observables out;
 
     SceneParameters scene() const;
 };
 
-enum class Type { Real, Integer, Enumeration };
+enum class Type { Real, Integer, Enumeration, String };
 enum class Causality { parameter, input, output };
 enum class Variability { fixed, tunable, continuous, discrete };
 
@@ -35,11 +37,12 @@ struct Variable {
     Variability variability;
     const char* unit;  // "" for none
     const char* description;
-    double start;      // for parameters and inputs
+    double start;      // for parameters and inputs (String variables start empty)
     double min, max;   // inclusive limits written to the XML; NaN for none
     bool min_exclusive;  // the value must be > min (not expressible in the XML)
-    double& (*real)(Values&);  // exactly one of real / integer is set, by type
+    double& (*real)(Values&);  // exactly one of real / integer / string is set, by type
     int& (*integer)(Values&);
+    std::string& (*string)(Values&) = nullptr;
 
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
@@ -49,6 +52,11 @@ struct Variable {
 const std::vector<Variable>& variables();
 // Throws std::invalid_argument naming the variable if value is not finite or out of range.
 void check_range(const Variable& v, double value);
+// Longest accepted String value (bytes).
+constexpr size_t max_string_length = 4096;
+// Throws std::invalid_argument naming the variable if value is NULL, too long or not printable.
+void check_string(const Variable& v, const char* value);
+
 // True for the two inputs; index 0 = foundation_velocity, 1 = top_displacement.
 int input_index(const Variable& v);
 

@@ -123,12 +123,14 @@ def payload_offsets(md):
     pos = 16
     for v in md.modelVariables:
         off[v.name] = pos
-        pos += 8 if v.type == "Real" else 4
+        pos += {"Real": 8, "String": 8}.get(v.type, 4)  # an empty String: its u64 length
     off["start_time"] = pos
-    off["simulation_flag"] = pos + 24
-    off["time"] = pos + 25
-    off["u_length"] = pos + 33
-    off["u"] = pos + 41
+    off["field_output_count"] = pos + 24  # no field output: no times follow
+    off["next_field_output"] = pos + 32
+    off["simulation_flag"] = pos + 40
+    off["time"] = pos + 41
+    off["u_length"] = pos + 49
+    off["u"] = pos + 57
     return off
 
 
@@ -149,7 +151,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 2": blob[:8] + struct.pack("<I", 2) + blob[12:],
+        "version 3": blob[:8] + struct.pack("<I", 3) + blob[12:],
+        "version 1": blob[:8] + struct.pack("<I", 1) + blob[12:],
         "version 0": blob[:8] + struct.pack("<I", 0) + blob[12:],
         "size field too large": blob[:12] + struct.pack("<Q", len(blob)) + blob[20:],
         "size field too small": blob[:12] + struct.pack("<Q", 10) + blob[20:],
@@ -176,6 +179,10 @@ def corruptions(blob, md):
         "NaN displacement": patch(blob, o["u"] + 80, "<d", float("nan")),
         "velocity length": patch(blob, v_length, "<Q", 3),
         "simulation flag 7": patch(blob, o["simulation_flag"], "<B", 7),
+        "huge string length": patch(blob, o["result_directory"], "<Q", 2**62),
+        "string longer than allowed": patch(blob, o["result_directory"], "<Q", 5000),
+        "huge field output count": patch(blob, o["field_output_count"], "<Q", 2**61),
+        "field output count beyond the bytes": patch(blob, o["field_output_count"], "<Q", 3),
     }
 
 

@@ -1,0 +1,146 @@
+"""Field output (issue 3): .vtu snapshots and a .pvd collection, readable by meshio, carrying
+the same state as a run without field output; an unwritable directory fails initialization."""
+import pathlib
+import sys
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+
+from conftest import Instance
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
+import fields  # noqa: E402
+
+SCENE = dict(nx=8, ny=8, mass_matrix=0, internal_step=1e-5)  # consistent M: energies in numpy
+
+
+def run(fmu_path, **extra):
+    return simulate_fmu(fmu_path, stop_time=2e-3, output_interval=1e-4,
+                        start_values={**SCENE, **extra})
+
+
+def test_vtu_files_load_with_meshio_and_carry_the_state_of_a_plain_run(fmu_path, tmp_path):
+    plain = run(fmu_path)
+    with_fields = run(fmu_path, result_directory=str(tmp_path), field_output_interval=2e-4)
+    # Writing fields changes nothing in the outputs.
+    for name in ("energy", "friction_work", "normal_force", "top_reaction_y"):
+        np.testing.assert_array_equal(plain[name], with_fields[name])
+
+    snapshots = fields.read_collection(tmp_path / "contactbody.pvd")
+    times = [t for t, _ in snapshots]
+    np.testing.assert_allclose(times, np.arange(11) * 2e-4, atol=1e-12)
+    for t, path in snapshots:
+        points, triangles, data = fields.read_field(path)
+        assert points.shape == (81, 2) and triangles.shape == (128, 3)
+        u, v = data["displacement"], data["velocity"]
+        # The energies of the plain run at the same time, recomputed from the fields alone.
+        k = int(np.argmin(np.abs(plain["time"] - t)))
+        kinetic = fields.kinetic_energy(points, triangles, v, 1000)
+        strain = fields.strain_energy(points, triangles, u, 300e6, 150e6)
+        assert kinetic == pytest.approx(plain["kinetic_energy"][k], rel=1e-9, abs=1e-15)
+        assert strain == pytest.approx(plain["strain_energy"][k], rel=1e-9)
+        # Contact forces live on the bottom edge only, pressing the body up.
+        force = data["contact_force"]
+        bottom = points[:, 1] == 0
+        assert np.all(force[~bottom] == 0) and np.all(force[bottom, 1] >= 0)
+
+
+def test_initial_energy_from_the_first_snapshot(fmu_path, tmp_path):
+    run(fmu_path, result_directory=str(tmp_path))
+    (t0, first), *_ = fields.read_collection(tmp_path / "contactbody.pvd")
+    points, triangles, data = fields.read_field(first)
+    assert t0 == 0
+    assert fields.strain_energy(points, triangles, data["displacement"], 300e6, 150e6) == \
+        pytest.approx(0.1875, rel=1e-12)
+
+
+def test_unwritable_directory_is_an_error_at_initialization(model_description, unzipped, vr,
+                                                            tmp_path):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    inst = Instance(model_description, unzipped)
+    try:
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.setString([vr["result_directory"]], [str(blocker / "out")])
+        with pytest.raises(Exception):
+            inst.exitInitializationMode()
+        assert "result_directory" in inst.text() and "fmi2ExitInitializationMode" in inst.text()
+    finally:
+        inst.close()
+
+
+def test_string_parameter_checks(model_description, unzipped, vr, tmp_path):
+    inst = Instance(model_description, unzipped)
+    try:
+        inst.setString([vr["result_directory"]], [str(tmp_path)])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        assert inst.getString([vr["result_directory"]]) == [str(tmp_path).encode()]
+        with pytest.raises(Exception):
+            inst.setString([vr["result_directory"]], ["x" * 5000])
+        with pytest.raises(Exception):
+            inst.setString([vr["result_directory"]], ["bad\nname"])
+        with pytest.raises(Exception):
+            inst.setString([vr["nx"]], ["20"])  # not a String variable
+        assert inst.getString([vr["result_directory"]]) == [str(tmp_path).encode()]
+        inst.exitInitializationMode()
+        with pytest.raises(Exception):  # fixed after initialization
+            inst.setString([vr["result_directory"]], [str(tmp_path / "other")])
+        assert "fixed" in inst.text()
+    finally:
+        inst.close()
+
+
+def test_rollback_rewrites_the_collection(model_description, unzipped, vr, tmp_path):
+    inst = Instance(model_description, unzipped)
+    try:
+        for name, value in SCENE.items():
+            inst.setInteger([vr[name]], [value]) if isinstance(value, int) else \
+                inst.setReal([vr[name]], [value])
+        inst.setString([vr["result_directory"]], [str(tmp_path)])
+        inst.setReal([vr["field_output_interval"]], [1e-4])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.exitInitializationMode()
+        t = 0.0
+        for _ in range(3):
+            inst.doStep(t, 1e-4)
+            t += 1e-4
+        saved = inst.getFMUstate()
+        energy_saved = inst.getReal([vr["energy"]])
+        for _ in range(4):
+            inst.doStep(t, 1e-4)
+            t += 1e-4
+        assert len(fields.read_collection(tmp_path / "contactbody.pvd")) == 8
+        inst.setFMUstate(saved)
+        assert len(fields.read_collection(tmp_path / "contactbody.pvd")) == 4
+        assert inst.getReal([vr["energy"]]) == energy_saved
+        inst.doStep(3e-4, 1e-4)
+        listed = fields.read_collection(tmp_path / "contactbody.pvd")
+        assert [round(t / 1e-4) for t, _ in listed] == [0, 1, 2, 3, 4]
+        inst.freeFMUstate(saved)
+    finally:
+        inst.close()
+
+
+def test_nested_interpolation_is_exact_for_p1_fields():
+    # A coarse P1 field, evaluated on the 2x refined mesh, has the same L2 norm there.
+    def grid(n):
+        i, j = np.meshgrid(np.arange(n + 1), np.arange(n + 1))
+        pts = np.stack([i.ravel(), j.ravel()], axis=1) * (0.1 / n)
+        tris = []
+        for jj in range(n):
+            for ii in range(n):
+                a, b, c, d = (jj * (n + 1) + ii, jj * (n + 1) + ii + 1,
+                              (jj + 1) * (n + 1) + ii, (jj + 1) * (n + 1) + ii + 1)
+                tris += [[a, b, d], [a, d, c]] if (ii + jj) % 2 == 0 else [[a, b, c], [b, d, c]]
+        return pts, np.array(tris)
+    rng = np.random.default_rng(1)
+    cp, ct = grid(4)
+    fp, ft = grid(8)
+    values = rng.normal(size=(len(cp), 2))
+    fine = fields.interpolate_nested(cp, values, 4, 4, 0.1, 0.1, fp)
+    assert fields.l2_squared(fp, ft, fine) == pytest.approx(fields.l2_squared(cp, ct, values), rel=1e-12)
+    assert fields.h1_squared(fp, ft, fine) == pytest.approx(fields.h1_squared(cp, ct, values), rel=1e-12)

@@ -20,7 +20,8 @@ def read_collection(pvd):
 def read_field(vtu):
     """(points[:, :2], triangles, point_data) of one snapshot."""
     mesh = meshio.read(vtu)
-    return mesh.points[:, :2], mesh.cells_dict["triangle"], mesh.point_data
+    data = {k: v[:, 0] if v.ndim == 2 and v.shape[1] == 1 else v for k, v in mesh.point_data.items()}
+    return mesh.points[:, :2], mesh.cells_dict["triangle"], data
 
 
 def _geometry(points, triangles):

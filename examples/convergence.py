@@ -1,0 +1,138 @@
+"""Paper Fig. 9 / Table 2: the convergence test, from the FMU's field output.
+
+Experiments (h, dt) = (2 cm, 1.6e-5), (1 cm, 8e-6), (0.5 cm, 4e-6), (0.25 cm, 2e-6) against a
+reference (h = 0.0625 cm, dt = 5e-7, 51,520 unknowns), redistributed_normal, on [0, 5.12 ms]
+(the first multiple of the 0.16 ms output interval past 5 ms, so that every dt divides it).
+The error at each output time is u_ref - u_h on the reference mesh (the meshes nest, so u_h is
+exactly a fine P1 field); reported: the maximum over time of its L2(Omega) norm and H1(Omega)
+seminorm, and the observed orders log2(e(2h) / e(h)).
+
+Writes examples/output/convergence.md, convergence.json, figure_9.png.
+
+    .venv/bin/python examples/convergence.py [--friction 1.2 0 0.2] [--keep-fields]
+"""
+import argparse
+import json
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import fields  # noqa: E402
+from scene import OUT, REFERENCE, TABLE2, WIDTH, cells, simulate  # noqa: E402
+
+STOP, INTERVAL = 5.12e-3, 1.6e-4
+
+
+def run_one(h, dt, friction, directory):
+    n = cells(h)
+    _, wall = simulate(STOP, INTERVAL, nx=n, ny=n, internal_step=dt, mass_matrix=1,
+                       friction_coefficient=friction, result_directory=str(directory),
+                       field_output_interval=INTERVAL, outputs=["energy"])
+    return wall
+
+
+def errors(reference_dir, run_dir, n):
+    ref = fields.read_collection(reference_dir / "contactbody.pvd")
+    run = fields.read_collection(run_dir / "contactbody.pvd")
+    assert len(ref) == len(run), (len(ref), len(run))
+    l2, h1 = [], []
+    for (t_ref, f_ref), (t, f) in zip(ref, run):
+        assert abs(t_ref - t) < 1e-12, (t_ref, t)
+        points, triangles, data = fields.read_field(f_ref)
+        coarse_points, _, coarse = fields.read_field(f)
+        u_h = fields.interpolate_nested(coarse_points, coarse["displacement"][:, :2], n, n,
+                                        WIDTH, WIDTH, points)
+        e = data["displacement"][:, :2] - u_h
+        l2.append(np.sqrt(fields.l2_squared(points, triangles, e)))
+        h1.append(np.sqrt(fields.h1_squared(points, triangles, e)))
+    return max(l2), max(h1)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--friction", type=float, nargs="+", default=[1.2, 0.0, 0.2])
+    parser.add_argument("--keep-fields", action="store_true")
+    parser.add_argument("--single", nargs=3, type=float, help=argparse.SUPPRESS)
+    parser.add_argument("--directory", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.single:  # one run in its own process, so that its peak memory can be measured
+        print(json.dumps({"wall": run_one(*args.single, args.directory)}))
+        return
+
+    base = OUT / "convergence_fields"
+    report = {}
+    for friction in args.friction:
+        ref_dir = base / f"F{friction:g}" / "reference"
+        shutil.rmtree(ref_dir, ignore_errors=True)
+        start = time.perf_counter()
+        out = subprocess.run([sys.executable, __file__, "--single", str(REFERENCE[0]),
+                              str(REFERENCE[1]), str(friction), "--directory", str(ref_dir)],
+                             capture_output=True, text=True, check=True)
+        wall_process = time.perf_counter() - start
+        peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
+        rows = []
+        for h, dt in TABLE2:
+            run_dir = base / f"F{friction:g}" / f"h{h * 100:g}cm"
+            shutil.rmtree(run_dir, ignore_errors=True)
+            wall = run_one(h, dt, friction, run_dir)
+            l2, h1 = errors(ref_dir, run_dir, cells(h))
+            rows.append({"h": h, "dt": dt, "l2": l2, "h1": h1, "wall": wall})
+            print(f"F = {friction:g}  h = {h * 100:g} cm  dt = {dt:g}: max L2 = {l2:.3e} m^2, "
+                  f"max H1 = {h1:.3e} m, run {wall:.2f} s", flush=True)
+        report[f"{friction:g}"] = {
+            "reference": {"wall_simulate": json.loads(out.stdout)["wall"],
+                          "wall_process": wall_process, "peak_rss_mb_children": peak_mb},
+            "rows": rows}
+        print(f"F = {friction:g}: reference run {json.loads(out.stdout)['wall']:.1f} s "
+              f"(process {wall_process:.1f} s), peak RSS of the runs so far {peak_mb:.0f} MB",
+              flush=True)
+        if not args.keep_fields:
+            shutil.rmtree(base / f"F{friction:g}", ignore_errors=True)
+
+    lines = ["# Convergence test (Table 2 / Fig. 9), redistributed_normal, errors against the "
+             "reference h = 0.0625 cm, dt = 5e-7, max over t in [0, 5.12 ms]", ""]
+    for friction, r in report.items():
+        ref = r["reference"]
+        lines += [f"## F = {friction}", "",
+                  f"Reference run: {ref['wall_simulate']:.1f} s in fmpy.simulate_fmu "
+                  f"({ref['wall_process']:.1f} s for its process), peak RSS "
+                  f"{ref['peak_rss_mb_children']:.0f} MB.", "",
+                  "| h [cm] | dt [s] | max L2 error [m^2] | order | max H1 error [m] | order | run [s] |",
+                  "|---|---|---|---|---|---|---|"]
+        prev = None
+        for row in r["rows"]:
+            o2 = f"{np.log2(prev['l2'] / row['l2']):.2f}" if prev else ""
+            o1 = f"{np.log2(prev['h1'] / row['h1']):.2f}" if prev else ""
+            lines.append(f"| {row['h'] * 100:g} | {row['dt']:g} | {row['l2']:.3e} | {o2} "
+                         f"| {row['h1']:.3e} | {o1} | {row['wall']:.2f} |")
+            prev = row
+        lines.append("")
+    (OUT / "convergence.md").write_text("\n".join(lines))
+    (OUT / "convergence.json").write_text(json.dumps(report, indent=1))
+
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for friction, r in report.items():
+        h = [row["h"] * 100 for row in r["rows"]]
+        axes[0].loglog(h, [row["l2"] for row in r["rows"]], "o-", label=f"F = {friction}")
+        axes[1].loglog(h, [row["h1"] for row in r["rows"]], "o-", label=f"F = {friction}")
+    for ax, name in zip(axes, ["max_t L2 error [m²]", "max_t H1 error [m]"]):
+        ax.set_xlabel("h [cm] (dt = 8e-4 s/m · h)")
+        ax.set_ylabel(name)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    fig.suptitle("Fig. 9: convergence against the reference (h = 0.0625 cm, dt = 5e-7 s)")
+    fig.tight_layout()
+    fig.savefig(OUT / "figure_9.png", dpi=110)
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

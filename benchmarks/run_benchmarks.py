@@ -11,6 +11,7 @@ import argparse
 import json
 import pathlib
 import subprocess
+import tempfile
 import time
 
 import matplotlib
@@ -62,6 +63,20 @@ def main():
                      start_values={"mass_matrix": variant})
         fmpy_times.append(time.perf_counter() - t)
 
+    # Field output cost: the default scene with a .vtu every 1e-4 s (201 files) against the same
+    # run without; interleaved, best of three each.
+    plain, with_fields = [], []
+    for _ in range(3):
+        for times, extra in ((plain, {}), (with_fields, {"field_output_interval": 1e-4})):
+            with tempfile.TemporaryDirectory() as directory:
+                if extra:
+                    extra = {**extra, "result_directory": directory}
+                t = time.perf_counter()
+                simulate_fmu(str(ROOT / "build" / "ContactBody.fmu"), stop_time=0.02,
+                             output_interval=1e-4, start_values=extra)
+                times.append(time.perf_counter() - t)
+    field_cost = (min(plain), min(with_fields))
+
     lines = ["# Substep cost against the floor (paper scene, F = 1.2, redistributed_normal)", "",
              "The floor is one forward + backward solve with the stepper's own factor (simplicial "
              "L L^T, contact dofs ordered last). For comparison, the last column but one is one solve "
@@ -97,10 +112,15 @@ def main():
     lines += ["", "## Default scene through fmpy.simulate_fmu (nx = 20, dt = 4e-6, 0.02 s, "
               "5,000 substeps, output interval 1e-4 s)", "",
               "| mass_matrix | 0 | 1 | 2 | 3 |", "|---|---|---|---|---|",
-              "| call time [s] | " + " | ".join(f"{t:.3f}" for t in fmpy_times) + " |"]
+              "| call time [s] | " + " | ".join(f"{t:.3f}" for t in fmpy_times) + " |",
+              "", "## Field output cost (default scene, one .vtu every 1e-4 s: 201 files, best of 3)",
+              "", "| without [s] | with [s] | ratio | per file [ms] |", "|---|---|---|---|",
+              f"| {field_cost[0]:.3f} | {field_cost[1]:.3f} | {field_cost[1] / field_cost[0]:.2f} "
+              f"| {(field_cost[1] - field_cost[0]) / 201 * 1e3:.2f} |"]
     (OUT / "substep.md").write_text("\n".join(lines) + "\n")
     (OUT / "substep.json").write_text(json.dumps({"rows": rows, "savings": savings,
                                                   "reference_run": reference,
+                                                  "field_output_s": field_cost,
                                                   "fmpy_default_scene_s": fmpy_times}, indent=1))
 
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))

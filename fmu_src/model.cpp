@@ -15,6 +15,16 @@ std::string concat(const Parts&... parts) {
     return s.str();
 }
 
+// Runs f, reporting std::invalid_argument (a bad value) as ModelError.
+template <class F>
+void as_model_error(F&& f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(e.what());
+    }
+}
+
 }  // namespace
 
 void ContactBodyModel::reset() {
@@ -31,17 +41,17 @@ void ContactBodyModel::set_start_time(double t) {
     rebuild_ = true;
 }
 
-void ContactBodyModel::check_settable(const Variable& v, double value, bool initialized) const {
+void ContactBodyModel::check_writable(const Variable& v, bool initialized) const {
     if (v.causality == Causality::output)
         throw ModelError(concat("variable ", v.name, " is an output and cannot be set"));
     if (initialized && !v.settable_after_initialization())
         throw ModelError(concat("parameter ", v.name,
                                 " is fixed and cannot be set after initialization"));
-    try {
-        check_range(v, value);
-    } catch (const std::invalid_argument& e) {
-        throw ModelError(e.what());
-    }
+}
+
+void ContactBodyModel::check_settable(const Variable& v, double value, bool initialized) const {
+    check_writable(v, initialized);
+    as_model_error([&] { check_range(v, value); });
 }
 
 void ContactBodyModel::set_real(const Variable& v, double value, bool initialized) {
@@ -66,14 +76,8 @@ void ContactBodyModel::set_integer(const Variable& v, int value, bool initialize
 
 void ContactBodyModel::set_string(const Variable& v, const char* value, bool initialized) {
     if (!v.string) throw ModelError(concat("variable ", v.name, " is not of type String"));
-    if (initialized && !v.settable_after_initialization())
-        throw ModelError(concat("parameter ", v.name,
-                                " is fixed and cannot be set after initialization"));
-    try {
-        check_string(v, value);
-    } catch (const std::invalid_argument& e) {
-        throw ModelError(e.what());
-    }
+    check_writable(v, initialized);
+    as_model_error([&] { check_string(v, value); });
     v.string(values_) = value;
     rebuild_ = true;
 }

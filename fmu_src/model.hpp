@@ -56,6 +56,7 @@ public:
     Simulation* simulation() { return sim_.get(); }
 
 private:
+    void check_writable(const Variable& v, bool initialized) const;
     void check_settable(const Variable& v, double value, bool initialized) const;
     void refresh_outputs();
     void build_simulation(const Values& values);

@@ -48,7 +48,6 @@ Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discret
     u_half_.resize(disc_.mesh.num_dofs());
     rhs_.resize(nf);
     u_half_free_.resize(nf);
-    scratch_free_.resize(nf);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
     problem_.a.resize(2 * nc);
     problem_.gap_limit.resize(nc);

@@ -101,7 +101,7 @@ private:
     SubstepTimings timings_;
     ContactSnapshot snapshot_;
     // Workspace, sized once.
-    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, scratch_free_;
+    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_;
 };
 
 }  // namespace contactbody

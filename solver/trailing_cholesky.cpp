@@ -83,7 +83,8 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
     std::vector<int> member(n, 0);
     for (int t : trailing) member[static_cast<size_t>(t)] = 1;
     std::vector<int> camd(n);
-    if (!cholmod_camd(&a, nullptr, 0, member.data(), camd.data(), &c)) c_->check("CAMD ordering");
+    if (!cholmod_camd(&a, nullptr, 0, member.data(), camd.data(), &c))
+        throw std::runtime_error("CHOLMOD CAMD ordering failed (status " + std::to_string(c.status) + ")");
     // 2) METIS nested dissection with the trailing set moved to the end (stable order).
     std::vector<int> metis(n);
     bool have_metis = n > 64 && cholmod_metis(&a, nullptr, 0, 1, metis.data(), &c);

@@ -4,95 +4,146 @@
 #include <random>
 
 #include "contact_solver.hpp"
+#include "elementary_example.hpp"
 
 using namespace contactbody;
 
 namespace {
 
-// Section 6: one P1 triangle, midpoint step, eq. (23), nu = (1, 0), tau = (0, 1):
-//   a u_nu - b u_tau = f_nu + lambda_nu,  -b u_nu + c u_tau = f_tau + lambda_tau.
-struct Elementary {
-    double a, b, c, friction, u_tau_old;
+// Section 6 with lambda = mu = 1, dt = 1, u_tau_old = 0.1: a, b, c from (m1, m2).
+ElementaryExample elementary(double m1, double m2, double F) {
+    return ElementaryExample::from_material(1, 1, 1, m1, m2, F, 0.1);
+}
 
-    ContactProblem problem(double f_nu, double f_tau) const {
-        Eigen::Matrix2d K;
-        K << a, -b, -b, c;
-        ContactProblem p;
-        p.W = K.inverse();  // B = identity
-        p.a = p.W * Eigen::Vector2d(f_nu, f_tau);
-        p.gap_limit = Eigen::VectorXd::Zero(1);
-        p.slip_origin = Eigen::VectorXd::Constant(1, u_tau_old);
-        p.friction = friction;
-        return p;
-    }
-
-    // Closed forms S1-S4 of the paper, (u_nu, u_tau, lambda_nu, lambda_tau), for F < c/b.
-    // Returns the region index (1-4), or 0 when f is within `margin` of a region boundary.
-    int region(double fn, double ft, double margin) const {
-        const double F = friction, ut = u_tau_old;
-        const double s = c * fn + b * ft;
-        if (s < -margin) return 1;
-        if (s <= margin) return 0;
-        const double lo = (c - b * F) * ut - F * fn, hi = (c + b * F) * ut + F * fn;
-        if (fn > -b * ut + margin && ft > lo + margin && ft < hi - margin) return 2;
-        if (ft > hi + margin) return 3;
-        if (fn > -b * ut + margin && ft < lo - margin) return 4;
-        return 0;
-    }
-
-    Eigen::Vector4d closed_form(int region, double fn, double ft) const {
-        const double F = friction, ut = u_tau_old, s = c * fn + b * ft;
-        switch (region) {
-            case 1: return {s / (a * c - b * b), (a * ft + b * fn) / (a * c - b * b), 0, 0};
-            case 2: return {0, ut, -(fn + b * ut), c * ut - ft};
-            case 3: return {0, (ft - F * fn) / (c + b * F), -s / (c + b * F), -F * s / (c + b * F)};
-            default: return {0, (ft + F * fn) / (c - b * F), -s / (c - b * F), F * s / (c - b * F)};
+// The region (1-4) whose closed form holds at f, or 0 within `margin` of a region boundary.
+int single_region(const ElementaryExample& e, const Eigen::Vector2d& f, double margin) {
+    int region = 0;
+    for (int i = 1; i <= 4; ++i)
+        if (e.in_sigma(i, f, -margin)) {
+            if (region != 0 || !e.in_sigma(i, f, margin)) return 0;
+            region = i;
         }
-    }
-};
+    return region;
+}
 
 }  // namespace
 
 TEST(ElementaryExample, LocalSolveMatchesClosedFormInRegionsS1ToS4) {
-    // lambda = mu = 1, dt = 1; m1 = 0 (normal mass removed), m2 = 0.25 > 0.
-    const double lame = 1, mu = 1, dt = 1, m1 = 0, m2 = 0.25;
-    for (double F : {0.3, 1.2, 2.5}) {  // c/b = 3 here: all F < c/b
-        Elementary e{4 / (dt * dt) * m1 + (lame + 3 * mu) / 2, (lame + mu) / 2,
-                     4 / (dt * dt) * m2 + (lame + 3 * mu) / 2, F, 0.1};
-        ASSERT_LT(F, e.c / e.b);
+    // m1 = 0 (normal mass removed), m2 = 0.25 > 0: c/b = 3.
+    for (double F : {0.3, 1.2, 2.5}) {
+        const ElementaryExample e = elementary(0, 0.25, F);
+        ASSERT_LT(F, e.c() / e.b());
         std::mt19937 rng(42);
         std::uniform_real_distribution<double> f(-3, 3);
         int seen[5] = {0, 0, 0, 0, 0};
         ContactSolver solver;
         for (int trial = 0; trial < 20000; ++trial) {
-            const double fn = f(rng), ft = f(rng);
-            const int r = e.region(fn, ft, 1e-6);
+            const Eigen::Vector2d load(f(rng), f(rng));
+            const int r = single_region(e, load, 1e-6);
             if (r == 0) continue;
             ++seen[r];
-            const ContactProblem p = e.problem(fn, ft);
+            const ContactProblem p = e.problem(load);
             Eigen::VectorXd lambda = Eigen::VectorXd::Zero(2);
             solver.solve(p, ContactSolverOptions{1e-12, 100}, lambda);
             const Eigen::VectorXd u = p.a + p.W * lambda;
             const Eigen::Vector4d got(u[0], u[1], lambda[0], lambda[1]);
-            const Eigen::Vector4d want = e.closed_form(r, fn, ft);
+            const Eigen::Vector4d want = e.closed_form(r, load);
             EXPECT_LE((got - want).cwiseAbs().maxCoeff(), 1e-10 * (1 + want.cwiseAbs().maxCoeff()))
-                << "F = " << F << ", region S" << r << ", f = (" << fn << ", " << ft << ")";
+                << "F = " << F << ", region S" << r << ", f = " << load.transpose();
         }
         for (int r = 1; r <= 4; ++r) EXPECT_GT(seen[r], 50) << "region S" << r << " sampled";
     }
 }
 
+// The transcription of the paper: S_i(f) solves (23) exactly when f is in sigma_i.
+TEST(ElementaryExample, ClosedFormSolvesTheStepExactlyOnItsSet) {
+    for (const ElementaryExample& e : {elementary(0, 0.25, 2.5), elementary(0.25, 0, 2.5),
+                                       elementary(0, 0, 0.5), elementary(0.25, 0, 4)}) {
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> f(-3, 3);
+        int inside[5] = {0, 0, 0, 0, 0};
+        for (int trial = 0; trial < 20000; ++trial) {
+            const Eigen::Vector2d load(f(rng), f(rng));
+            for (int i = 1; i <= 4; ++i) {
+                const double violation = e.violation(load, e.closed_form(i, load));
+                if (e.in_sigma(i, load, 1e-6)) {
+                    ++inside[i];
+                    EXPECT_LE(violation, 1e-12) << "S" << i << " at " << load.transpose();
+                } else if (!e.in_sigma(i, load, -1e-6)) {
+                    EXPECT_GT(violation, 1e-9) << "S" << i << " at " << load.transpose();
+                }
+            }
+        }
+        for (int i = 1; i <= 4; ++i) EXPECT_GT(inside[i], 50) << "sigma_" << i << " sampled";
+    }
+}
+
+// Section 6's point: with the tangential mass removed (m1 > 0, m2 = 0) and F > c/b the step has
+// three solutions inside sigma_4 = sigma_1 cap sigma_2, and the contact solver reaches each of
+// them from some start; with m1 = 0, m2 > 0 (this FMU's redistributed_normal) the same F and
+// load give one solution, whatever the start.
+TEST(ElementaryExample, SeveralSolutionsOnlyWithoutTangentialMass) {
+    const double F = 2.5;
+    const ElementaryExample without_tangential = elementary(0.25, 0, F);  // c/b = 2
+    const ElementaryExample without_normal = elementary(0, 0.25, F);      // c/b = 3
+    ASSERT_GT(F, without_tangential.c() / without_tangential.b());
+    ASSERT_LT(F, without_normal.c() / without_normal.b());
+    ContactSolver solver;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> f(-3, 3);
+    int multiple = 0;
+    for (int trial = 0; trial < 10000; ++trial) {
+        const Eigen::Vector2d load(f(rng), f(rng));
+        const auto many = without_tangential.solver_solutions(load, solver);
+        const auto closed = without_tangential.closed_form_solutions(load);
+        if (without_tangential.in_sigma(4, load, 1e-3)) {
+            ++multiple;
+            ASSERT_EQ(closed.size(), 3u) << load.transpose();
+            ASSERT_EQ(many.size(), 3u) << load.transpose();
+            int regions = 0;
+            for (const ElementarySolution& s : many) {
+                regions |= 1 << s.region;
+                EXPECT_LE(without_tangential.violation(load, s.x), 1e-9);
+            }
+            EXPECT_EQ(regions, (1 << 1) | (1 << 2) | (1 << 4)) << load.transpose();
+        } else if (!without_tangential.in_sigma(4, load, -1e-3)) {
+            EXPECT_EQ(many.size(), 1u) << load.transpose();
+        }
+        EXPECT_EQ(without_normal.solver_solutions(load, solver).size(), 1u) << load.transpose();
+    }
+    EXPECT_GT(multiple, 100);
+}
+
+// F = c/b: on the half-line sigma_5 the solutions form the segment S_5 between S_1 and S_2;
+// different starts reach different points of it, and each solves (23).
+TEST(ElementaryExample, CriticalFrictionGivesASegmentOfSolutions) {
+    const ElementaryExample e = elementary(0.25, 0, 2);  // c/b = 2
+    ASSERT_EQ(e.friction() * e.b(), e.c());
+    ContactSolver solver;
+    for (double fn : {0.0, 0.5, 2.0}) {
+        const Eigen::Vector2d load(fn, -e.c() / e.b() * fn);
+        ASSERT_TRUE(e.in_sigma5(load, 1e-12));
+        const auto found = e.solver_solutions(load, solver);
+        EXPECT_GE(found.size(), 2u) << load.transpose();
+        for (const ElementarySolution& s : found) {
+            EXPECT_LE(e.violation(load, s.x), 1e-9);
+            EXPECT_GE(s.x[1], -fn / e.b() - 1e-9);  // u_tau within [-f_nu / b, u_tau_old]
+            EXPECT_LE(s.x[1], e.u_tau_old() + 1e-9);
+        }
+    }
+}
+
 TEST(ContactSolver, NonConvergenceIsAnError) {
-    Elementary e{2, 1, 3, 0.5, 0.1};
-    const ContactProblem p = e.problem(1, 2);  // region S3: needs iterations from zero
+    const ElementaryExample e(2, 1, 3, 0.5, 0.1);
+    const ContactProblem p = e.problem({1, 2});  // region S3: needs iterations from zero
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(2);
     ContactSolver solver;
     EXPECT_THROW(solver.solve(p, ContactSolverOptions{1e-10, 0}, lambda), ContactSolveError);
 }
 
 TEST(ContactSolver, OpenContactNeedsNoIteration) {
-    Elementary e{2, 1, 3, 0.5, 0.1};
-    const ContactProblem p = e.problem(-1, 0.5);  // region S1: lambda = 0
+    const ElementaryExample e(2, 1, 3, 0.5, 0.1);
+    const ContactProblem p = e.problem({-1, 0.5});  // region S1: lambda = 0
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(2);
     ContactSolver solver;
     EXPECT_EQ(solver.solve(p, ContactSolverOptions{1e-10, 0}, lambda).iterations, 0);

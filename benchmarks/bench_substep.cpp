@@ -59,22 +59,6 @@ int main(int argc, char** argv) {
     const double setup_factor = stepper.timings().factor;
     const SubstepTimings first = stepper.timings();
 
-    long iterations = 0, solves = 0;
-    const long newton_factors_before = stepper.contact_solver().factorizations();
-    t0 = Clock::now();
-    for (int k = 0; k < substeps; ++k) {
-        const SubstepReport r = stepper.substep(s, dt, load);
-        iterations += r.contact_iterations;
-        solves += r.contact_solved;
-    }
-    const double per_substep = seconds_since(t0) / substeps;
-    const double newton_factors =
-        double(stepper.contact_solver().factorizations() - newton_factors_before) / substeps;
-    SubstepTimings t = stepper.timings();
-    t.solve -= first.solve;
-    t.contact -= first.contact;
-    t.update -= first.update;
-
     // The floor: one solve (forward + backward) with the same factor; and, to show what the
     // constrained ordering costs, one solve with CHOLMOD's own unconstrained choice.
     const Discretization& d = stepper.discretization();
@@ -82,20 +66,47 @@ int main(int argc, char** argv) {
     TrailingCholesky factor(K, d.contact_unknowns());
     Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> unconstrained(K);
     Eigen::VectorXd rhs = Eigen::VectorXd::Random(K.rows()), x(K.rows());
-    const int bare = std::max(50, substeps / 2);
     x = unconstrained.solve(rhs);  // first-call workspace allocation is not timed
+    factor.solve(rhs, x);
+
+    // Substeps and bare solves alternate in blocks, so that a drift of the (shared, noisy)
+    // machine during the run weighs on both sides of the ratio alike.
+    const int blocks = std::min(10, substeps);
+    long iterations = 0, solves = 0;
+    double substep_seconds = 0, floor_seconds = 0;
+    const long newton_factors_before = stepper.contact_solver().factorizations();
+    for (int block = 0; block < blocks; ++block) {
+        const int count = substeps / blocks + (block < substeps % blocks ? 1 : 0);
+        t0 = Clock::now();
+        for (int k = 0; k < count; ++k) {
+            const SubstepReport r = stepper.substep(s, dt, load);
+            iterations += r.contact_iterations;
+            solves += r.contact_solved;
+        }
+        substep_seconds += seconds_since(t0);
+        t0 = Clock::now();
+        for (int k = 0; k < count; ++k) {
+            factor.solve(rhs, x);
+            rhs[k % rhs.size()] += 1e-3 * x[0];  // the right-hand side changes every time
+        }
+        floor_seconds += seconds_since(t0);
+    }
+    const double per_substep = substep_seconds / substeps;
+    const double floor = floor_seconds / substeps;
+    const double newton_factors =
+        double(stepper.contact_solver().factorizations() - newton_factors_before) / substeps;
+    SubstepTimings t = stepper.timings();
+    t.solve -= first.solve;
+    t.contact -= first.contact;
+    t.update -= first.update;
+
+    const int bare = std::max(50, std::min(substeps / 2, 2000));
     t0 = Clock::now();
     for (int k = 0; k < bare; ++k) {
         x = unconstrained.solve(rhs);
         rhs[k % rhs.size()] += 1e-3 * x[0];
     }
     const double floor_unconstrained = seconds_since(t0) / bare;
-    t0 = Clock::now();
-    for (int k = 0; k < bare; ++k) {
-        factor.solve(rhs, x);
-        rhs[k % rhs.size()] += 1e-3 * x[0];  // the right-hand side changes every time
-    }
-    const double floor = seconds_since(t0) / bare;
 
     // Energies, computed only when an output asks for them.
     Simulation sim(p, top);

@@ -1,0 +1,87 @@
+// Linear stability of steady sliding (issue 3's "what we already know"): every contact node in
+// contact (u_y = 0 on the bottom edge) and slipping against the foundation moving in +x, so
+// the friction force on the body is F times the normal reaction p at each contact node.
+// With p = (M u'' + A u) on the contact y rows, the x rows read M_x u'' + A_x u = F p, and on
+// the remaining free dofs r
+//   (M_rr - F E M_yr) u_r'' + (A_rr - F E A_yr) u_r = 0,
+// E moving contact node i's y row onto its x row. Modes u = phi e^{s t} with
+// s^2 = -eig(M_F^-1 K_F); for F = 0 the pencil is symmetric definite and every s is imaginary.
+// For F > 0 it is not symmetric: a complex eigenvalue gives Re s > 0, a growing mode.
+// Prints JSON: the largest growth rate Re s [1/s], its frequency |Im s| / 2 pi [Hz], and the
+// number of growing modes.   sliding_stability NX FRICTION MASS_MATRIX
+#include <chrono>
+#include <complex>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include "discretization.hpp"
+
+using namespace contactbody;
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: sliding_stability NX FRICTION MASS_MATRIX\n");
+        return 2;
+    }
+    SceneParameters p;
+    p.nx = p.ny = std::atoi(argv[1]);
+    p.friction_coefficient = std::atof(argv[2]);
+    p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[3]));
+    const auto t0 = std::chrono::steady_clock::now();
+    const Discretization d = discretize(p);
+    const Eigen::MatrixXd M(d.M_free), A(d.A_free);
+    const Eigen::Index nf = M.rows();
+
+    // r: the free dofs but the contact nodes' y dofs; where each contact node's x dof lands.
+    std::vector<int> position(static_cast<size_t>(nf), 0);
+    for (int y : d.contact_y) position[static_cast<size_t>(y)] = -1;
+    std::vector<int> rows;
+    for (Eigen::Index k = 0; k < nf; ++k)
+        if (position[static_cast<size_t>(k)] == 0) {
+            position[static_cast<size_t>(k)] = static_cast<int>(rows.size());
+            rows.push_back(static_cast<int>(k));
+        }
+    const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
+    Eigen::MatrixXd MF(n, n), KF(n, n);
+    for (Eigen::Index a = 0; a < n; ++a)
+        for (Eigen::Index b = 0; b < n; ++b) {
+            MF(a, b) = M(rows[a], rows[b]);
+            KF(a, b) = A(rows[a], rows[b]);
+        }
+    const double F = p.friction_coefficient;
+    for (size_t i = 0; i < d.contact_y.size(); ++i) {
+        const Eigen::Index x = position[static_cast<size_t>(d.contact_x[i])];
+        for (Eigen::Index b = 0; b < n; ++b) {
+            MF(x, b) -= F * M(d.contact_y[i], rows[b]);
+            KF(x, b) -= F * A(d.contact_y[i], rows[b]);
+        }
+    }
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(MF);
+    const Eigen::EigenSolver<Eigen::MatrixXd> eig(lu.solve(KF), false);
+    if (eig.info() != Eigen::Success) throw std::runtime_error("sliding_stability: eig failed");
+    double growth = 0, frequency = 0, min_real = 1e300;
+    int growing = 0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const std::complex<double> omega2 = eig.eigenvalues()[k];
+        const std::complex<double> s = std::sqrt(-omega2);  // Re s >= 0 by the branch cut
+        min_real = std::min(min_real, omega2.real());
+        if (s.real() > 1e-6 * std::abs(s)) ++growing;
+        if (s.real() > growth) {
+            growth = s.real();
+            frequency = std::abs(s.imag()) / (2 * 3.141592653589793);
+        }
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("{\"nx\": %d, \"h\": %g, \"friction\": %g, \"mass_matrix\": %d, \"dofs\": %ld, "
+                "\"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
+                "\"min_real_omega2\": %.6e, \"seconds\": %.2f}\n",
+                p.nx, p.width / p.nx, F, static_cast<int>(p.mass_matrix), static_cast<long>(n),
+                growth, frequency, growing, min_real, seconds);
+    return 0;
+}

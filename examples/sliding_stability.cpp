@@ -9,11 +9,11 @@
 // For F > 0 it is not symmetric: a complex eigenvalue gives Re s > 0, a growing mode.
 // Prints JSON: the largest growth rate Re s [1/s], its frequency |Im s| / 2 pi [Hz], and the
 // number of growing modes.   sliding_stability NX FRICTION MASS_MATRIX
+// (Massless dofs, redistributed_both's contact x dofs, are condensed out first.)
 #include <chrono>
 #include <complex>
 #include <cstdio>
 #include <cstdlib>
-#include <stdexcept>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -61,12 +61,25 @@ int main(int argc, char** argv) {
             KF(x, b) -= F * A(d.contact_y[i], rows[b]);
         }
     }
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(MF);
-    const Eigen::EigenSolver<Eigen::MatrixXd> eig(lu.solve(KF), false);
-    if (eig.info() != Eigen::Success) throw std::runtime_error("sliding_stability: eig failed");
+    // Massless dofs (the contact x dofs of redistributed_both: their rows of M_F vanish)
+    // are algebraic: condense them, K_rr - K_rc K_cc^-1 K_cr, before the eigenvalues.
+    std::vector<Eigen::Index> massive, massless;
+    for (Eigen::Index a = 0; a < n; ++a)
+        (MF.row(a).cwiseAbs().maxCoeff() == 0 ? massless : massive).push_back(a);
+    const Eigen::MatrixXd Mm = MF(massive, massive);
+    Eigen::MatrixXd Km = KF(massive, massive);
+    if (!massless.empty())
+        Km -= KF(massive, massless) *
+              KF(massless, massless).partialPivLu().solve(KF(massless, massive));
+    const Eigen::EigenSolver<Eigen::MatrixXd> eig(Mm.partialPivLu().solve(Km), false);
+    if (eig.info() != Eigen::Success) {
+        std::fprintf(stderr, "sliding_stability: the eigenvalue iteration did not converge\n");
+        return 1;
+    }
+    const Eigen::Index modes = static_cast<Eigen::Index>(massive.size());
     double growth = 0, frequency = 0, min_real = 1e300;
     int growing = 0;
-    for (Eigen::Index k = 0; k < n; ++k) {
+    for (Eigen::Index k = 0; k < modes; ++k) {
         const std::complex<double> omega2 = eig.eigenvalues()[k];
         const std::complex<double> s = std::sqrt(-omega2);  // Re s >= 0 by the branch cut
         min_real = std::min(min_real, omega2.real());
@@ -79,9 +92,9 @@ int main(int argc, char** argv) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("{\"nx\": %d, \"h\": %g, \"friction\": %g, \"mass_matrix\": %d, \"dofs\": %ld, "
-                "\"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
+                "\"modes\": %ld, \"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
                 "\"min_real_omega2\": %.6e, \"seconds\": %.2f}\n",
                 p.nx, p.width / p.nx, F, static_cast<int>(p.mass_matrix), static_cast<long>(n),
-                growth, frequency, growing, min_real, seconds);
+                static_cast<long>(modes), growth, frequency, growing, min_real, seconds);
     return 0;
 }

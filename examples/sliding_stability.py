@@ -37,8 +37,10 @@ def main():
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     sizes = [n for n in (5, 10, 20, 40) if n <= args.finest]
+    # Dense eigenvalues: nx = 40 (3239 dofs) takes about 2 min, so only for the FMU's default
+    # variant and F > 0.
     rows = [analyse(nx, F, v) for v in VARIANTS for F in (0.0, 0.2, 1.2) for nx in sizes
-            if v == 1 or nx <= 20]
+            if nx <= 20 or (v == 1 and F > 0)]
     (args.out / "sliding_stability.json").write_text(json.dumps(rows, indent=1))
 
     print("| mass_matrix | F | h [cm] | dofs | growth rate [1/s] | its frequency [kHz] "

@@ -11,7 +11,6 @@
 // and the correction d = K^-1 B^T lambda, each warm-started (d from the previous substep's).
 // "jacobi_two_solves" times that pair. Prints JSON.
 //   bench_iterative NX DT SUBSTEPS [MASS_MATRIX]
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -19,16 +18,14 @@
 
 #include <Eigen/IterativeLinearSolvers>
 
+#include "bench_common.hpp"
 #include "stepper.hpp"
 #include "trailing_cholesky.hpp"
 
 using namespace contactbody;
-using Clock = std::chrono::steady_clock;
+using namespace bench;
 
 namespace {
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 struct Tally {
     std::string method;
@@ -57,12 +54,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_iterative NX DT SUBSTEPS [MASS_MATRIX]\n");
         return 2;
     }
-    SceneParameters p;
-    p.nx = p.ny = std::atoi(argv[1]);
-    const double dt = std::atof(argv[2]);
+    SceneParameters p = paper_scene(argv);
+    const double dt = p.internal_step;
     const int substeps = std::atoi(argv[3]);
     if (argc > 4) p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[4]));
-    p.internal_step = dt;
     const double top = -2.5e-5;
 
     Stepper stepper(p);

@@ -3,24 +3,22 @@
 // whose step changes every time (what alternation costs without a cache: a factorization of
 // K = 4/dt^2 M_r + A and its Delassus block per step). Same number of steps, same scene.
 // Prints JSON.   bench_step_sizes NX INTERNAL_STEP STEPS
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 
+#include "bench_common.hpp"
 #include "simulation.hpp"
 
 using namespace contactbody;
-using Clock = std::chrono::steady_clock;
+using namespace bench;
 
 int main(int argc, char** argv) {
     if (argc != 4) {
         std::fprintf(stderr, "usage: bench_step_sizes NX INTERNAL_STEP STEPS\n");
         return 2;
     }
-    SceneParameters p;
-    p.nx = p.ny = std::atoi(argv[1]);
-    p.internal_step = std::atof(argv[2]);
+    const SceneParameters p = paper_scene(argv);
     const int steps = std::atoi(argv[3]);
     const double top = -2.5e-5;
     const StepInputs inputs{20, top, 0, 0};
@@ -46,7 +44,7 @@ int main(int argc, char** argv) {
             sim.do_step(s.step(k), inputs);
             substeps += sim.statistics().substeps;
         }
-        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        const double seconds = seconds_since(t0);
         std::printf("%s{\"schedule\": \"%s\", \"seconds\": %.4f, \"factorizations\": %d, "
                     "\"substeps\": %ld}",
                     first ? "" : ", ", s.name, seconds, sim.stepper().factorizations(), substeps);

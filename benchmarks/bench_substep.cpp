@@ -1,52 +1,30 @@
 // Cost of one midpoint substep on the paper scene against its floor, one bare sparse solve
 // with the same Cholesky factor, measured in the same run. Prints one JSON object.
 //   bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP_DISPLACEMENT]
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 #include <Eigen/CholmodSupport>
 
+#include "bench_common.hpp"
 #include "simulation.hpp"
 #include "trailing_cholesky.hpp"
 
 using namespace contactbody;
-using Clock = std::chrono::steady_clock;
-
-// Peak resident memory of this process image in MB (VmHWM; ru_maxrss would include the
-// parent's peak, which survives execve).
-static double peak_rss_mb() {
-    std::ifstream status("/proc/self/status");
-    std::string key;
-    double kb = 0;
-    while (status >> key) {
-        if (key == "VmHWM:") {
-            status >> kb;
-            break;
-        }
-    }
-    return kb / 1024.0;
-}
-
-static double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
+using namespace bench;
 
 int main(int argc, char** argv) {
     if (argc < 4) {
         std::fprintf(stderr, "usage: bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP]\n");
         return 2;
     }
-    SceneParameters p;
-    p.nx = p.ny = std::atoi(argv[1]);
-    const double dt = std::atof(argv[2]);
+    SceneParameters p = paper_scene(argv);
+    const double dt = p.internal_step;
     const int substeps = std::atoi(argv[3]);
     if (argc > 4) p.friction_coefficient = std::atof(argv[4]);
     if (argc > 5) p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[5]));
     const double top = argc > 6 ? std::atof(argv[6]) : -2.5e-5;  // > 0 lifts the body off
-    p.internal_step = dt;
 
     auto t0 = Clock::now();
     Stepper stepper(p);

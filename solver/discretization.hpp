@@ -43,7 +43,8 @@ struct Discretization {
     std::vector<int> clamped_dofs;  // top edge, x and y, ascending
     std::vector<int> free_index;    // dof -> position in free_dofs, or -1 when clamped
     // Blocks used by the stepper: rows free / clamped, columns all / clamped.
-    SparseMatrix M_free_rows, A_free_clamped, M_free_clamped;
+    RowMajorSparseMatrix M_free_rows;  // row-major: the substep multiplies by it every time
+    SparseMatrix A_free_clamped, M_free_clamped;
     RowMajorSparseMatrix M_clamped_rows, A_clamped_rows;  // few rows, read row by row
     SparseMatrix A_free, M_free;    // free x free
     // Contact node c: free positions of its x and y dofs.

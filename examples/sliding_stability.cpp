@@ -37,29 +37,22 @@ int main(int argc, char** argv) {
     const Eigen::MatrixXd M(d.M_free), A(d.A_free);
     const Eigen::Index nf = M.rows();
 
-    // r: the free dofs but the contact nodes' y dofs; where each contact node's x dof lands.
-    std::vector<int> position(static_cast<size_t>(nf), 0);
-    for (int y : d.contact_y) position[static_cast<size_t>(y)] = -1;
-    std::vector<int> rows;
+    // r: the free dofs but the contact nodes' y dofs; position: where a free dof lands in r.
+    std::vector<bool> contact_y(static_cast<size_t>(nf), false);
+    for (int y : d.contact_y) contact_y[static_cast<size_t>(y)] = true;
+    std::vector<Eigen::Index> rows, position(static_cast<size_t>(nf), -1);
     for (Eigen::Index k = 0; k < nf; ++k)
-        if (position[static_cast<size_t>(k)] == 0) {
-            position[static_cast<size_t>(k)] = static_cast<int>(rows.size());
-            rows.push_back(static_cast<int>(k));
+        if (!contact_y[static_cast<size_t>(k)]) {
+            position[static_cast<size_t>(k)] = static_cast<Eigen::Index>(rows.size());
+            rows.push_back(k);
         }
     const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
-    Eigen::MatrixXd MF(n, n), KF(n, n);
-    for (Eigen::Index a = 0; a < n; ++a)
-        for (Eigen::Index b = 0; b < n; ++b) {
-            MF(a, b) = M(rows[a], rows[b]);
-            KF(a, b) = A(rows[a], rows[b]);
-        }
+    Eigen::MatrixXd MF = M(rows, rows), KF = A(rows, rows);
     const double F = p.friction_coefficient;
     for (size_t i = 0; i < d.contact_y.size(); ++i) {
         const Eigen::Index x = position[static_cast<size_t>(d.contact_x[i])];
-        for (Eigen::Index b = 0; b < n; ++b) {
-            MF(x, b) -= F * M(d.contact_y[i], rows[b]);
-            KF(x, b) -= F * A(d.contact_y[i], rows[b]);
-        }
+        MF.row(x) -= F * M(d.contact_y[i], rows);
+        KF.row(x) -= F * A(d.contact_y[i], rows);
     }
     // Massless dofs (the contact x dofs of redistributed_both: their rows of M_F vanish)
     // are algebraic: condense them, K_rr - K_rc K_cc^-1 K_cr, before the eigenvalues.

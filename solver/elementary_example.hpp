@@ -39,7 +39,8 @@ public:
     ContactProblem problem(const Eigen::Vector2d& f) const;
 
     // The paper's sets: f in sigma_i (closed, i = 1..4; sigma_4 follows the case F < c/b or
-    // F > c/b) and the half-line sigma_5 (F = c/b). `margin` > 0 shrinks each set, < 0 grows it.
+    // F > c/b) and the half-line sigma_5 (F = c/b). `margin` > 0 shrinks each set, < 0 grows it;
+    // for the line sigma_5 it is also the tolerance on c f_nu + b f_tau = 0.
     bool in_sigma(int i, const Eigen::Vector2d& f, double margin = 0) const;
     bool in_sigma5(const Eigen::Vector2d& f, double margin = 0) const;
     // The closed form S_i(f) (i = 1..4; S_4 needs F != c/b).

@@ -32,7 +32,8 @@ void visit(O& o, F&& f) {
     for (auto* x : {&o.energy, &o.kinetic_energy, &o.strain_energy, &o.friction_work,
                     &o.energy_minus_friction_work, &o.normal_force, &o.friction_force,
                     &o.corner_pressure, &o.corner_friction, &o.top_reaction_x, &o.top_reaction_y,
-                    &o.max_penetration})
+                    &o.max_penetration, &o.damping_work, &o.clamp_work, &o.normal_contact_work,
+                    &o.friction_dissipation, &o.foundation_work})
         f(*x);
     f(o.active_contact_nodes);
     f(o.slipping_contact_nodes);
@@ -153,7 +154,7 @@ std::vector<char> serialize(const FmuState& s) {
         w.vector(sim.state.u);
         w.vector(sim.state.v);
         w.vector(sim.state.lambda);
-        w.value(sim.friction_work);
+        Works::for_each(sim.works, sim.works, [&](double x, double) { w.value(x); });
         visit(sim.observables, [&](const auto& x) { w.value(x); });
     }
 
@@ -246,7 +247,7 @@ FmuState deserialize(const char* bytes, size_t size) {
         sim.state.u = r.vector("displacement", dofs);
         sim.state.v = r.vector("velocity", dofs);
         sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
-        sim.friction_work = r.finite("friction work");
+        Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
         visit(sim.observables, [&](auto& x) {
             using T = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<T, double>) x = r.finite("observable");

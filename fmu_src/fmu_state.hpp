@@ -15,7 +15,7 @@ struct FmuState {
     ModelState model;
 };
 
-constexpr unsigned state_format_version = 2;  // 2: String variables, field output
+constexpr unsigned state_format_version = 3;  // 2: String variables, field output; 3: damping, works
 
 std::vector<char> serialize(const FmuState& state);
 // Throws ModelError naming the defect: wrong magic or version, truncation, checksum, sizes

@@ -41,6 +41,7 @@ std::string number(double x) {
 const std::map<std::string, std::string> units = {
     {"m", R"(m="1")"},
     {"s", R"(s="1")"},
+    {"1/s", R"(s="-1")"},
     {"m/s", R"(m="1" s="-1")"},
     {"kg/m3", R"(kg="1" m="-3")"},
     {"Pa", R"(kg="1" m="-1" s="-2")"},

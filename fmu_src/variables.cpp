@@ -39,6 +39,8 @@ const std::vector<Variable> table = {
     {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},
     {"result_directory", 13, T::String, C::parameter, V::fixed, "", "Directory for field output (.vtu files and a .pvd collection); empty = none", 0, none, none, false, ACCESS_STRING(result_directory)},
     {"field_output_interval", 14, T::Real, C::parameter, V::fixed, "s", "Time between field output files (written at the first communication point at or after each multiple)", 1e-4, 0, inf, true, ACCESS_REAL(field_output_interval)},
+    {"damping_mass", 15, T::Real, C::parameter, V::fixed, "1/s", "Rayleigh damping: alpha of C = alpha M + beta A (M: the variant's mass matrix)", 0, 0, inf, false, ACCESS_REAL(damping_mass)},
+    {"damping_stiffness", 16, T::Real, C::parameter, V::fixed, "s", "Rayleigh damping: beta of C = alpha M + beta A", 0, 0, inf, false, ACCESS_REAL(damping_stiffness)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -57,6 +59,11 @@ const std::vector<Variable> table = {
     {"active_contact_nodes", 111, T::Integer, C::output, V::discrete, "", "Contact nodes in contact at the last substep", none, none, none, false, ACCESS_INT(out.active_contact_nodes)},
     {"slipping_contact_nodes", 112, T::Integer, C::output, V::discrete, "", "Contact nodes slipping at the last substep", none, none, none, false, ACCESS_INT(out.slipping_contact_nodes)},
     {"max_penetration", 113, T::Real, C::output, V::continuous, "m", "Largest penetration over the contact nodes and substeps of the last step", none, none, none, false, ACCESS_REAL(out.max_penetration)},
+    {"damping_work", 114, T::Real, C::output, V::continuous, "J/m", "Energy dissipated by the Rayleigh damping since the start (>= 0)", none, none, none, false, ACCESS_REAL(out.damping_work)},
+    {"clamp_work", 115, T::Real, C::output, V::continuous, "J/m", "Work of the clamp's reaction on the body since the start, jumps of a held top_displacement included", none, none, none, false, ACCESS_REAL(out.clamp_work)},
+    {"normal_contact_work", 116, T::Real, C::output, V::continuous, "J/m", "Work of the normal contact forces on the body since the start", none, none, none, false, ACCESS_REAL(out.normal_contact_work)},
+    {"friction_dissipation", 117, T::Real, C::output, V::continuous, "J/m", "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)", none, none, none, false, ACCESS_REAL(out.friction_dissipation)},
+    {"foundation_work", 118, T::Real, C::output, V::continuous, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)", none, none, none, false, ACCESS_REAL(out.foundation_work)},
 };
 
 }  // namespace
@@ -75,6 +82,8 @@ SceneParameters Values::scene() const {
     p.internal_step = internal_step;
     p.contact_tolerance = contact_tolerance;
     p.initial_gap = initial_gap;
+    p.damping_mass = damping_mass;
+    p.damping_stiffness = damping_stiffness;
     return p;
 }
 

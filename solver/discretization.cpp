@@ -55,6 +55,10 @@ void check_parameters(const SceneParameters& p) {
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
         reject("initial_gap", "finite and >= 0", p.initial_gap);
+    if (!(std::isfinite(p.damping_mass) && p.damping_mass >= 0))
+        reject("damping_mass", "finite and >= 0", p.damping_mass);
+    if (!(std::isfinite(p.damping_stiffness) && p.damping_stiffness >= 0))
+        reject("damping_stiffness", "finite and >= 0", p.damping_stiffness);
 }
 
 Discretization discretize(const SceneParameters& p) {
@@ -100,6 +104,11 @@ Discretization discretize(const SceneParameters& p) {
     d.M_free_clamped = d.M_free_rows * PcT;
     d.A_free = Pf * d.A * PfT;
     d.M_free = d.M_free_rows * PfT;
+    d.C.resize(n, n);
+    if (p.damped()) d.C = p.damping_mass * d.M + p.damping_stiffness * d.A;
+    d.C_free_rows = Pf * d.C;
+    d.C_free_clamped = d.C_free_rows * PcT;
+    d.C_free = d.C_free_rows * PfT;
     for (int node : d.mesh.contact_nodes) {
         d.contact_x.push_back(d.free_index[dof_x(node)]);
         d.contact_y.push_back(d.free_index[dof_y(node)]);

@@ -26,6 +26,9 @@ struct SceneParameters {
     double internal_step = 4e-6;
     double contact_tolerance = 1e-10;
     double initial_gap = 0;
+    // Rayleigh damping C = damping_mass M + damping_stiffness A (M: the variant's mass matrix).
+    double damping_mass = 0, damping_stiffness = 0;
+    bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 };
 
 // Limits shared by the solver and the FMI layer (which also writes them as min/max).
@@ -47,6 +50,11 @@ struct Discretization {
     SparseMatrix A_free_clamped, M_free_clamped;
     RowMajorSparseMatrix M_clamped_rows, A_clamped_rows;  // few rows, read row by row
     SparseMatrix A_free, M_free;    // free x free
+    // Rayleigh damping C = alpha M + beta A and the same blocks of it; all empty (no
+    // entries) when undamped, so that the undamped scheme is computed exactly as before.
+    SparseMatrix C;
+    RowMajorSparseMatrix C_free_rows;
+    SparseMatrix C_free_clamped, C_free;
     // Contact node c: free positions of its x and y dofs.
     std::vector<int> contact_x, contact_y;
     // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T).

@@ -1,5 +1,6 @@
 #include "simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -24,7 +25,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const int n = substeps_for(h);
     const double dt = h / n, t0 = state_.time;
     saved_ = state_;
-    const double saved_work = friction_work_;
+    const Works saved_works = works_;
 
     Observables avg;
     StepStatistics stats;
@@ -39,15 +40,9 @@ void Simulation::do_step(double h, const StepInputs& in) {
             load.top_rate = in.top_velocity;
             load.foundation_velocity =
                 in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
-            if (k == 0) {
-                // Held inputs may have jumped since the last step: the clamp moves with them.
-                for (int node : mesh.top_nodes) {
-                    state_.u[dof_y(node)] = load.top_start;
-                    state_.v[dof_y(node)] = load.top_rate;
-                }
-            }
+            if (k == 0) move_clamp(load.top_start, load.top_rate);
             const SubstepReport r = stepper_.substep(state_, dt, load);
-            friction_work_ += r.friction_work;
+            works_ += r.work;
             avg.normal_force += r.normal_force;
             avg.friction_force += r.friction_force;
             avg.corner_pressure -= r.corner_lambda_N;
@@ -68,7 +63,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         }
     } catch (...) {
         state_ = saved_;
-        friction_work_ = saved_work;
+        works_ = saved_works;
         throw;
     }
     state_.time = t0 + h;  // no drift from summing substeps
@@ -85,6 +80,32 @@ void Simulation::do_step(double h, const StepInputs& in) {
     energies_current_ = false;
 }
 
+// Held inputs may have jumped since the last step: the clamp moves with them. The energy
+// that jump puts in (the clamped dofs move at once, the free ones not at all) is the clamp's
+// work, so that the balance closes across held steps too.
+void Simulation::move_clamp(double top, double rate) {
+    const Discretization& d = stepper_.discretization();
+    const bool moves = std::any_of(d.mesh.top_nodes.begin(), d.mesh.top_nodes.end(), [&](int n) {
+        return state_.u[dof_y(n)] != top || state_.v[dof_y(n)] != rate;
+    });
+    if (!moves) return;
+    const double before = energy(state_);
+    for (int node : d.mesh.top_nodes) {
+        state_.u[dof_y(node)] = top;
+        state_.v[dof_y(node)] = rate;
+    }
+    works_.clamp += energy(state_) - before;
+    energies_current_ = false;
+}
+
+double Simulation::energy(const State& s) {
+    const Discretization& d = stepper_.discretization();
+    product_.noalias() = d.M * s.v;
+    double e = 0.5 * s.v.dot(product_);
+    product_.noalias() = d.A * s.u;
+    return e + 0.5 * s.u.dot(product_);
+}
+
 void Simulation::restore(const SimulationSnapshot& snapshot) {
     const State& s = snapshot.state;
     const Eigen::Index dofs = stepper_.discretization().mesh.num_dofs();
@@ -93,7 +114,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
         (s.lambda.size() != nc && s.lambda.size() != 2 * nc))
         throw std::invalid_argument("state does not fit this mesh");
     state_ = s;
-    friction_work_ = snapshot.friction_work;
+    works_ = snapshot.works;
     observables_ = snapshot.observables;
     energies_current_ = false;
 }
@@ -106,8 +127,13 @@ const Observables& Simulation::observables() {
         product_.noalias() = d.A * state_.u;
         observables_.strain_energy = 0.5 * state_.u.dot(product_);
         observables_.energy = observables_.kinetic_energy + observables_.strain_energy;
-        observables_.friction_work = friction_work_;
-        observables_.energy_minus_friction_work = observables_.energy - friction_work_;
+        observables_.friction_work = works_.friction;
+        observables_.energy_minus_friction_work = observables_.energy - works_.friction;
+        observables_.damping_work = works_.damping;
+        observables_.clamp_work = works_.clamp;
+        observables_.normal_contact_work = works_.normal_contact;
+        observables_.friction_dissipation = works_.friction_dissipation;
+        observables_.foundation_work = works_.foundation;
         energies_current_ = true;
     }
     return observables_;

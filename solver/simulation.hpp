@@ -8,6 +8,9 @@ namespace contactbody {
 struct Observables {
     double energy = 0, kinetic_energy = 0, strain_energy = 0;
     double friction_work = 0, energy_minus_friction_work = 0;
+    // Works on the body since t0 (Works): E - E(0) = clamp + normal_contact + friction - damping.
+    double damping_work = 0, clamp_work = 0, normal_contact_work = 0;
+    double friction_dissipation = 0, foundation_work = 0;
     // Averaged over the last communication step.
     double normal_force = 0, friction_force = 0;
     double corner_pressure = 0, corner_friction = 0;
@@ -27,7 +30,7 @@ struct StepInputs {
 // parameters and rebuilt on demand, so they are not part of it).
 struct SimulationSnapshot {
     State state;
-    double friction_work = 0;
+    Works works;              // since t0
     Observables observables;  // the last step's averages
 };
 
@@ -62,15 +65,18 @@ public:
     // Substeps per step for a step of size h.
     int substeps_for(double h) const;
 
-    SimulationSnapshot snapshot() const { return {state_, friction_work_, observables_}; }
+    SimulationSnapshot snapshot() const { return {state_, works_, observables_}; }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
     const StepStatistics& statistics() const { return statistics_; }
 
 private:
+    void move_clamp(double top, double rate);
+    double energy(const State& s);  // E of a state (uses product_)
+
     Stepper stepper_;
     State state_, saved_;
-    double friction_work_ = 0;
+    Works works_;  // since t0
     Observables observables_;
     StepStatistics statistics_;
     bool energies_current_ = false;

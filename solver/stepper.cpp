@@ -46,6 +46,8 @@ Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discret
     const Eigen::Index nc = num_contact_nodes();
     z_.resize(disc_.mesh.num_dofs());
     u_half_.resize(disc_.mesh.num_dofs());
+    du_.resize(disc_.mesh.num_dofs());
+    C_du_.resize(disc_.mesh.num_dofs());
     rhs_.resize(nf);
     u_half_free_.resize(nf);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
@@ -84,9 +86,13 @@ Stepper::Factor& Stepper::factor_for(double dt) {
     f->dt = dt;
     const int nc = num_contact_nodes(), m = 2 * nc;
     const std::vector<int> contact_dofs = disc_.contact_unknowns();
-    const SparseMatrix K = (4.0 / (dt * dt)) * disc_.M_free + disc_.A_free;
-    f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
+    SparseMatrix K = (4.0 / (dt * dt)) * disc_.M_free + disc_.A_free;
     f->K_free_clamped = (4.0 / (dt * dt)) * disc_.M_free_clamped + disc_.A_free_clamped;
+    if (params_.damped()) {  // undamped, K is computed exactly as without the term
+        K += (2.0 / dt) * disc_.C_free;
+        f->K_free_clamped += (2.0 / dt) * disc_.C_free_clamped;
+    }
+    f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
     ++factorizations_;
 
     // B rows: N_i = -e_y(i), T_i = +e_x(i).
@@ -131,6 +137,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     z_ = c1 * s.u + c2 * s.v;
     rhs_.noalias() = d.M_free_rows * z_;
     rhs_.noalias() -= f.K_free_clamped * clamped_half_;
+    if (params_.damped()) rhs_.noalias() += c2 * (d.C_free_rows * s.u);
     laps.lap(timings_.update);
     Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
     laps.lap(timings_.solve);
@@ -170,15 +177,23 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
 
     for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];
+    if (params_.damped()) {
+        du_ = 2 * (u_half_ - s.u);  // u^{k+1} - u^k on all dofs
+        C_du_.noalias() = d.C * du_;
+        report.work.damping = du_.dot(C_du_) / dt;
+    }
 
-    // Force of the clamp on the body: the clamped rows' residual of the midpoint equation.
+    // Force of the clamp on the body: the clamped rows' residual of the midpoint equation;
+    // its work is over the clamped dofs' displacement in this substep.
     for (Eigen::Index k = 0; k < clamped_half_.size(); ++k) {
         double r = 0;
         for (RowMajorSparseMatrix::InnerIterator it(d.M_clamped_rows, k); it; ++it)
             r += it.value() * (c1 * u_half_[it.col()] - z_[it.col()]);
         for (RowMajorSparseMatrix::InnerIterator it(d.A_clamped_rows, k); it; ++it)
             r += it.value() * u_half_[it.col()];
+        if (params_.damped()) r += 0.5 * c2 * C_du_[d.clamped_dofs[k]];
         (d.clamped_dofs[k] % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
+        report.work.clamp += r * 2 * (clamped_half_[k] - s.u[d.clamped_dofs[k]]);
     }
 
     snapshot_.normal_displacement.resize(nc);
@@ -197,7 +212,12 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const double uN_new = -(2 * u_half_[dof_y(node)] - s.u[dof_y(node)]);
         report.normal_force -= lN;
         report.friction_force += lT;
-        report.friction_work += lT * (ux_new - s.u[dof_x(node)]);
+        const double dux = ux_new - s.u[dof_x(node)], uN_old = -s.u[dof_y(node)];
+        const double foundation_step = load.foundation_velocity * dt;
+        report.work.friction += lT * dux;
+        report.work.normal_contact += lN * (uN_new - uN_old);
+        report.work.foundation += lT * foundation_step;
+        report.work.friction_dissipation += lT * (foundation_step - dux);
         report.max_penetration =
             std::max(report.max_penetration, uN_new - params_.initial_gap);
         if (touching && solver_.status()[i] != NodeStatus::open) {

@@ -1,7 +1,9 @@
-// One midpoint substep with frictional contact (SPEC §3, paper eq. 20-22).
+// One midpoint substep with frictional contact (SPEC §3, paper eq. 20-22), with Rayleigh
+// damping C v̄ (v̄ = (u^{k+1} - u^k)/dt) when C is not empty.
 //
 // The unknown is u^{k+1/2}. On the free dofs it solves
-//   K u = M (4/dt^2 u^k + 2/dt v^k) - K_fc u_c^{k+1/2} + B^T lambda,   K = 4/dt^2 M + A,
+//   K u = M (4/dt^2 u^k + 2/dt v^k) + 2/dt C u^k - K_fc u_c^{k+1/2} + B^T lambda,
+//   K = 4/dt^2 M + 2/dt C + A,
 // condensed to the contact unknowns: u = u0 + K^-1 B^T lambda with u0 = K^-1 rhs, so that
 // B u = B u0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square),
 // evaluated on the trailing block of a factor with the contact dofs ordered last.
@@ -28,13 +30,40 @@ struct SubstepLoad {
     double foundation_velocity = 0;
 };
 
+// Exact discrete work of each force on the body (J/m), so that over any run
+//   E - E(0) = clamp + normal_contact + friction - damping,
+// and friction = foundation - friction_dissipation.
+struct Works {
+    double clamp = 0;                 // clamp reaction over the clamped dofs' displacement
+    double normal_contact = 0;        // sum lambda_N (u_N^{k+1} - u_N^k)
+    double friction = 0;              // sum lambda_T (u_x^{k+1} - u_x^k)
+    double friction_dissipation = 0;  // sum lambda_T (V dt - (u_x^{k+1} - u_x^k)), >= 0
+    double foundation = 0;            // sum lambda_T V dt: what the foundation's drive pays
+    double damping = 0;               // dt vbar^T C vbar, vbar = (u^{k+1} - u^k)/dt, >= 0
+
+    // Calls f on the matching fields of a and b (either may be const).
+    template <class A, class B, class F>
+    static void for_each(A& a, B& b, F&& f) {
+        f(a.clamp, b.clamp);
+        f(a.normal_contact, b.normal_contact);
+        f(a.friction, b.friction);
+        f(a.friction_dissipation, b.friction_dissipation);
+        f(a.foundation, b.foundation);
+        f(a.damping, b.damping);
+    }
+    Works& operator+=(const Works& o) {
+        for_each(*this, o, [](double& x, double y) { x += y; });
+        return *this;
+    }
+};
+
 // What one substep contributes to the observables (forces on the body, N/m).
 struct SubstepReport {
     double normal_force = 0;       // -sum lambda_N
     double friction_force = 0;     // sum lambda_T
     double corner_lambda_N = 0, corner_lambda_T = 0;
     double top_reaction_x = 0, top_reaction_y = 0;
-    double friction_work = 0;      // sum lambda_T (u_x^{k+1} - u_x^k)
+    Works work;
     double max_penetration = 0;    // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
     int contact_iterations = 0;
@@ -101,7 +130,7 @@ private:
     SubstepTimings timings_;
     ContactSnapshot snapshot_;
     // Workspace, sized once.
-    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_;
+    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, du_, C_du_;
 };
 
 }  // namespace contactbody

@@ -34,7 +34,7 @@ void* realloc(void* p, std::size_t size) {
 namespace contactbody {
 namespace {
 
-class NoAllocation : public ::testing::TestWithParam<std::tuple<int, double>> {};
+class NoAllocation : public ::testing::TestWithParam<std::tuple<int, double, bool>> {};
 
 TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
     SceneParameters p;
@@ -42,6 +42,10 @@ TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
     p.internal_step = 1e-5;
     p.mass_matrix = static_cast<MassVariant>(std::get<0>(GetParam()));
     p.friction_coefficient = std::get<1>(GetParam());
+    if (std::get<2>(GetParam())) {  // Rayleigh damping adds two sparse products, no storage
+        p.damping_mass = 50;
+        p.damping_stiffness = 4e-6;
+    }
     Simulation sim(p, -2.5e-5);
     StepInputs in;
     in.foundation_velocity = 20;
@@ -64,7 +68,8 @@ TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
 
 INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
                          ::testing::Combine(::testing::Values(0, 1, 2, 3),
-                                            ::testing::Values(1.2, 0.0)));
+                                            ::testing::Values(1.2, 0.0),
+                                            ::testing::Bool()));
 
 }  // namespace
 }  // namespace contactbody

@@ -1,0 +1,104 @@
+"""Rayleigh damping and the energy bookkeeping (issue 10, items 1-2): every force's exact
+discrete work, a balance that closes to round-off for every variant and input mode, and the
+undamped defaults unchanged bit for bit."""
+import json
+import pathlib
+
+import fmpy
+import numpy as np
+import pytest
+
+from conftest import Instance
+
+DATA = pathlib.Path(__file__).parent / "data"
+WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work",
+         "friction_dissipation", "foundation_work", "energy"]
+
+
+def test_undamped_outputs_are_those_before_damping_was_added(fmu_path):
+    """Outputs of the build before damping existed (hex floats): every variant, F = 0 and 1.2."""
+    ref = json.loads((DATA / "reference_outputs_before_damping.json").read_text())
+    for key, expected in ref["runs"].items():
+        variant, friction = key.split("/")
+        r = fmpy.simulate_fmu(fmu_path, stop_time=0.001, output_interval=1e-4,
+                              start_values={"mass_matrix": int(variant), "nx": 10, "ny": 10,
+                                            "friction_coefficient": float(friction)},
+                              output=ref["outputs"])
+        for name, values in expected.items():
+            assert [float(x).hex() for x in r[name]] == values, (key, name)
+
+
+def run_balance(model_description, unzipped, vr, variant, friction, alpha, beta, inputs,
+                steps=40, h=1e-4):
+    """Steps a 10 x 10 body; returns the works after each step and their start values."""
+    inst = Instance(model_description, unzipped, "balance")
+    try:
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.setInteger([vr["nx"], vr["ny"], vr["mass_matrix"]], [10, 10, variant])
+        inst.setReal([vr["friction_coefficient"], vr["damping_mass"], vr["damping_stiffness"]],
+                     [friction, alpha, beta])
+        inst.exitInitializationMode()
+        refs = [vr[n] for n in WORKS]
+        start = dict(zip(WORKS, inst.getReal(refs)))
+        rows = []
+        inputs_vr = [vr["top_displacement"], vr["foundation_velocity"]]
+        for k in range(steps):
+            t = k * h
+            if inputs == "held":  # values that jump at every communication point
+                inst.setReal(inputs_vr, [-2.5e-5 * (1 + 0.5 * np.sin(2000 * t)),
+                                         20 * np.cos(900 * t)])
+            elif inputs == "ramped":  # first derivatives: linear across each step
+                inst.setRealInputDerivatives(inputs_vr, [1, 1], [2e-3 * np.cos(3000 * t),
+                                                                 -3e4 * np.sin(900 * t)])
+            inst.doStep(t, h)  # fmpy raises on a status other than OK
+            rows.append(dict(zip(WORKS, inst.getReal(refs))))
+        return start, rows
+    finally:
+        inst.close()
+
+
+@pytest.mark.parametrize("variant", [0, 1, 2, 3])
+@pytest.mark.parametrize("inputs", ["constant", "held", "ramped"])
+@pytest.mark.parametrize("friction,alpha,beta", [(0.0, 0, 0), (0.3, 0, 0), (0.3, 50, 4e-6)])
+def test_energy_balance_closes(model_description, unzipped, vr, variant, inputs, friction,
+                               alpha, beta):
+    """E - E(0) = clamp + normal contact + friction - damping work, to 1e-9 relative."""
+    start, rows = run_balance(model_description, unzipped, vr, variant, friction, alpha, beta,
+                              inputs)
+    assert all(start[n] == 0 for n in WORKS if n != "energy")
+    for o in rows:
+        balance = o["clamp_work"] + o["normal_contact_work"] + o["friction_work"] - o["damping_work"]
+        scale = max(abs(o["energy"]), abs(start["energy"]), abs(o["foundation_work"]))
+        assert abs(o["energy"] - start["energy"] - balance) <= 1e-9 * scale
+        assert o["foundation_work"] - o["friction_dissipation"] == pytest.approx(
+            o["friction_work"], rel=1e-9, abs=1e-9 * scale)
+    damping = np.array([o["damping_work"] for o in rows])
+    if beta > 0:
+        assert damping[-1] > 0 and np.all(np.diff(damping) >= 0)
+    else:
+        assert np.all(damping == 0)
+    if friction > 0:
+        assert rows[-1]["friction_dissipation"] > 0
+        if variant != 3:  # friction acts on the mean slip velocity of the step: dissipative
+            assert np.all(np.diff([o["friction_dissipation"] for o in rows]) >= 0)
+    else:
+        assert all(o["friction_work"] == 0 and o["foundation_work"] == 0 for o in rows)
+    if inputs != "constant":
+        assert rows[-1]["clamp_work"] != 0
+    else:
+        assert all(o["clamp_work"] == 0 for o in rows)
+
+
+def test_damping_bounds_the_sliding_scene_as_an_independent_implementation_does(fmu_path):
+    """Default scene at F = 0.3, beta = 4e-6 s, 0.02 s, h = 1 cm: the independent
+    implementation's max E is 0.392 J/m (undamped it runs away)."""
+    start = {"nx": 10, "ny": 10, "friction_coefficient": 0.3}
+    out = ["energy", "normal_force", "damping_work", "friction_dissipation"]
+    damped = fmpy.simulate_fmu(fmu_path, stop_time=0.02, output_interval=1e-4,
+                               start_values={**start, "damping_stiffness": 4e-6}, output=out)
+    assert damped["energy"].max() == pytest.approx(0.392, rel=2e-3)
+    assert damped["normal_force"][-1] == pytest.approx(1.191e4, rel=1e-2)
+    undamped = fmpy.simulate_fmu(fmu_path, stop_time=0.02, output_interval=1e-4,
+                                 start_values=start, output=out)
+    assert undamped["energy"].max() > 10 * damped["energy"].max()

@@ -8,12 +8,21 @@
 // s^2 = -eig(M_F^-1 K_F); for F = 0 the pencil is symmetric definite and every s is imaginary.
 // For F > 0 it is not symmetric: a complex eigenvalue gives Re s > 0, a growing mode.
 // Prints JSON: the largest growth rate Re s [1/s], its frequency |Im s| / 2 pi [Hz], and the
-// number of growing modes.   sliding_stability NX FRICTION MASS_MATRIX
+// number of growing modes.   sliding_stability NX FRICTION MASS_MATRIX [BETA ...]
 // (Massless dofs, redistributed_both's contact x dofs, are condensed out first.)
+//
+// Rayleigh damping C = alpha M + beta A adds s C_F with the same friction row operation, so
+// C_F = alpha M_F + beta K_F exactly and the damped pencil s^2 M_F + s C_F + K_F factors
+// through the undamped eigenvalues omega^2 = eig(M_F^-1 K_F): each gives the two roots of
+//   s^2 + (alpha + beta omega^2) s + omega^2 = 0.
+// (Massless rows read (1 + beta s)(K_F phi) = 0, so their static condensation still holds.)
+// For each BETA given (alpha = 0) the output's "damped" list has the largest Re s over all
+// modes, negative when every mode decays.
 #include <chrono>
 #include <complex>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -24,8 +33,8 @@
 using namespace contactbody;
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: sliding_stability NX FRICTION MASS_MATRIX\n");
+    if (argc < 4) {
+        std::fprintf(stderr, "usage: sliding_stability NX FRICTION MASS_MATRIX [BETA ...]\n");
         return 2;
     }
     SceneParameters p;
@@ -82,12 +91,35 @@ int main(int argc, char** argv) {
             frequency = std::abs(s.imag()) / (2 * 3.141592653589793);
         }
     }
+    // Damped: the roots of s^2 + b s + omega^2, b = beta omega^2, in the cancellation-free form.
+    std::string damped = "[";
+    for (int a = 4; a < argc; ++a) {
+        const double beta = std::atof(argv[a]);
+        double rate = -1e300, freq = 0;
+        for (Eigen::Index k = 0; k < modes; ++k) {
+            const std::complex<double> omega2 = eig.eigenvalues()[k], b = beta * omega2;
+            const std::complex<double> root = std::sqrt(b * b - 4.0 * omega2);
+            const std::complex<double> q =
+                -0.5 * (b + (std::real(std::conj(b) * root) >= 0 ? root : -root));
+            for (const std::complex<double> s : {q, omega2 / q})
+                if (s.real() > rate) {
+                    rate = s.real();
+                    freq = std::abs(s.imag()) / (2 * 3.141592653589793);
+                }
+        }
+        char item[128];
+        std::snprintf(item, sizeof item, "%s{\"beta\": %.6e, \"max_growth_rate\": %.6e, "
+                      "\"frequency_hz\": %.6e}", a > 4 ? ", " : "", beta, rate, freq);
+        damped += item;
+    }
+    damped += "]";
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("{\"nx\": %d, \"h\": %g, \"friction\": %g, \"mass_matrix\": %d, \"dofs\": %ld, "
                 "\"modes\": %ld, \"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
-                "\"min_real_omega2\": %.6e, \"seconds\": %.2f}\n",
+                "\"min_real_omega2\": %.6e, \"seconds\": %.2f, \"damped\": %s}\n",
                 p.nx, p.width / p.nx, F, static_cast<int>(p.mass_matrix), static_cast<long>(n),
-                static_cast<long>(modes), growth, frequency, growing, min_real, seconds);
+                static_cast<long>(modes), growth, frequency, growing, min_real, seconds,
+                damped.c_str());
     return 0;
 }

@@ -1,0 +1,103 @@
+"""Stability map of steady sliding with Rayleigh damping C = beta A (issue 10, item 3): the
+largest growth rate of the linearized semi-discrete problem over F x beta, for h = 2, 1, 0.5
+and 0.25 cm (redistributed_normal, the paper's scene). build/sliding_stability computes the
+undamped eigenvalues once per (h, F); the damped rates follow exactly from them (see the top
+of sliding_stability.cpp), so the beta axis costs nothing.
+
+Writes OUT/damped_stability.png, .json and .md (the table of the smallest stabilizing beta).
+
+    .venv/bin/python examples/damped_stability.py [--finest NX] [--out DIR]
+"""
+import argparse
+import concurrent.futures
+import json
+import pathlib
+import subprocess
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+PROGRAM = ROOT / "build" / "sliding_stability"
+BETAS = np.linspace(0, 1e-5, 101)
+
+
+def analyse(nx, friction, variant=1):
+    out = subprocess.run([str(PROGRAM), str(nx), repr(friction), str(variant),
+                          *(repr(float(b)) for b in BETAS)],
+                         check=True, capture_output=True, text=True).stdout
+    r = json.loads(out)
+    return {"nx": nx, "h": r["h"], "friction": friction, "seconds": r["seconds"],
+            "growth": [d["max_growth_rate"] for d in r["damped"]]}
+
+
+def critical_beta(growth):
+    """Smallest beta of the grid from which every larger one is stable (None if none)."""
+    stable = np.asarray(growth) < 0
+    if not stable[-1]:
+        return None
+    k = len(stable) - 1
+    while k > 0 and stable[k - 1]:
+        k -= 1
+    return float(BETAS[k])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--finest", type=int, default=40, help="finest nx (dense eigenvalues)")
+    parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    frictions = {n: np.round(np.arange(0, 2.0001, 0.1), 2) for n in (5, 10, 20)}
+    # nx = 40 (3239 dofs) takes about 2 min per F: a coarser F axis there.
+    frictions[40] = np.round(np.arange(0, 2.0001, 0.25), 2)
+    jobs = [(nx, float(F)) for nx in frictions if nx <= args.finest for F in frictions[nx]]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        rows = list(pool.map(lambda job: analyse(*job), jobs))
+    for r in rows:
+        r["critical_beta"] = critical_beta(r["growth"])
+    (args.out / "damped_stability.json").write_text(
+        json.dumps({"betas": BETAS.tolist(), "rows": rows}, indent=1))
+
+    sizes = sorted({r["nx"] for r in rows})
+    lines = ["Smallest stabilizing beta [s] (grid step 1e-7; '-' = unstable up to 1e-5 s), "
+             "redistributed_normal, alpha = 0:", "",
+             "| F | " + " | ".join(f"h = {100 * 0.1 / n:g} cm" for n in sizes) + " |",
+             "|---|" + "---|" * len(sizes)]
+    for F in frictions[5]:
+        cells = []
+        for n in sizes:
+            match = [r for r in rows if r["nx"] == n and r["friction"] == F]
+            if not match:
+                cells.append("")
+                continue
+            cb = match[0]["critical_beta"]
+            cells.append("-" if cb is None else f"{cb:.1e}")
+        lines.append(f"| {F:g} | " + " | ".join(cells) + " |")
+    table = "\n".join(lines)
+    (args.out / "damped_stability.md").write_text(table + "\n")
+    print(table)
+
+    fig, axes = plt.subplots(1, len(sizes), figsize=(3.6 * len(sizes), 3.6), sharey=True)
+    for ax, n in zip(np.atleast_1d(axes), sizes):
+        sel = sorted((r for r in rows if r["nx"] == n), key=lambda r: r["friction"])
+        F = [r["friction"] for r in sel]
+        g = np.array([r["growth"] for r in sel]).T  # beta x F
+        level = np.sign(g) * np.log10(1 + np.abs(g))
+        mesh = ax.pcolormesh(F, BETAS * 1e6, level, cmap="RdBu_r", vmin=-5, vmax=5,
+                             shading="nearest")
+        ax.contour(F, BETAS * 1e6, g, levels=[0], colors="k", linewidths=1.5)
+        ax.set_title(f"h = {100 * 0.1 / n:g} cm")
+        ax.set_xlabel("F")
+    np.atleast_1d(axes)[0].set_ylabel("β [µs]")
+    fig.colorbar(mesh, ax=axes, label="sign(Re s)·log10(1 + |Re s|), Re s in 1/s")
+    fig.suptitle("Damped steady sliding: largest growth rate (black: Re s = 0; blue: stable)")
+    fig.savefig(args.out / "damped_stability.png", dpi=110, bbox_inches="tight")
+    print(f"\nwrote {args.out / 'damped_stability.png'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,6 +1,6 @@
 // Cost of one midpoint substep on the paper scene against its floor, one bare sparse solve
 // with the same Cholesky factor, measured in the same run. Prints one JSON object.
-//   bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP_DISPLACEMENT]
+//   bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP_DISPLACEMENT] [BETA] [ALPHA]
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,7 +16,8 @@ using namespace bench;
 
 int main(int argc, char** argv) {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP]\n");
+        std::fprintf(stderr,
+                     "usage: bench_substep NX DT SUBSTEPS [FRICTION] [MASS_MATRIX] [TOP] [BETA] [ALPHA]\n");
         return 2;
     }
     SceneParameters p = paper_scene(argv);
@@ -25,6 +26,8 @@ int main(int argc, char** argv) {
     if (argc > 4) p.friction_coefficient = std::atof(argv[4]);
     if (argc > 5) p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[5]));
     const double top = argc > 6 ? std::atof(argv[6]) : -2.5e-5;  // > 0 lifts the body off
+    if (argc > 7) p.damping_stiffness = std::atof(argv[7]);  // Rayleigh damping C = alpha M + beta A
+    if (argc > 8) p.damping_mass = std::atof(argv[8]);
 
     auto t0 = Clock::now();
     Stepper stepper(p);
@@ -40,7 +43,8 @@ int main(int argc, char** argv) {
     // The floor: one solve (forward + backward) with the same factor; and, to show what the
     // constrained ordering costs, one solve with CHOLMOD's own unconstrained choice.
     const Discretization& d = stepper.discretization();
-    const SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
+    SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
+    if (p.damped()) K += (2.0 / dt) * d.C_free;
     TrailingCholesky factor(K, d.contact_unknowns());
     Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> unconstrained(K);
     Eigen::VectorXd rhs = Eigen::VectorXd::Random(K.rows()), x(K.rows());

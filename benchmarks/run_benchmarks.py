@@ -27,9 +27,10 @@ BENCH_STEP_SIZES = ROOT / "build" / "bench_step_sizes"
 OUT = ROOT / "benchmarks" / "results"
 
 
-def bench(nx, dt, substeps, friction=1.2, mass_matrix=1, top=-2.5e-5):
+def bench(nx, dt, substeps, friction=1.2, mass_matrix=1, top=-2.5e-5, beta=0.0, alpha=0.0):
     out = subprocess.run([str(BENCH), str(nx), repr(dt), str(substeps), repr(friction),
-                          str(mass_matrix), repr(top)], capture_output=True, text=True, check=True)
+                          str(mass_matrix), repr(top), repr(beta), repr(alpha)],
+                         capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
 
 
@@ -62,6 +63,15 @@ def main():
         "body lifted off (no contact solve)": bench(40, 2e-6, int(scale * 1000) or 100, top=2.5e-5),
         "tiny mesh nx = 4 (sparse path)": bench(4, 2e-5, int(scale * 20000) or 100),
     }
+    # Rayleigh damping: two more sparse products per substep (C u^k in the right-hand side,
+    # C (u^{k+1} - u^k) for damping_work), no extra solve. Same scene with and without it.
+    damping = {}
+    for nx, dt in ((40, 2e-6), (80, 1e-6)):
+        n = max(100, int(scale * 40000 / nx))
+        damping[nx] = {name: bench(nx, dt, n, friction=0.3, beta=beta, alpha=alpha)
+                       for name, beta, alpha in (("undamped", 0.0, 0.0),
+                                                 ("beta = 4e-6 s", 4e-6, 0.0),
+                                                 ("alpha = 50 /s, beta = 4e-6 s", 4e-6, 50.0))}
 
     # The factor cache: a master alternating two step sizes against one whose size changes
     # every step (every step refactors), same steps and substeps.
@@ -123,6 +133,15 @@ def main():
     for name, r in savings.items():
         lines.append(f"| {name} | {r['per_substep']*1e6:.1f} | {r['ratio']:.2f} "
                      f"| {r['split_contact']*1e6:.1f} | {r['contact_solve_fraction']:.2f} |")
+    lines += ["", "## Rayleigh damping cost per substep (F = 0.3, same scene with and without)",
+              "", "| nx | dt [s] | damping | substep [us] | ratio to undamped | update [us] "
+              "| ratio to its floor | Newton it./substep |", "|---|---|---|---|---|---|---|---|"]
+    for nx, by_name in damping.items():
+        base = by_name["undamped"]["per_substep"]
+        for name, r in by_name.items():
+            lines.append(f"| {nx} | {r['dt']:g} | {name} | {r['per_substep'] * 1e6:.1f} "
+                         f"| {r['per_substep'] / base:.3f} | {r['split_update'] * 1e6:.1f} "
+                         f"| {r['ratio']:.2f} | {r['contact_iterations']:.2f} |")
     r = savings["F = 1.2 (tangential unknowns)"]
     lines += ["", "## Energies only for outputs (nx = 40)", "",
               "| one energy evaluation [us] | substep [us] | share if computed every substep "
@@ -162,7 +181,7 @@ def main():
               f"| {field_cost[0]:.3f} | {field_cost[1]:.3f} | {field_cost[1] / field_cost[0]:.2f} "
               f"| {(field_cost[1] - field_cost[0]) / 201 * 1e3:.2f} |"]
     (OUT / "substep.md").write_text("\n".join(lines) + "\n")
-    (OUT / "substep.json").write_text(json.dumps({"rows": rows, "savings": savings,
+    (OUT / "substep.json").write_text(json.dumps({"rows": rows, "savings": savings, "damping": damping,
                                                   "reference_run": reference,
                                                   "step_sizes": step_sizes,
                                                   "iterative": iterative,

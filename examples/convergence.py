@@ -7,9 +7,12 @@ The error at each output time is u_ref - u_h on the reference mesh (the meshes n
 exactly a fine P1 field); reported: the maximum over time of its L2(Omega) norm and H1(Omega)
 seminorm, and the observed orders log2(e(2h) / e(h)).
 
-Writes examples/output/convergence.md, convergence.json, figure_9.png.
+Writes examples/output/convergence.md, convergence.json, figure_9.png; with
+--damping-stiffness BETA (Rayleigh damping C = beta A, the damping issue's stable sliding)
+convergence_damped.md, .json and figure_9_damped.png.
 
     .venv/bin/python examples/convergence.py [--friction 1.2 0 0.2] [--keep-fields]
+    .venv/bin/python examples/convergence.py --friction 0.3 --damping-stiffness 4e-6
 """
 import argparse
 import json
@@ -31,10 +34,11 @@ from scene import OUT, REFERENCE, TABLE2, WIDTH, cells, simulate  # noqa: E402
 STOP, INTERVAL = 5.12e-3, 1.6e-4
 
 
-def run_one(h, dt, friction, directory):
+def run_one(h, dt, friction, directory, beta=0.0):
     n = cells(h)
     _, wall = simulate(STOP, INTERVAL, nx=n, ny=n, internal_step=dt, mass_matrix=1,
-                       friction_coefficient=friction, result_directory=str(directory),
+                       friction_coefficient=friction, damping_stiffness=beta,
+                       result_directory=str(directory),
                        field_output_interval=INTERVAL, outputs=["energy"])
     return wall
 
@@ -60,21 +64,27 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--friction", type=float, nargs="+", default=[1.2, 0.0, 0.2])
     parser.add_argument("--keep-fields", action="store_true")
-    parser.add_argument("--single", nargs=3, type=float, help=argparse.SUPPRESS)
+    parser.add_argument("--damping-stiffness", type=float, default=0.0, metavar="BETA",
+                        help="Rayleigh damping beta [s] (C = beta A) for every run")
+    parser.add_argument("--single", nargs=4, type=float, help=argparse.SUPPRESS)
     parser.add_argument("--directory", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.single:  # one run in its own process, so that its peak memory can be measured
-        print(json.dumps({"wall": run_one(*args.single, args.directory)}))
+        h, dt, friction, beta = args.single
+        print(json.dumps({"wall": run_one(h, dt, friction, args.directory, beta)}))
         return
 
-    base = OUT / "convergence_fields"
+    beta = args.damping_stiffness
+    tag = "_damped" if beta > 0 else ""
+    base = OUT / f"convergence_fields{tag}"
     report = {}
     for friction in args.friction:
         ref_dir = base / f"F{friction:g}" / "reference"
         shutil.rmtree(ref_dir, ignore_errors=True)
         start = time.perf_counter()
         out = subprocess.run([sys.executable, __file__, "--single", str(REFERENCE[0]),
-                              str(REFERENCE[1]), str(friction), "--directory", str(ref_dir)],
+                              str(REFERENCE[1]), str(friction), repr(beta),
+                              "--directory", str(ref_dir)],
                              capture_output=True, text=True, check=True)
         wall_process = time.perf_counter() - start
         peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
@@ -82,7 +92,7 @@ def main():
         for h, dt in TABLE2:
             run_dir = base / f"F{friction:g}" / f"h{h * 100:g}cm"
             shutil.rmtree(run_dir, ignore_errors=True)
-            wall = run_one(h, dt, friction, run_dir)
+            wall = run_one(h, dt, friction, run_dir, beta)
             l2, h1 = errors(ref_dir, run_dir, cells(h))
             rows.append({"h": h, "dt": dt, "l2": l2, "h1": h1, "wall": wall})
             print(f"F = {friction:g}  h = {h * 100:g} cm  dt = {dt:g}: max L2 = {l2:.3e} m^2, "
@@ -97,8 +107,10 @@ def main():
         if not args.keep_fields:
             shutil.rmtree(base / f"F{friction:g}", ignore_errors=True)
 
-    lines = ["# Convergence test (Table 2 / Fig. 9), redistributed_normal, errors against the "
-             "reference h = 0.0625 cm, dt = 5e-7, max over t in [0, 5.12 ms]", ""]
+    damping = f", Rayleigh damping beta = {beta:g} s" if beta > 0 else ""
+    lines = ["# Convergence test (Table 2 / Fig. 9), redistributed_normal" + damping +
+             ", errors against the reference h = 0.0625 cm, dt = 5e-7, max over t in "
+             "[0, 5.12 ms]", ""]
     for friction, r in report.items():
         ref = r["reference"]
         lines += [f"## F = {friction}", "",
@@ -115,8 +127,9 @@ def main():
                          f"| {row['h1']:.3e} | {o1} | {row['wall']:.2f} |")
             prev = row
         lines.append("")
-    (OUT / "convergence.md").write_text("\n".join(lines))
-    (OUT / "convergence.json").write_text(json.dumps(report, indent=1))
+    (OUT / f"convergence{tag}.md").write_text("\n".join(lines))
+    (OUT / f"convergence{tag}.json").write_text(json.dumps({"damping_stiffness": beta, **report},
+                                                          indent=1))
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     for friction, r in report.items():
@@ -128,9 +141,10 @@ def main():
         ax.set_ylabel(name)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend()
-    fig.suptitle("Fig. 9: convergence against the reference (h = 0.0625 cm, dt = 5e-7 s)")
+    fig.suptitle("Fig. 9: convergence against the reference (h = 0.0625 cm, dt = 5e-7 s)"
+                 + damping)
     fig.tight_layout()
-    fig.savefig(OUT / "figure_9.png", dpi=110)
+    fig.savefig(OUT / f"figure_9{tag}.png", dpi=110)
     print("\n".join(lines))
 
 

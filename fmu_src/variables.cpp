@@ -33,7 +33,7 @@ const std::vector<Variable> table = {
     {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, false, ACCESS_REAL(lambda)},
     {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 0, inf, true, ACCESS_REAL(mu)},
     {"friction_coefficient", 8, T::Real, C::parameter, V::tunable, "", "Coulomb friction coefficient F", 1.2, 0, inf, false, ACCESS_REAL(friction_coefficient)},
-    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, 3, false, ACCESS_INT(mass_matrix)},
+    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, num_mass_variants - 1, false, ACCESS_INT(mass_matrix)},
     {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 0, inf, true, ACCESS_REAL(internal_step)},
     {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve", 1e-10, 0, 1, true, ACCESS_REAL(contact_tolerance)},
     {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},
@@ -143,7 +143,8 @@ Values start_values() {
 
 const std::vector<std::string>& mass_matrix_items() {
     static const std::vector<std::string> items = {
-        "standard", "redistributed_normal", "redistributed_both", "standard_implicit_contact"};
+        "standard", "redistributed_normal", "redistributed_both", "standard_implicit_contact",
+        "redistributed_end_contact"};
     return items;
 }
 

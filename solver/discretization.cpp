@@ -29,6 +29,13 @@ SparseMatrix selector(const std::vector<int>& rows, int n) {
 
 }  // namespace
 
+bool redistributes_normal(MassVariant v) {
+    return v == MassVariant::redistributed_normal || v == MassVariant::redistributed_both ||
+           v == MassVariant::redistributed_end_contact;
+}
+
+bool contact_at_end_of_step(MassVariant v) { return v == MassVariant::standard_implicit_contact; }
+
 void check_parameters(const SceneParameters& p) {
     require_positive("width", p.width);
     require_positive("height", p.height);
@@ -45,10 +52,9 @@ void check_parameters(const SceneParameters& p) {
     if (!(std::isfinite(p.friction_coefficient) && p.friction_coefficient >= 0))
         reject("friction_coefficient", "finite and >= 0", p.friction_coefficient);
     const int variant = static_cast<int>(p.mass_matrix);
-    if (variant < 0 || variant > 3) reject("mass_matrix", "0, 1, 2 or 3", variant);
-    if ((p.mass_matrix == MassVariant::redistributed_normal ||
-         p.mass_matrix == MassVariant::redistributed_both) &&
-        p.ny < 2)
+    if (variant < 0 || variant >= num_mass_variants)
+        reject("mass_matrix", "0, 1, 2, 3 or 4", variant);
+    if (redistributes_normal(p.mass_matrix) && p.ny < 2)
         reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
     require_positive("internal_step", p.internal_step);
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
@@ -59,6 +65,12 @@ void check_parameters(const SceneParameters& p) {
         reject("damping_mass", "finite and >= 0", p.damping_mass);
     if (!(std::isfinite(p.damping_stiffness) && p.damping_stiffness >= 0))
         reject("damping_stiffness", "finite and >= 0", p.damping_stiffness);
+    if (p.mass_matrix == MassVariant::redistributed_end_contact && p.damping_stiffness != 0)
+        reject("damping_stiffness",
+               "0 with mass_matrix = 4 (redistributed_end_contact: its massless normal dofs "
+               "must stay in static balance; use damping_mass, or mass_matrix = 1 for "
+               "stiffness damping)",
+               p.damping_stiffness);
 }
 
 Discretization discretize(const SceneParameters& p) {
@@ -69,19 +81,14 @@ Discretization discretize(const SceneParameters& p) {
 
     const SparseMatrix scalar = scalar_mass_matrix(d.mesh, p.density);
     SparseMatrix redistributed;
-    if (p.mass_matrix == MassVariant::redistributed_normal ||
-        p.mass_matrix == MassVariant::redistributed_both)
-        redistributed = redistributed_mass(d.mesh, scalar);
-    switch (p.mass_matrix) {
-        case MassVariant::redistributed_normal:
-            d.M = vector_mass_matrix(scalar, redistributed);
-            break;
-        case MassVariant::redistributed_both:
-            d.M = vector_mass_matrix(redistributed, redistributed);
-            break;
-        default:
-            d.M = vector_mass_matrix(scalar, scalar);
-    }
+    if (redistributes_normal(p.mass_matrix)) redistributed = redistributed_mass(d.mesh, scalar);
+    if (p.mass_matrix == MassVariant::redistributed_both)
+        d.M = vector_mass_matrix(redistributed, redistributed);
+    else if (redistributes_normal(p.mass_matrix))
+        d.M = vector_mass_matrix(scalar, redistributed);
+    else
+        d.M = vector_mass_matrix(scalar, scalar);
+    d.contact_at_end_of_step = contact_at_end_of_step(p.mass_matrix);
 
     const int n = d.mesh.num_dofs();
     std::vector<char> clamped(n, 0);
@@ -112,6 +119,16 @@ Discretization discretize(const SceneParameters& p) {
     for (int node : d.mesh.contact_nodes) {
         d.contact_x.push_back(d.free_index[dof_x(node)]);
         d.contact_y.push_back(d.free_index[dof_y(node)]);
+    }
+    d.quasi_static_normals = p.mass_matrix == MassVariant::redistributed_end_contact;
+    if (d.quasi_static_normals) {
+        std::vector<int> rows;
+        for (int node : d.mesh.contact_nodes) rows.push_back(dof_y(node));
+        const SparseMatrix Pp = selector(rows, n);
+        d.normals.A_rows = Pp * d.A;
+        const Eigen::MatrixXd A_pp(d.normals.A_rows * SparseMatrix(Pp.transpose()));
+        d.normals.A_pp_inverse = A_pp.llt().solve(
+            Eigen::MatrixXd::Identity(A_pp.rows(), A_pp.cols()));
     }
     return d;
 }

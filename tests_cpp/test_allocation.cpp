@@ -67,7 +67,7 @@ TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
-                         ::testing::Combine(::testing::Values(0, 1, 2, 3),
+                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
                                             ::testing::Values(1.2, 0.0),
                                             ::testing::Bool()));
 

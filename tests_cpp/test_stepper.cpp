@@ -59,7 +59,7 @@ TEST_P(ContactLaw, HoldsAtEverySubstep) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, ContactLaw,
-                         ::testing::Combine(::testing::Values(0, 1, 2, 3),
+                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
                                             ::testing::Values(1.2, 0.2, 0.0)));
 
 TEST(Simulation, FailedContactSolveRestoresTheStepStart) {

@@ -1,0 +1,90 @@
+"""Without friction (issue 12): where the paper's midpoint contact gains energy, the energy
+comes in as work of the normal contact forces, and redistributed_implicit_contact (mass_matrix
+= 4: M_r, contact at the end of the step) cannot gain any."""
+import fmpy
+import numpy as np
+import pytest
+
+from conftest import Instance
+
+MU = 150e6
+OUT = ["energy", "normal_contact_work", "clamp_work", "kinetic_energy", "max_penetration"]
+
+
+def frictionless(fmu_path, variant, ratio, dt, stop):
+    return fmpy.simulate_fmu(fmu_path, stop_time=stop, output_interval=dt * round(1e-4 / dt),
+                             start_values={"friction_coefficient": 0.0, "lambda": ratio * MU,
+                                           "mass_matrix": variant, "internal_step": dt},
+                             output=OUT)
+
+
+def test_the_paper_scheme_gains_energy_through_the_normal_contact_work(fmu_path):
+    """lambda/mu = 10, dt = 4e-6: E grows by orders of magnitude, the kinetic energy with it,
+    and all of E - E(0) is the work of the normal contact forces."""
+    r = frictionless(fmu_path, 1, 10, 4e-6, 0.02)
+    e = r["energy"]
+    assert e.max() > 20 * e[0] and r["kinetic_energy"].max() > 10 * e[0]
+    assert np.all(r["clamp_work"] == 0)
+    np.testing.assert_allclose(e - e[0], r["normal_contact_work"], rtol=0, atol=1e-9 * e.max())
+    # It enters where the midpoint leaves the integer steps penetrating: lambda_N acts on
+    # u^{k+1/2} = gap while u_N^k > gap, so lambda_N (u_N^{k+1} - u_N^k) > 0.
+    assert r["max_penetration"].max() > 1e-5
+
+
+@pytest.mark.parametrize("ratio", [2, 4, 10, 50])
+@pytest.mark.parametrize("dt", [1e-6, 4e-6, 1.6e-5])
+def test_implicit_contact_with_redistributed_mass_never_gains_energy(fmu_path, ratio, dt):
+    """F = 0, top held, 0.05 s: E never exceeds E(0) by more than 1 %, and E does not grow
+    from one output to the next beyond round-off (the normal contact work only decreases)."""
+    r = frictionless(fmu_path, 4, ratio, dt, 0.05)
+    e, w = r["energy"], r["normal_contact_work"]
+    assert abs(r["time"][-1] - 0.05) < 1e-9 and np.isfinite(e).all()
+    assert e.max() <= 1.01 * e[0]
+    assert np.all(np.diff(e) <= 1e-12 * e[0])
+    assert np.all(np.diff(w) <= 1e-12 * e[0])
+    assert r["max_penetration"].max() <= 1e-15  # contact holds at the integer steps
+
+
+def stress_scene(model_description, unzipped, vr, variant, stop=0.026, h=2.12e-5):
+    """The issue's random stress scene: 39 x 14 cells, initial gap, top held at -1.07e-5 m
+    for 0.01 s, then ramped with input derivatives to +2.7e-5 m (tension) over 0.01 s."""
+    inst = Instance(model_description, unzipped, "stress")
+    try:
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.setInteger([vr["nx"], vr["ny"], vr["mass_matrix"]], [39, 14, variant])
+        names = ["width", "height", "density", "mu", "lambda", "initial_gap",
+                 "friction_coefficient", "internal_step", "top_displacement"]
+        inst.setReal([vr[n] for n in names],
+                     [0.0534, 0.0297, 200, 6.8e8, 2.79e9, 2.57e-6, 0.0, 2.12e-6, -1.07e-5])
+        inst.exitInitializationMode()
+        refs = [vr[n] for n in ("energy", "clamp_work", "normal_contact_work")]
+        e0 = inst.getReal(refs)[0]
+        rows = []
+        for k in range(round(stop / h)):
+            t = k * h
+            if abs(t - 0.01) < h / 2:
+                inst.setRealInputDerivatives([vr["top_displacement"]], [1], [3.77e-5 / 0.01])
+            if abs(t - 0.02) < h / 2:
+                inst.setReal([vr["top_displacement"]], [2.7e-5])  # held from here on
+            inst.doStep(t, h)
+            rows.append(inst.getReal(refs))
+        return e0, np.array(rows)
+    finally:
+        inst.close()
+
+
+def test_stress_scene_stays_bounded_with_the_stable_scheme(model_description, unzipped, vr):
+    e0, rows = stress_scene(model_description, unzipped, vr, 4)
+    energy, clamp, normal = rows.T
+    assert np.isfinite(rows).all()
+    # Everything that entered came through the clamp; contact only took energy out.
+    assert np.all(normal <= 1e-12 * e0) and np.all(np.diff(normal) <= 1e-12 * e0)
+    assert np.all(energy <= e0 + clamp + 1e-9 * np.abs(energy).max())
+    assert energy.max() < 10 * (e0 + np.abs(clamp).max())
+
+
+def test_stress_scene_blows_up_with_the_paper_scheme(model_description, unzipped, vr):
+    """The contrast: the same scene with redistributed_normal gains orders of magnitude."""
+    e0, rows = stress_scene(model_description, unzipped, vr, 1, stop=0.01)
+    assert rows[-1, 0] > 1e3 * e0 and rows[-1, 2] > 0.99 * (rows[-1, 0] - e0)

@@ -9,7 +9,7 @@ contact work at the end relative to E(0). A cell "blows up" when max E > 10 E(0)
 
 Writes OUT/frictionless_stability.png, .json and .md.
 
-    .venv/bin/python examples/frictionless_stability.py [--stop 0.02] [--out DIR]
+    .venv/bin/python examples/frictionless_stability.py [--stop 0.02] [--out DIR] [--fmu FMU]
 """
 import argparse
 import json
@@ -22,22 +22,22 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from scene import ROOT, simulate  # noqa: E402
+from scene import FMU, ROOT, simulate  # noqa: E402
 
 VARIANTS = ["standard", "redistributed_normal", "redistributed_both",
-            "standard_implicit_contact", "redistributed_end_contact"]
+            "standard_implicit_contact", "redistributed_implicit_contact"]
 RATIOS = [0.0, 2.0, 5.0, 10.0, 20.0, 50.0]  # lambda / mu
 COURANT = [0.1, 0.3, 1.0, 3.0, 10.0, 20.0]  # c_p dt / h
 MU, RHO, H = 150e6, 1000.0, 0.005  # the paper's mu and rho, h = 0.5 cm (nx = ny = 20)
 
 
-def run(variant, ratio, courant, stop):
+def run(variant, ratio, courant, stop, fmu=FMU):
     c_p = math.sqrt((ratio + 2) * MU / RHO)
     dt = courant * H / c_p
     # Outputs every whole number of substeps near 1e-4 s, so that every substep is exactly dt.
     interval = dt * max(1, round(1e-4 / dt))
     stop = interval * math.ceil(stop / interval - 1e-9)
-    r, wall = simulate(stop, interval, outputs=["energy", "normal_contact_work"],
+    r, wall = simulate(stop, interval, fmu=fmu, outputs=["energy", "normal_contact_work"],
                        friction_coefficient=0.0, mass_matrix=variant, **{"lambda": ratio * MU},
                        internal_step=dt)
     e = r["energy"]
@@ -53,6 +53,7 @@ def run(variant, ratio, courant, stop):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stop", type=float, default=0.02)
+    parser.add_argument("--fmu", type=pathlib.Path, default=FMU)
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
@@ -60,7 +61,7 @@ def main():
     for v in range(len(VARIANTS)):
         for ratio in RATIOS:
             for c in COURANT:
-                rows.append(run(v, ratio, c, args.stop))
+                rows.append(run(v, ratio, c, args.stop, args.fmu))
                 print(json.dumps(rows[-1]), flush=True)
     (args.out / "frictionless_stability.json").write_text(json.dumps(rows, indent=1))
 

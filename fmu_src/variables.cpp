@@ -144,7 +144,7 @@ Values start_values() {
 const std::vector<std::string>& mass_matrix_items() {
     static const std::vector<std::string> items = {
         "standard", "redistributed_normal", "redistributed_both", "standard_implicit_contact",
-        "redistributed_end_contact"};
+        "redistributed_implicit_contact"};
     return items;
 }
 

@@ -76,7 +76,7 @@ def test_variables_follow_spec(model_description):
     assert variables["mass_matrix"].type == "Enumeration"
     items = [i.name for i in variables["mass_matrix"].declaredType.items]
     assert items == ["standard", "redistributed_normal", "redistributed_both",
-                     "standard_implicit_contact", "redistributed_end_contact"]
+                     "standard_implicit_contact", "redistributed_implicit_contact"]
     assert variables["foundation_velocity"].causality == "input"
     assert float(variables["foundation_velocity"].start) == 20
     assert float(variables["top_displacement"].start) == -2.5e-5

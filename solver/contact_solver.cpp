@@ -85,6 +85,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
     }
     if (!reuse) {
         reduced_.clear();
+        reduced_.reserve(static_cast<size_t>(m));  // once: no allocation when the set grows
         for (Eigen::Index i = 0; i < n; ++i)
             if (pattern_[i] != 0) reduced_.push_back(static_cast<int>(i));
         if (friction)

@@ -31,10 +31,13 @@ SparseMatrix selector(const std::vector<int>& rows, int n) {
 
 bool redistributes_normal(MassVariant v) {
     return v == MassVariant::redistributed_normal || v == MassVariant::redistributed_both ||
-           v == MassVariant::redistributed_end_contact;
+           v == MassVariant::redistributed_implicit_contact;
 }
 
-bool contact_at_end_of_step(MassVariant v) { return v == MassVariant::standard_implicit_contact; }
+bool contact_at_end_of_step(MassVariant v) {
+    return v == MassVariant::standard_implicit_contact ||
+           v == MassVariant::redistributed_implicit_contact;
+}
 
 void check_parameters(const SceneParameters& p) {
     require_positive("width", p.width);
@@ -65,12 +68,6 @@ void check_parameters(const SceneParameters& p) {
         reject("damping_mass", "finite and >= 0", p.damping_mass);
     if (!(std::isfinite(p.damping_stiffness) && p.damping_stiffness >= 0))
         reject("damping_stiffness", "finite and >= 0", p.damping_stiffness);
-    if (p.mass_matrix == MassVariant::redistributed_end_contact && p.damping_stiffness != 0)
-        reject("damping_stiffness",
-               "0 with mass_matrix = 4 (redistributed_end_contact: its massless normal dofs "
-               "must stay in static balance; use damping_mass, or mass_matrix = 1 for "
-               "stiffness damping)",
-               p.damping_stiffness);
 }
 
 Discretization discretize(const SceneParameters& p) {
@@ -119,16 +116,6 @@ Discretization discretize(const SceneParameters& p) {
     for (int node : d.mesh.contact_nodes) {
         d.contact_x.push_back(d.free_index[dof_x(node)]);
         d.contact_y.push_back(d.free_index[dof_y(node)]);
-    }
-    d.quasi_static_normals = p.mass_matrix == MassVariant::redistributed_end_contact;
-    if (d.quasi_static_normals) {
-        std::vector<int> rows;
-        for (int node : d.mesh.contact_nodes) rows.push_back(dof_y(node));
-        const SparseMatrix Pp = selector(rows, n);
-        d.normals.A_rows = Pp * d.A;
-        const Eigen::MatrixXd A_pp(d.normals.A_rows * SparseMatrix(Pp.transpose()));
-        d.normals.A_pp_inverse = A_pp.llt().solve(
-            Eigen::MatrixXd::Identity(A_pp.rows(), A_pp.cols()));
     }
     return d;
 }

@@ -3,44 +3,29 @@
 #pragma once
 
 #include <string>
-
-#include <Eigen/Dense>
 #include <vector>
 
 #include "assembly.hpp"
 
 namespace contactbody {
 
-// SPEC §2: the four situations of the paper's Fig. 7, and (4) redistributed_end_contact: the
-// redistributed normal mass with the unilateral condition at the end of the step, where the
-// massless normal dofs take their static values (see QuasiStaticNormals). It cannot gain
-// energy at contact; the paper's midpoint contact can, for near-incompressible materials.
+// SPEC §2: the four situations of the paper's Fig. 7, and (4) redistributed_implicit_contact:
+// the redistributed normal mass with contact at the end of the step, which cannot gain energy
+// at contact (the paper's midpoint contact can, for near-incompressible materials).
 enum class MassVariant : int {
     standard = 0,
     redistributed_normal = 1,
     redistributed_both = 2,
     standard_implicit_contact = 3,
-    redistributed_end_contact = 4,
+    redistributed_implicit_contact = 4,
 };
 constexpr int num_mass_variants = 5;
 
-// Whether the variant's y block is M_r, and whether it imposes contact on u^{k+1}, v^{k+1}
-// (standard_implicit_contact: the end-of-step values extrapolated by the midpoint rule).
+// Whether the variant's y block is M_r, and whether it imposes contact on u^{k+1}, v^{k+1}.
+// With contact at the end of the step the normal contact work lambda_N (u_N^{k+1} - u_N^k)
+// is lambda_N (gap - u_N^k) <= 0 at every active node: contact can only take energy out.
 bool redistributes_normal(MassVariant v);
 bool contact_at_end_of_step(MassVariant v);
-
-// redistributed_end_contact. The contact nodes' y dofs p carry no mass, so in every substep
-// they are in static balance: A_pp p + A_pq q = -lambda_N (q: all other dofs). Their values at
-// the end of the step are taken from that balance at q^{k+1} = 2 q^{k+1/2} - q^k, not
-// extrapolated. The unilateral condition on them, with s^k = A_pp^-1 A_p u^k + u_N^k, reads
-//   u_N^{k+1/2} - 1/2 A_pp^-1 lambda_N <= 1/2 (gap + s^k),
-// i.e. the midpoint problem with W_NN - 1/2 A_pp^-1 (still SPD) and a shifted gap. For F = 0,
-// an undamped body and a clamp at rest it makes E non-increasing: the condensed strain energy
-// is a quadratic plus a convex part whose gradient is taken at the end of the step.
-struct QuasiStaticNormals {
-    RowMajorSparseMatrix A_rows;        // A_p: the contact y dofs' rows of A, all columns
-    Eigen::MatrixXd A_pp_inverse;       // dense n_c x n_c
-};
 
 struct SceneParameters {
     double width = 0.1, height = 0.1;
@@ -66,8 +51,6 @@ void check_parameters(const SceneParameters& p);
 struct Discretization {
     Mesh mesh;
     bool contact_at_end_of_step = false;  // else on u^{k+1/2} (the paper's midpoint)
-    bool quasi_static_normals = false;    // redistributed_end_contact: uses `normals`
-    QuasiStaticNormals normals;
     SparseMatrix A;                 // all dofs
     SparseMatrix M;                 // the variant's mass matrix, all dofs
     std::vector<int> free_dofs;     // ascending

@@ -52,11 +52,6 @@ Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discret
     u_half_free_.resize(nf);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
     problem_.a.resize(2 * nc);
-    if (disc_.quasi_static_normals) {
-        for (Eigen::VectorXd* v : {&normals_force_, &normals_shift_, &normals_response_,
-                                   &normals_end_})
-            v->resize(nc);
-    }
     problem_.gap_limit.resize(nc);
     problem_.slip_origin.resize(nc);
 }
@@ -116,8 +111,6 @@ void Stepper::setup_contact_problem(const Factor& f) {
     const int nc = num_contact_nodes();
     const bool friction = params_.friction_coefficient > 0;
     problem_.W = friction ? f.delassus : Eigen::MatrixXd(f.delassus.topLeftCorner(nc, nc));
-    if (disc_.quasi_static_normals)  // the end-of-step condition (discretization.hpp)
-        problem_.W.topLeftCorner(nc, nc) -= 0.5 * disc_.normals.A_pp_inverse;
     problem_.a.resize(friction ? 2 * nc : nc);
     problem_.friction = params_.friction_coefficient;
     problem_.revision = ContactProblem::next_revision();
@@ -155,19 +148,13 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     const auto G = f.G.leftCols(unknowns);
     auto y_contact = y.tail(f.G.rows());
     problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
-    const bool implicit = d.contact_at_end_of_step, quasi_static = d.quasi_static_normals;
-    if (quasi_static) {  // s^k = A_pp^-1 A_p u^k + u_N^k
-        normals_force_.noalias() = d.normals.A_rows * s.u;
-        normals_shift_.noalias() = d.normals.A_pp_inverse * normals_force_;
-    }
+    const bool implicit = d.contact_at_end_of_step;
     bool touching = false;
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
         const double uN_old = -s.u[dof_y(node)];
-        if (quasi_static) normals_shift_[i] += uN_old;
-        problem_.gap_limit[i] = implicit       ? 0.5 * (params_.initial_gap + uN_old)
-                                : quasi_static ? 0.5 * (params_.initial_gap + normals_shift_[i])
-                                               : params_.initial_gap;
+        problem_.gap_limit[i] = implicit ? 0.5 * (params_.initial_gap + uN_old)
+                                         : params_.initial_gap;
         touching = touching || problem_.a[i] > problem_.gap_limit[i];
         if (friction) {
             const double ux_old = s.u[dof_x(node)], vx_old = s.v[dof_x(node)];
@@ -190,35 +177,10 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
 
     for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];
-    if (quasi_static) {
-        // End values of the massless normal dofs from their static balance at q^{k+1}:
-        // p^{k+1} = 2 p^{k+1/2} + A_pp^-1 lambda_N + s^k.
-        normals_response_.noalias() = d.normals.A_pp_inverse * s.lambda.head(nc);
-        for (int i = 0; i < nc; ++i)
-            normals_end_[i] = 2 * u_half_[dof_y(d.mesh.contact_nodes[i])] + normals_response_[i] +
-                              normals_shift_[i];
-    }
-    if (params_.damped() || quasi_static) {
+    if (params_.damped()) {
         du_ = 2 * (u_half_ - s.u);  // u^{k+1} - u^k on all dofs
-        if (quasi_static) {
-            // The strain energy changes by du^T A (u^k + u^{k+1})/2, the midpoint equation
-            // accounts for du^T A u^{k+1/2}: on p they differ by delta, and the difference,
-            // delta^T A_p du, is energy the contact takes out (<= 0 for F = 0, see above).
-            for (int i = 0; i < nc; ++i) {
-                const int y = dof_y(d.mesh.contact_nodes[i]);
-                du_[y] = normals_end_[i] - s.u[y];
-            }
-            normals_force_.noalias() = d.normals.A_rows * du_;
-            for (int i = 0; i < nc; ++i) {
-                const int y = dof_y(d.mesh.contact_nodes[i]);
-                report.work.normal_contact +=
-                    (0.5 * (s.u[y] + normals_end_[i]) - u_half_[y]) * normals_force_[i];
-            }
-        }
-        if (params_.damped()) {
-            C_du_.noalias() = d.C * du_;
-            report.work.damping = du_.dot(C_du_) / dt;
-        }
+        C_du_.noalias() = d.C * du_;
+        report.work.damping = du_.dot(C_du_) / dt;
     }
 
     // Force of the clamp on the body: the clamped rows' residual of the midpoint equation;
@@ -243,14 +205,11 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     else snapshot_.lambda_T.setZero();
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
-        // The constrained quantity: u_N^{k+1/2}, less 1/2 A_pp^-1 lambda_N for quasi_static.
-        snapshot_.normal_displacement[i] =
-            -u_half_[dof_y(node)] - (quasi_static ? 0.5 * normals_response_[i] : 0.0);
+        snapshot_.normal_displacement[i] = -u_half_[dof_y(node)];
         if (friction) snapshot_.slip[i] = u_half_[dof_x(node)] - problem_.slip_origin[i];
         const double lN = snapshot_.lambda_N[i], lT = snapshot_.lambda_T[i];
         const double ux_new = 2 * u_half_[dof_x(node)] - s.u[dof_x(node)];
-        const double uN_new = quasi_static ? -normals_end_[i]
-                                           : -(2 * u_half_[dof_y(node)] - s.u[dof_y(node)]);
+        const double uN_new = -(2 * u_half_[dof_y(node)] - s.u[dof_y(node)]);
         report.normal_force -= lN;
         report.friction_force += lT;
         const double dux = ux_new - s.u[dof_x(node)], uN_old = -s.u[dof_y(node)];
@@ -275,13 +234,6 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const double du = u_half_[dof] - s.u[dof];
         s.v[dof] = 2 * c2 * du - s.v[dof];
         s.u[dof] += 2 * du;
-    }
-    if (quasi_static) {  // massless: no velocity of their own; the step's mean one
-        for (int i = 0; i < nc; ++i) {
-            const int y = dof_y(d.mesh.contact_nodes[i]);
-            s.v[y] = du_[y] / dt;
-            s.u[y] = normals_end_[i];
-        }
     }
     for (int dof : d.clamped_dofs) {
         const bool y = dof % 2 == 1;

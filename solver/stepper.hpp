@@ -131,8 +131,6 @@ private:
     ContactSnapshot snapshot_;
     // Workspace, sized once.
     Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, du_, C_du_;
-    // redistributed_end_contact: A_p u^k, s^k, A_pp^-1 lambda_N, and the end values of p.
-    Eigen::VectorXd normals_force_, normals_shift_, normals_response_, normals_end_;
 };
 
 }  // namespace contactbody

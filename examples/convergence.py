@@ -43,17 +43,27 @@ def run_one(h, dt, friction, directory, beta=0.0):
     return wall
 
 
-def errors(reference_dir, run_dir, n):
+def snapshots(run_dir):
+    """(time, node points, displacement) of each file of a field output collection."""
+    out = []
+    for t, f in fields.read_collection(run_dir / "contactbody.pvd"):
+        points, _, data = fields.read_field(f)
+        out.append((t, points, data["displacement"][:, :2]))
+    return out
+
+
+def errors(reference_dir, run, n):
+    """Max over the output times of the L2 norm and H1 seminorm of u_ref - u_h on the
+    reference mesh; run is a field output directory or a list of snapshots (nx = ny = n)."""
+    if not isinstance(run, list):
+        run = snapshots(run)
     ref = fields.read_collection(reference_dir / "contactbody.pvd")
-    run = fields.read_collection(run_dir / "contactbody.pvd")
     assert len(ref) == len(run), (len(ref), len(run))
     l2, h1 = [], []
-    for (t_ref, f_ref), (t, f) in zip(ref, run):
+    for (t_ref, f_ref), (t, coarse_points, coarse) in zip(ref, run):
         assert abs(t_ref - t) < 1e-12, (t_ref, t)
         points, triangles, data = fields.read_field(f_ref)
-        coarse_points, _, coarse = fields.read_field(f)
-        u_h = fields.interpolate_nested(coarse_points, coarse["displacement"][:, :2], n, n,
-                                        WIDTH, WIDTH, points)
+        u_h = fields.interpolate_nested(coarse_points, coarse, n, n, WIDTH, WIDTH, points)
         e = data["displacement"][:, :2] - u_h
         l2.append(np.sqrt(fields.l2_squared(points, triangles, e)))
         h1.append(np.sqrt(fields.h1_squared(points, triangles, e)))

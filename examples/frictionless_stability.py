@@ -5,7 +5,10 @@ c_p dt / h, for each mass_matrix variant, through the FMU.
 With F = 0 and the clamp at rest, E - E(0) = normal_contact_work exactly (the energy balance of
 the FMU's outputs), so the growth is measured together with its cause: the work of the normal
 contact forces. Reported per cell: max E / E(0) over the run, E(end) / E(0), and the normal
-contact work at the end relative to E(0). A cell "blows up" when max E > 10 E(0).
+contact work at the end relative to E(0), and max kinetic energy / E(0): the paper's scheme
+extrapolates the massless normal dofs to the integer steps (2 u^{k+1/2} - u^k), which do not
+feed back into its motion, so growth in E with a bounded kinetic energy is in those values
+only, while growth of the kinetic energy is growth of the motion.
 
 Writes OUT/frictionless_stability.png, .json and .md.
 
@@ -37,7 +40,7 @@ def run(variant, ratio, courant, stop, fmu=FMU):
     # Outputs every whole number of substeps near 1e-4 s, so that every substep is exactly dt.
     interval = dt * max(1, round(1e-4 / dt))
     stop = interval * math.ceil(stop / interval - 1e-9)
-    r, wall = simulate(stop, interval, fmu=fmu, outputs=["energy", "normal_contact_work"],
+    r, wall = simulate(stop, interval, fmu=fmu, outputs=["energy", "normal_contact_work", "kinetic_energy"],
                        friction_coefficient=0.0, mass_matrix=variant, **{"lambda": ratio * MU},
                        internal_step=dt)
     e = r["energy"]
@@ -46,6 +49,7 @@ def run(variant, ratio, courant, stop, fmu=FMU):
             "completed": bool(abs(r["time"][-1] - stop) < 1e-9 and finite.all()),
             "E0": float(e[0]), "max_E_ratio": float(np.nanmax(e) / e[0]),
             "end_E_ratio": float(e[-1] / e[0]),
+            "max_kinetic_ratio": float(np.nanmax(r["kinetic_energy"]) / e[0]),
             "normal_contact_work_ratio": float(r["normal_contact_work"][-1] / e[0]),
             "wall": wall}
 
@@ -66,7 +70,7 @@ def main():
     (args.out / "frictionless_stability.json").write_text(json.dumps(rows, indent=1))
 
     lines = [f"max E / E(0) over {args.stop:g} s, F = 0, top held (E should stay at E(0)); "
-             "in brackets E(end) / E(0)", ""]
+             "in brackets E(end) / E(0), then max kinetic energy / E(0)", ""]
     for v, name in enumerate(VARIANTS):
         lines += [f"### {name} (mass_matrix = {v})", "",
                   "| λ/μ \\ c_p Δt / h | " + " | ".join(f"{c:g}" for c in COURANT) + " |",
@@ -76,7 +80,8 @@ def main():
             for c in COURANT:
                 r = next(r for r in rows if r["variant"] == v and r["lambda_over_mu"] == ratio
                          and r["courant"] == c)
-                cells.append(f"{r['max_E_ratio']:.3g} ({r['end_E_ratio']:.2g})"
+                cells.append(f"{r['max_E_ratio']:.3g} ({r['end_E_ratio']:.2g}), "
+                             f"{r['max_kinetic_ratio']:.2g}"
                              if r["completed"] else "failed")
             lines.append(f"| {ratio:g} | " + " | ".join(cells) + " |")
         lines.append("")

@@ -90,6 +90,17 @@ def test_energy_balance_closes(model_description, unzipped, vr, variant, inputs,
         assert all(o["clamp_work"] == 0 for o in rows)
 
 
+def test_foundation_work_is_the_power_bond_of_a_held_velocity(fmu_path):
+    """With V held over each step, foundation_work grows by V * friction_force * h per step."""
+    r = fmpy.simulate_fmu(fmu_path, stop_time=2e-3, output_interval=1e-4,
+                          start_values={"nx": 10, "ny": 10, "friction_coefficient": 0.3,
+                                        "damping_stiffness": 4e-6},
+                          output=["foundation_work", "friction_force"])
+    power = np.diff(r["foundation_work"]) / 1e-4
+    assert np.abs(r["friction_force"][1:]).min() > 100  # the bond carries power
+    np.testing.assert_allclose(power, 20 * r["friction_force"][1:], rtol=1e-10)
+
+
 def test_damping_bounds_the_sliding_scene_as_an_independent_implementation_does(fmu_path):
     """Default scene at F = 0.3, beta = 4e-6 s, 0.02 s, h = 1 cm: the independent
     implementation's max E is 0.392 J/m (undamped it runs away)."""

@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev patchelf
-          libgtest-dev valgrind python3 python3-venv python3-dev)
+          libgtest-dev valgrind python3 python3-venv python3-dev
+          python3-getfem)  # the work-precision benchmark's GetFEM series and its test
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -52,19 +52,29 @@ def snapshots(run_dir):
     return out
 
 
-def errors(reference_dir, run, n):
+def reference_fields(reference_dir):
+    """(time, points, triangles, displacement) of each reference file, read once."""
+    out = []
+    for t, f in fields.read_collection(reference_dir / "contactbody.pvd"):
+        points, triangles, data = fields.read_field(f)
+        out.append((t, points, triangles, data["displacement"][:, :2]))
+    return out
+
+
+def errors(reference, run, n):
     """Max over the output times of the L2 norm and H1 seminorm of u_ref - u_h on the
-    reference mesh; run is a field output directory or a list of snapshots (nx = ny = n)."""
+    reference mesh. reference: a field output directory or reference_fields() of one; run:
+    a directory or a list of snapshots (nx = ny = n)."""
+    if not isinstance(reference, list):
+        reference = reference_fields(reference)
     if not isinstance(run, list):
         run = snapshots(run)
-    ref = fields.read_collection(reference_dir / "contactbody.pvd")
-    assert len(ref) == len(run), (len(ref), len(run))
+    assert len(reference) == len(run), (len(reference), len(run))
     l2, h1 = [], []
-    for (t_ref, f_ref), (t, coarse_points, coarse) in zip(ref, run):
+    for (t_ref, points, triangles, u_ref), (t, coarse_points, coarse) in zip(reference, run):
         assert abs(t_ref - t) < 1e-12, (t_ref, t)
-        points, triangles, data = fields.read_field(f_ref)
         u_h = fields.interpolate_nested(coarse_points, coarse, n, n, WIDTH, WIDTH, points)
-        e = data["displacement"][:, :2] - u_h
+        e = u_ref - u_h
         l2.append(np.sqrt(fields.l2_squared(points, triangles, e)))
         h1.append(np.sqrt(fields.h1_squared(points, triangles, e)))
     return max(l2), max(h1)
@@ -99,11 +109,12 @@ def main():
         wall_process = time.perf_counter() - start
         peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
         rows = []
+        reference = reference_fields(ref_dir)
         for h, dt in TABLE2:
             run_dir = base / f"F{friction:g}" / f"h{h * 100:g}cm"
             shutil.rmtree(run_dir, ignore_errors=True)
             wall = run_one(h, dt, friction, run_dir, beta)
-            l2, h1 = errors(ref_dir, run_dir, cells(h))
+            l2, h1 = errors(reference, run_dir, cells(h))
             rows.append({"h": h, "dt": dt, "l2": l2, "h1": h1, "wall": wall})
             print(f"F = {friction:g}  h = {h * 100:g} cm  dt = {dt:g}: max L2 = {l2:.3e} m^2, "
                   f"max H1 = {h1:.3e} m, run {wall:.2f} s", flush=True)

@@ -9,8 +9,10 @@ namespace contactbody::fmu {
 struct ModelError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-// A step that cannot be completed (the state stays at the step's start): fmi2Discard.
-struct StepDiscarded : std::runtime_error {
+// A step that cannot be completed even with refined substeps, or whose outputs are not
+// finite: fmi2Error, the state restored to the step's start, the instance in the Error
+// state (fmi2SetFMUstate, fmi2Reset and fmi2FreeInstance remain).
+struct StepError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 

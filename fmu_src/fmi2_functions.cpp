@@ -3,6 +3,7 @@
 // model's exceptions into fmi2Status and a log message naming the function.
 #include <cmath>
 #include <cstring>
+#include <sstream>
 #include <memory>
 #include <new>
 
@@ -17,15 +18,19 @@ constexpr unsigned any_state =
     Instantiated | InitializationMode | StepComplete | StepFailed | Terminated | Error;
 constexpr unsigned readable = InitializationMode | StepComplete | StepFailed | Terminated | Error;
 constexpr unsigned settable = Instantiated | InitializationMode | StepComplete;
-constexpr unsigned saveable = InitializationMode | StepComplete | StepFailed | Terminated;
+// FMI 2.0.5's co-simulation state table: a state may be taken from Instantiated on, and set
+// back after a discard or an error too (that is how a master recovers).
+constexpr unsigned saveable = Instantiated | InitializationMode | StepComplete | StepFailed | Terminated;
+constexpr unsigned restorable = saveable | Error;
 
 template <class Body>
 fmi2Status guarded(Instance* instance, const char* function, Body&& body) {
     try {
         return body();
-    } catch (const StepDiscarded& e) {
-        instance->log(fmi2Discard, LogCategory::error, std::string(function) + ": " + e.what());
-        return fmi2Discard;
+    } catch (const StepError& e) {
+        instance->error(function, e.what());
+        instance->state = Error;  // the state is the step's start: fmi2SetFMUstate may go on
+        return fmi2Error;
     } catch (const ModelError& e) {
         instance->error(function, e.what());
         return fmi2Error;
@@ -36,7 +41,7 @@ fmi2Status guarded(Instance* instance, const char* function, Body&& body) {
     } catch (...) {
         instance->error(function, "unknown failure");
     }
-    instance->state = Error;  // an unexpected failure: only fmi2Reset or fmi2FreeInstance help
+    instance->state = Error;  // unexpected: fmi2SetFMUstate, fmi2Reset or fmi2FreeInstance help
     return fmi2Error;
 }
 
@@ -53,11 +58,19 @@ void log_step(Instance* instance, Simulation& sim) {
                       "factorized 4/dt^2 M + A (factorization " + std::to_string(factorizations) + ")");
     }
     const StepStatistics& s = sim.statistics();
+    if (s.refinements > 0) {
+        std::ostringstream msg;
+        msg << "step to t = " << sim.time() << ": " << s.refinements
+            << " substeps redone as halves after a failed contact solve (smallest substep "
+            << s.smallest_substep << " s)";
+        instance->log(fmi2OK, LogCategory::events, msg.str());
+    }
     instance->log(fmi2OK, LogCategory::contact_solver,
                   "substeps " + std::to_string(s.substeps) + ", contact solves " +
                       std::to_string(s.contact_solves) + ", Newton iterations " +
                       std::to_string(s.contact_iterations) + " (max " +
-                      std::to_string(s.max_contact_iterations) + " in one substep)");
+                      std::to_string(s.max_contact_iterations) + " in one substep), Gauss-Seidel "
+                      "sweeps " + std::to_string(s.gauss_seidel_sweeps));
 }
 
 const Variable& variable(unsigned vr) {
@@ -264,7 +277,6 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
         instance->last_successful_time = instance->model.time();
         return fmi2OK;
     });
-    if (status == fmi2Discard) instance->state = StepFailed;
     if (Simulation* sim = instance->model.simulation()) log_step(instance, *sim);
     return status;
 }
@@ -360,7 +372,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-    BEGIN("fmi2SetFMUstate", saveable)
+    BEGIN("fmi2SetFMUstate", restorable)
     REQUIRE("fmi2SetFMUstate", FMUstate, 1)
     return guarded(instance, "fmi2SetFMUstate", [&] {
         const FmuState* s = known_state(instance, FMUstate);

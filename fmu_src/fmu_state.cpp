@@ -15,7 +15,8 @@ namespace {
 
 constexpr char magic[8] = {'C', 'B', 'F', 'M', 'U', 'S', 'T', '\0'};
 constexpr size_t header_size = sizeof(magic) + 4 + 8 + 8;  // magic, version, size, checksum
-constexpr unsigned restorable_states = InitializationMode | StepComplete | StepFailed | Terminated;
+constexpr unsigned restorable_states =
+    Instantiated | InitializationMode | StepComplete | StepFailed | Terminated;
 
 uint64_t fnv1a(const char* data, size_t size) {
     uint64_t h = 1469598103934665603ull;

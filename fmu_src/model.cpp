@@ -251,10 +251,9 @@ void ContactBodyModel::do_step(double current_time, double h) {
         values_.foundation_velocity += input_rates_[0] * h;
         values_.top_displacement += input_rates_[1] * h;
         if (fields_) write_due_fields();
-    } catch (const ContactSolveError& e) {
-        throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
     } catch (const NumericalFailure& e) {
-        throw StepDiscarded(concat("step from t = ", t, " discarded: ", e.what()));
+        throw StepError(concat("step from t = ", t, " failed, state restored to its start: ",
+                                e.what()));
     } catch (const std::invalid_argument& e) {
         throw ModelError(e.what());
     }

@@ -41,6 +41,7 @@ const std::vector<Variable> table = {
     {"field_output_interval", 14, T::Real, C::parameter, V::fixed, "s", "Time between field output files (written at the first communication point at or after each multiple)", 1e-4, 0, inf, true, ACCESS_REAL(field_output_interval)},
     {"damping_mass", 15, T::Real, C::parameter, V::fixed, "1/s", "Rayleigh damping: alpha of C = alpha M + beta A (M: the variant's mass matrix)", 0, 0, inf, false, ACCESS_REAL(damping_mass)},
     {"damping_stiffness", 16, T::Real, C::parameter, V::fixed, "s", "Rayleigh damping: beta of C = alpha M + beta A", 0, 0, inf, false, ACCESS_REAL(damping_stiffness)},
+    {"min_internal_step", 17, T::Real, C::parameter, V::fixed, "s", "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)", 1e-9, 0, inf, true, ACCESS_REAL(min_internal_step)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -84,6 +85,7 @@ SceneParameters Values::scene() const {
     p.initial_gap = initial_gap;
     p.damping_mass = damping_mass;
     p.damping_stiffness = damping_stiffness;
+    p.min_internal_step = min_internal_step;
     return p;
 }
 

@@ -17,7 +17,7 @@ struct Values {
     double width, height, density, lambda, mu, friction_coefficient;
     int nx, ny, mass_matrix;
     double internal_step, contact_tolerance, initial_gap;
-    double damping_mass, damping_stiffness;
+    double damping_mass, damping_stiffness, min_internal_step;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double foundation_velocity, top_displacement;

@@ -139,7 +139,9 @@ def run_sequence(md, unzipped, sequence, name):
         except FMICallException as e:
             assert e.status in (2, 3), f"{call}: status {e.status}"
             assert len(d.inst.messages) > before, f"{call} failed without a log message"
-            if e.status == 2:  # a discarded step is a real event: it stays in the replay
+            failed_step = call[0] == "doStep" and any(
+                "failed, state restored" in m[2] for m in d.inst.messages[before:])
+            if e.status == 2 or failed_step:  # a real event: it stays in the replay
                 kept.append(call)
             else:
                 d.time = saved_time

@@ -1,5 +1,6 @@
 #include "contact_solver.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -140,7 +141,101 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
     const Eigen::Index m = p.W.rows();
     if (lambda.size() != m) lambda.setZero(m);
     r_ = p.W.diagonal().cwiseInverse();
+    start_ = lambda;
+    try {
+        return newton(p, options, lambda);
+    } catch (const ContactSolveError& e) {
+        // Newton can cycle where the step is badly conditioned (large F, large steps);
+        // Gauss-Seidel is slower but does not cycle on these problems.
+        lambda = start_;
+        ContactSolveInfo info;
+        info.iterations = options.max_iterations;
+        if (gauss_seidel(p, options, lambda, info)) return info;
+        std::ostringstream msg;
+        msg << e.what() << "; Gauss-Seidel from the same start: relative residual "
+            << info.residual << " after " << info.sweeps << " sweeps";
+        throw ContactSolveError(msg.str());
+    }
+}
 
+namespace {
+
+// The exact solution of one node's problem with the other nodes' multipliers fixed:
+// u = q + A l (A the node's 2x2 block of W, or 1x1 without friction), open, stick or slip.
+struct Local {
+    double lN = 0, lT = 0;
+};
+
+Local solve_node(double qN, double qT, double aNN, double aNT, double aTT, double gap,
+                 double origin, double F, bool friction) {
+    Local l;
+    if (qN <= gap) return l;  // open
+    if (!friction) {
+        l.lN = (gap - qN) / aNN;
+        return l;
+    }
+    // stick: u_N = gap, u_T = origin
+    const double det = aNN * aTT - aNT * aNT;
+    const double bN = gap - qN, bT = origin - qT;
+    const Local stick{(aTT * bN - aNT * bT) / det, (aNN * bT - aNT * bN) / det};
+    if (stick.lN <= 0 && std::abs(stick.lT) <= -F * stick.lN) return stick;
+    // slip with sign s: l_T = s F l_N, u_N = gap
+    for (const double s : {1.0, -1.0}) {
+        const double slope = aNN + s * F * aNT;
+        if (!(slope > 0)) continue;
+        const double lN = bN / slope, lT = s * F * lN;
+        const double slip = qT + aNT * lN + aTT * lT - origin;
+        if (lN <= 0 && slip * s >= 0) return {lN, lT};
+    }
+    // No consistent local state (the node's own problem is ill-posed): the cone projection
+    // of the sticking solution.
+    l.lN = std::min(0.0, stick.lN);
+    l.lT = std::clamp(stick.lT, F * l.lN, -F * l.lN);
+    return l;
+}
+
+}  // namespace
+
+bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
+                                 Eigen::VectorXd& lambda, ContactSolveInfo& info) {
+    const Eigen::Index n = p.gap_limit.size();
+    const bool friction = p.has_friction();
+    info.residual = residual(p, lambda, phi_);  // also sets u_hat_ = a + W lambda
+    double best = info.residual;
+    int best_sweep = 0;
+    while (!(info.residual <= options.tolerance)) {
+        // Give up at max_sweeps, or when 50 sweeps have not halved the best residual.
+        if (info.sweeps >= options.max_sweeps || info.sweeps - best_sweep > 50) return false;
+        ++info.sweeps;
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Index t = n + i;
+            const double lN = lambda[i], lT = friction ? lambda[t] : 0.0;
+            const double aNT = friction ? p.W(i, t) : 0.0, aTT = friction ? p.W(t, t) : 1.0;
+            const double qN = u_hat_[i] - p.W(i, i) * lN - aNT * lT;
+            const double qT = friction ? u_hat_[t] - aNT * lN - aTT * lT : 0.0;
+            const Local l = solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
+                                       friction ? p.slip_origin[i] : 0.0, p.friction, friction);
+            if (l.lN != lN) {
+                u_hat_.noalias() += (l.lN - lN) * p.W.col(i);
+                lambda[i] = l.lN;
+            }
+            if (friction && l.lT != lT) {
+                u_hat_.noalias() += (l.lT - lT) * p.W.col(t);
+                lambda[t] = l.lT;
+            }
+        }
+        info.residual = residual(p, lambda, phi_);
+        if (info.residual < 0.5 * best) {
+            best = info.residual;
+            best_sweep = info.sweeps;
+        }
+    }
+    return true;
+}
+
+ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
+                                       const ContactSolverOptions& options,
+                                       Eigen::VectorXd& lambda) {
     ContactSolveInfo info;
     info.residual = residual(p, lambda, phi_);
     double merit = phi_.squaredNorm();

@@ -35,11 +35,13 @@ struct ContactProblem {
 struct ContactSolverOptions {
     double tolerance = 1e-10;  // on the Alart-Curnier residual, relative to max |lambda|
     int max_iterations = 100;
+    int max_sweeps = 1000;     // of the Gauss-Seidel fallback (which also stops on stagnation)
 };
 
 struct ContactSolveInfo {
     int iterations = 0;
     double residual = 0;  // relative, as compared with the tolerance
+    int sweeps = 0;       // Gauss-Seidel sweeps, when Newton failed and the fallback ran
 };
 
 class ContactSolveError : public std::runtime_error {
@@ -49,7 +51,9 @@ public:
 
 class ContactSolver {
 public:
-    // Solves in place from the warm start in lambda; throws ContactSolveError on failure.
+    // Solves in place from the warm start in lambda: semi-smooth Newton, and if it does not
+    // converge, nonsmooth Gauss-Seidel from the same start. Throws ContactSolveError when
+    // both fail (lambda is then unspecified).
     ContactSolveInfo solve(const ContactProblem& problem, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda);
     // Node states of the last solution (open / sticking / slipping).
@@ -58,6 +62,12 @@ public:
     long factorizations() const { return factorizations_; }
 
 private:
+    ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
+                           Eigen::VectorXd& lambda);
+    // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
+    // the tolerance within options.max_sweeps.
+    bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
+                      Eigen::VectorXd& lambda, ContactSolveInfo& info);
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     void newton_direction(const ContactProblem& p, bool reuse);
@@ -67,7 +77,7 @@ private:
     }
 
     // Workspace kept between calls so that steady stepping does not reallocate.
-    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_;
+    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, start_;
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
     std::vector<int> pivots_;

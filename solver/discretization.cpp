@@ -60,6 +60,7 @@ void check_parameters(const SceneParameters& p) {
     if (redistributes_normal(p.mass_matrix) && p.ny < 2)
         reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
     require_positive("internal_step", p.internal_step);
+    require_positive("min_internal_step", p.min_internal_step);
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))

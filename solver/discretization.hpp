@@ -34,6 +34,7 @@ struct SceneParameters {
     double friction_coefficient = 1.2;
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
+    double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
     double contact_tolerance = 1e-10;
     double initial_gap = 0;
     // Rayleigh damping C = damping_mass M + damping_stiffness A (M: the variant's mass matrix).

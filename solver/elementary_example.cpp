@@ -124,7 +124,7 @@ std::vector<ElementarySolution> ElementaryExample::solver_solutions(const Eigen:
         for (double lt : tangential) {
             lambda << ln * s, lt * s;
             try {
-                solver.solve(p, ContactSolverOptions{1e-13, 100}, lambda);
+                solver.solve(p, ContactSolverOptions{1e-13, 100, 0}, lambda);  // Newton alone
             } catch (const ContactSolveError&) {
                 ++failures;
                 continue;

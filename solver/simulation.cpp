@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 namespace contactbody {
 
@@ -14,11 +16,17 @@ Simulation::Simulation(const SceneParameters& params, double initial_top_displac
 }
 
 int Simulation::substeps_for(double h) const {
-    // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off.
+    // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off, and
+    // despite masters that add up time and send steps a few 1e-12 too long.
     const double ratio = h / stepper_.parameters().internal_step;
     if (!(ratio <= 1e9)) throw std::invalid_argument("step needs more than 1e9 substeps");
-    return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-12))));
+    return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-9))));
 }
+
+struct Simulation::StepSums {
+    Observables avg;
+    StepStatistics stats;
+};
 
 void Simulation::do_step(double h, const StepInputs& in) {
     if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("step size must be > 0");
@@ -27,57 +35,56 @@ void Simulation::do_step(double h, const StepInputs& in) {
     saved_ = state_;
     const Works saved_works = works_;
 
-    Observables avg;
-    StepStatistics stats;
+    StepSums sums;
+    Observables& avg = sums.avg;
+    StepStatistics& stats = sums.stats;
     stats.substeps = n;
-    SubstepLoad load;
+    stats.smallest_substep = dt;
+    nominal_substep_ = dt;
     const Mesh& mesh = stepper_.discretization().mesh;
+    const Observables saved_observables = observables_;
     try {
-        for (int k = 0; k < n; ++k) {
-            const double s0 = k * dt, s1 = (k + 1) * dt;
-            load.top_start = in.top_displacement + in.top_velocity * s0;
-            load.top_end = in.top_displacement + in.top_velocity * s1;
-            load.top_rate = in.top_velocity;
-            load.foundation_velocity =
-                in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
-            if (k == 0) move_clamp(load.top_start, load.top_rate);
-            const SubstepReport r = stepper_.substep(state_, dt, load);
-            works_ += r.work;
-            avg.normal_force += r.normal_force;
-            avg.friction_force += r.friction_force;
-            avg.corner_pressure -= r.corner_lambda_N;
-            avg.corner_friction += r.corner_lambda_T;
-            avg.top_reaction_x += r.top_reaction_x;
-            avg.top_reaction_y += r.top_reaction_y;
-            avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
-            avg.active_contact_nodes = r.active_nodes;
-            avg.slipping_contact_nodes = r.slipping_nodes;
-            stats.contact_solves += r.contact_solved;
-            stats.contact_iterations += r.contact_iterations;
-            stats.max_contact_iterations = std::max(stats.max_contact_iterations, r.contact_iterations);
-        }
-        if (!state_.u.allFinite() || !state_.v.allFinite()) {
-            std::ostringstream msg;
-            msg << "state became non-finite during the step from t = " << t0;
-            throw NumericalFailure(msg.str());
-        }
+        // Held inputs may have jumped since the last step: the clamp moves with them.
+        move_clamp(in.top_displacement, in.top_velocity);
+        for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
+        state_.time = t0 + h;  // no drift from summing substeps
+
+        const double share = 0.5 * mesh.hx();  // boundary length carried by the corner node
+        avg.normal_force /= n;
+        avg.friction_force /= n;
+        avg.corner_pressure /= n * share;
+        avg.corner_friction /= n * share;
+        avg.top_reaction_x /= n;
+        avg.top_reaction_y /= n;
+        observables_ = avg;
+        energies_current_ = false;
+        check_finite(observables());  // no NaN under fmi2OK: every output, every step
     } catch (...) {
         state_ = saved_;
         works_ = saved_works;
+        observables_ = saved_observables;
+        energies_current_ = false;
         throw;
     }
-    state_.time = t0 + h;  // no drift from summing substeps
-
-    const double share = 0.5 * mesh.hx();  // boundary length carried by the corner node
-    avg.normal_force /= n;
-    avg.friction_force /= n;
-    avg.corner_pressure /= n * share;
-    avg.corner_friction /= n * share;
-    avg.top_reaction_x /= n;
-    avg.top_reaction_y /= n;
-    observables_ = avg;
     statistics_ = stats;
-    energies_current_ = false;
+}
+
+void Simulation::check_finite(const Observables& o) const {
+    const std::pair<const char*, double> outputs[] = {
+        {"energy", o.energy}, {"kinetic_energy", o.kinetic_energy},
+        {"strain_energy", o.strain_energy}, {"normal_force", o.normal_force},
+        {"friction_force", o.friction_force}, {"top_reaction_x", o.top_reaction_x},
+        {"top_reaction_y", o.top_reaction_y}, {"max_penetration", o.max_penetration},
+        {"friction_work", o.friction_work}, {"normal_contact_work", o.normal_contact_work},
+        {"clamp_work", o.clamp_work}, {"damping_work", o.damping_work},
+        {"foundation_work", o.foundation_work}};
+    for (const auto& [name, value] : outputs) {
+        if (std::isfinite(value)) continue;
+        std::ostringstream msg;
+        msg << "output " << name << " = " << value << " at t = " << state_.time
+            << ": the solution grows without bound" << growth_advice();
+        throw NumericalFailure(msg.str());
+    }
 }
 
 // Held inputs may have jumped since the last step: the clamp moves with them. The energy
@@ -104,6 +111,96 @@ double Simulation::energy(const State& s) {
     double e = 0.5 * s.v.dot(product_);
     product_.noalias() = d.A * s.u;
     return e + 0.5 * s.u.dot(product_);
+}
+
+void Simulation::advance(const StepInputs& in, double s0, double dt, double weight,
+                         StepSums& sums) {
+    const double s1 = s0 + dt;
+    SubstepLoad load;
+    load.top_start = in.top_displacement + in.top_velocity * s0;
+    load.top_end = in.top_displacement + in.top_velocity * s1;
+    load.top_rate = in.top_velocity;
+    load.foundation_velocity = in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
+    lambda_before_ = state_.lambda;
+    SubstepReport r;
+    try {
+        r = stepper_.substep(state_, dt, load);
+    } catch (const ContactSolveError& e) {
+        state_.lambda = lambda_before_;  // the substep changed nothing else
+        const double half = 0.5 * dt;
+        // At most 20 halvings (a millionth of the substep), whatever min_internal_step says.
+        if (half < stepper_.parameters().min_internal_step || weight < 0x1p-19)
+            fail_contact(e, s0, dt, sums);
+        StepStatistics& stats = sums.stats;
+        ++stats.refinements;
+        stats.smallest_substep = std::min(stats.smallest_substep, half);
+        advance(in, s0, half, 0.5 * weight, sums);
+        advance(in, s0 + half, half, 0.5 * weight, sums);
+        return;
+    }
+    works_ += r.work;
+    Observables& avg = sums.avg;
+    avg.normal_force += weight * r.normal_force;
+    avg.friction_force += weight * r.friction_force;
+    avg.corner_pressure -= weight * r.corner_lambda_N;
+    avg.corner_friction += weight * r.corner_lambda_T;
+    avg.top_reaction_x += weight * r.top_reaction_x;
+    avg.top_reaction_y += weight * r.top_reaction_y;
+    avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
+    avg.active_contact_nodes = r.active_nodes;
+    avg.slipping_contact_nodes = r.slipping_nodes;
+    StepStatistics& stats = sums.stats;
+    stats.contact_solves += r.contact_solved;
+    stats.contact_iterations += r.contact_iterations;
+    stats.max_contact_iterations = std::max(stats.max_contact_iterations, r.contact_iterations);
+    stats.gauss_seidel_sweeps += r.contact_sweeps;
+}
+
+std::string Simulation::growth_advice() const {
+    const SceneParameters& p = stepper_.parameters();
+    std::ostringstream msg;
+    msg << ". What to change:";
+    if (p.friction_coefficient > 0)
+        msg << " with friction (F = " << p.friction_coefficient << ") steady sliding is "
+            << "unstable unless damped: set damping_stiffness (4e-6 s stabilizes F <= 0.3 on "
+               "the paper's scene);";
+    if (p.lambda >= 5 * p.mu && (p.mass_matrix == MassVariant::redistributed_normal ||
+                                 p.mass_matrix == MassVariant::redistributed_both ||
+                                 p.mass_matrix == MassVariant::standard))
+        msg << " with lambda/mu = " << p.lambda / p.mu << " >= 5 the midpoint contact gains "
+            << "energy: mass_matrix = 4 (redistributed_implicit_contact) cannot;";
+    msg << " or reduce internal_step (now " << p.internal_step << " s)";
+    return msg.str();
+}
+
+// Section 6 of the paper: the one-element step with the normal mass removed is uniquely
+// solvable for every F only below a step size; with F > c/b = (lambda+3mu)/(lambda+mu) and
+// the tangential mass removed too (redistributed_both) it can have several solutions.
+void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
+                              const StepSums& sums) const {
+    const SceneParameters& p = stepper_.parameters();
+    const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
+    std::ostringstream msg;
+    msg << "contact solve failed at t = " << state_.time << " (" << s0
+        << " s into the step) with F = " << p.friction_coefficient << ", for substeps of "
+        << nominal_substep_;
+    for (double size = 0.5 * nominal_substep_; size >= dt; size *= 0.5) msg << ", " << size;
+    msg << " s (min_internal_step = " << p.min_internal_step << " s); at the last solved "
+        << "substep of this step " << sums.avg.active_contact_nodes << " of "
+        << stepper_.num_contact_nodes() << " contact nodes were in contact, "
+        << sums.avg.slipping_contact_nodes << " slipping. " << e.what() << ". ";
+    if (p.friction_coefficient > c_over_b) {
+        msg << "F exceeds c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b
+            << (p.mass_matrix == MassVariant::redistributed_both
+                    ? ": with redistributed_both the step can then have several solutions at "
+                      "any step size (paper, section 6); use mass_matrix = 1 or a smaller F"
+                    : ": the step is uniquely solvable only below a step size (paper, section 6);"
+                      " reduce internal_step (by 10x to 1000x) or F");
+    } else {
+        msg << "Reduce internal_step, or check contact_tolerance (" << p.contact_tolerance
+            << ")";
+    }
+    throw NumericalFailure(msg.str());
 }
 
 void Simulation::restore(const SimulationSnapshot& snapshot) {

@@ -36,10 +36,13 @@ struct SimulationSnapshot {
 
 // What the last communication step cost.
 struct StepStatistics {
-    int substeps = 0;
+    int substeps = 0;                // nominal: ceil(h / internal_step)
+    int refinements = 0;             // substeps redone as two halves after a failed solve
+    double smallest_substep = 0;     // the smallest substep size used
     int contact_solves = 0;          // substeps where some node could touch
     int contact_iterations = 0;      // Newton iterations, summed over the substeps
     int max_contact_iterations = 0;  // in one substep
+    int gauss_seidel_sweeps = 0;     // of the contact solver's fallback, summed
 };
 
 class NumericalFailure : public std::runtime_error {
@@ -52,9 +55,12 @@ public:
     Simulation(const SceneParameters& params, double initial_top_displacement,
                double start_time = 0);
 
-    // Runs n = ceil(h / internal_step) substeps of size h / n. On failure (contact solve or a
-    // non-finite state) the state is restored to the start of the step and the exception
-    // (ContactSolveError or NumericalFailure) propagates.
+    // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
+    // fails is redone from its start as two halves, recursively down to min_internal_step
+    // (and at most 20 times).
+    // On failure (a contact solve at the smallest size, or a non-finite state or output)
+    // the state is restored to the start of the step and NumericalFailure propagates, its
+    // message naming the time, the sizes tried, the contact state and what to change.
     void do_step(double h, const StepInputs& inputs);
 
     const Observables& observables();  // energies computed here, only when asked
@@ -71,6 +77,14 @@ public:
     const StepStatistics& statistics() const { return statistics_; }
 
 private:
+    struct StepSums;
+    // One substep over [s0, s0 + dt] of the step (times from its start), halved on failure;
+    // weight = dt / nominal substep (a power of two), for the step averages.
+    void advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums);
+    [[noreturn]] void fail_contact(const ContactSolveError& e, double s0, double dt,
+                                   const StepSums& sums) const;
+    void check_finite(const Observables& o) const;  // throws NumericalFailure
+    std::string growth_advice() const;              // what to change when E runs away
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state (uses product_)
 
@@ -81,6 +95,8 @@ private:
     StepStatistics statistics_;
     bool energies_current_ = false;
     Eigen::VectorXd product_;
+    Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
+    double nominal_substep_ = 0;
 };
 
 }  // namespace contactbody

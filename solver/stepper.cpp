@@ -2,6 +2,7 @@
 
 #include "trailing_cholesky.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -34,6 +35,7 @@ private:
 // side only adds G lambda to y_2, so a substep is one forward and one backward solve.
 struct Stepper::Factor {
     double dt = 0;
+    int id = 0;  // the factorization's number: W is rebuilt when another factor is used
     std::unique_ptr<TrailingCholesky> cholesky;
     Eigen::MatrixXd G;         // trailing positions x (N, T)
     Eigen::MatrixXd delassus;  // G^T G, (N, T) x (N, T)
@@ -72,13 +74,14 @@ State Stepper::initial_state(double top_displacement) const {
 
 void Stepper::set_friction_coefficient(double friction) {
     params_.friction_coefficient = friction;
-    problem_factor_ = nullptr;  // the problem's size may change: rebuild W on next use
+    problem_factor_ = 0;  // the problem's size may change: rebuild W on next use
 }
 
 Stepper::Factor& Stepper::factor_for(double dt) {
-    for (int k = 0; k < 2; ++k) {
+    for (size_t k = 0; k < cache_.size(); ++k) {
         if (cache_[k] && std::abs(cache_[k]->dt - dt) <= 1e-14 * dt) {
-            if (k == 1) std::swap(cache_[0], cache_[1]);
+            std::rotate(cache_.begin(), cache_.begin() + static_cast<long>(k),
+                        cache_.begin() + static_cast<long>(k) + 1);
             return *cache_[0];
         }
     }
@@ -93,7 +96,7 @@ Stepper::Factor& Stepper::factor_for(double dt) {
         f->K_free_clamped += (2.0 / dt) * disc_.C_free_clamped;
     }
     f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
-    ++factorizations_;
+    f->id = ++factorizations_;
 
     // B rows: N_i = -e_y(i), T_i = +e_x(i).
     const Eigen::Index first = f->cholesky->size() - m;
@@ -102,7 +105,7 @@ Stepper::Factor& Stepper::factor_for(double dt) {
         S(f->cholesky->position(contact_dofs[static_cast<size_t>(c)]) - first, c) = c < nc ? -1 : 1;
     f->G = f->cholesky->trailing_block().triangularView<Eigen::Lower>().solve(S);
     f->delassus.noalias() = f->G.transpose() * f->G;
-    cache_[1] = std::move(cache_[0]);
+    std::rotate(cache_.begin(), cache_.end() - 1, cache_.end());  // drops the oldest
     cache_[0] = std::move(f);
     return *cache_[0];
 }
@@ -115,13 +118,13 @@ void Stepper::setup_contact_problem(const Factor& f) {
     problem_.friction = params_.friction_coefficient;
     problem_.revision = ContactProblem::next_revision();
     snapshot_.delassus_diagonal = f.delassus.diagonal();
-    problem_factor_ = &f;
+    problem_factor_ = f.id;
 }
 
 SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     Laps laps(timing_);
     const Factor& f = factor_for(dt);
-    if (problem_factor_ != &f) setup_contact_problem(f);
+    if (problem_factor_ != f.id) setup_contact_problem(f);
     laps.lap(timings_.factor);
     const Discretization& d = disc_;
     const int nc = num_contact_nodes();
@@ -165,7 +168,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     }
     SubstepReport report;
     if (touching) {
-        report.contact_iterations = solver_.solve(problem_, options_, s.lambda).iterations;
+        const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
+        report.contact_iterations = info.iterations;
+        report.contact_sweeps = info.sweeps;
         report.contact_solved = true;
         y_contact.noalias() += G * s.lambda;  // L^-1 P B^T lambda lives in the trailing block
     } else {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 
 #include "contact_solver.hpp"
@@ -67,6 +68,7 @@ struct SubstepReport {
     double max_penetration = 0;    // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
     int contact_iterations = 0;
+    int contact_sweeps = 0;        // Gauss-Seidel fallback sweeps (0: Newton converged)
     bool contact_solved = false;   // false when no node could touch (solve skipped)
 };
 
@@ -123,8 +125,9 @@ private:
     ContactSolverOptions options_;
     ContactSolver solver_;
     ContactProblem problem_;
-    std::unique_ptr<Factor> cache_[2];  // most recent first: masters alternate step sizes
-    const Factor* problem_factor_ = nullptr;
+    // Most recent first: masters alternate step sizes, and refined substeps add halves.
+    std::array<std::unique_ptr<Factor>, 4> cache_;
+    int problem_factor_ = 0;  // id of the factor problem_.W was built from
     int factorizations_ = 0;
     bool timing_ = false;
     SubstepTimings timings_;

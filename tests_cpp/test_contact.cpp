@@ -138,7 +138,7 @@ TEST(ContactSolver, NonConvergenceIsAnError) {
     const ContactProblem p = e.problem({1, 2});  // region S3: needs iterations from zero
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(2);
     ContactSolver solver;
-    EXPECT_THROW(solver.solve(p, ContactSolverOptions{1e-10, 0}, lambda), ContactSolveError);
+    EXPECT_THROW(solver.solve(p, ContactSolverOptions{1e-10, 0, 0}, lambda), ContactSolveError);
 }
 
 TEST(ContactSolver, OpenContactNeedsNoIteration) {

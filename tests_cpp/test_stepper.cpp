@@ -2,6 +2,8 @@
 // (issue 2 item 4), and a failed solve is an error that leaves the state as it was.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "simulation.hpp"
 
 using namespace contactbody;
@@ -68,13 +70,45 @@ TEST(Simulation, FailedContactSolveRestoresTheStepStart) {
     const StepInputs in{20, -2.5e-5, 0, 0};
     sim.do_step(1e-4, in);
     const State before = sim.state();
-    sim.stepper().contact_options().max_iterations = 0;
-    EXPECT_THROW(sim.do_step(1e-4, in), ContactSolveError);
+    const double work = sim.observables().friction_work;
+    ContactSolverOptions& options = sim.stepper().contact_options();
+    options.max_iterations = 0;  // neither Newton nor its fallback can succeed
+    options.max_sweeps = 0;
+    try {
+        sim.do_step(1e-4, in);
+        FAIL() << "the step should fail";
+    } catch (const NumericalFailure& e) {
+        // Refined down to min_internal_step (1e-9) before giving up, and says so.
+        const std::string what = e.what();
+        EXPECT_NE(what.find("contact solve failed at t = "), std::string::npos) << what;
+        EXPECT_NE(what.find("min_internal_step = 1e-09"), std::string::npos) << what;
+        EXPECT_NE(what.find(", 1.95312e-09 s"), std::string::npos) << what;  // 4e-6 / 2^11
+    }
     EXPECT_EQ(sim.time(), before.time);
     EXPECT_EQ((sim.state().u - before.u).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ((sim.state().v - before.v).cwiseAbs().maxCoeff(), 0.0);
-    sim.stepper().contact_options().max_iterations = 100;
+    EXPECT_EQ(sim.observables().friction_work, work);
+    options.max_iterations = 100;
+    options.max_sweeps = 2000;
     EXPECT_NO_THROW(sim.do_step(1e-4, in));  // usable again
+}
+
+TEST(Simulation, GaussSeidelTakesOverWhenNewtonFails) {
+    SceneParameters p;  // damped sliding: stable, so that tolerance-level differences stay small
+    p.friction_coefficient = 0.3;
+    p.damping_stiffness = 4e-6;
+    Simulation newton(p, -2.5e-5), fallback(p, -2.5e-5);
+    const StepInputs in{20, -2.5e-5, 0, 0};
+    fallback.stepper().contact_options().max_iterations = 0;  // Newton gives up at once
+    for (int k = 0; k < 5; ++k) {
+        newton.do_step(1e-4, in);
+        fallback.do_step(1e-4, in);
+    }
+    EXPECT_GT(fallback.statistics().gauss_seidel_sweeps, 0);
+    EXPECT_EQ(fallback.statistics().refinements, 0);
+    // Both solve every substep's contact problem to the tolerance: the same motion.
+    const double scale = newton.state().u.cwiseAbs().maxCoeff();
+    EXPECT_LT((newton.state().u - fallback.state().u).cwiseAbs().maxCoeff(), 1e-6 * scale);
 }
 
 TEST(Simulation, InitialEnergyIsTheUniaxialStrainEnergy) {
@@ -87,6 +121,8 @@ TEST(Simulation, SubstepCountIsCeilOfStepOverInternalStep) {
     SceneParameters p;
     Simulation sim(p, -2.5e-5);
     EXPECT_EQ(sim.substeps_for(1e-4), 25);
+    EXPECT_EQ(sim.substeps_for(1e-4 * (1 + 5e-12)), 25);  // masters that add up time
+    EXPECT_EQ(sim.substeps_for(1e-4 * (1 + 1e-8)), 26);
     EXPECT_EQ(sim.substeps_for(1.01e-4), 26);
     EXPECT_EQ(sim.substeps_for(1e-7), 1);
 }

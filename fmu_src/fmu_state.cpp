@@ -156,6 +156,7 @@ std::vector<char> serialize(const FmuState& s) {
         w.vector(sim.state.v);
         w.vector(sim.state.lambda);
         Works::for_each(sim.works, sim.works, [&](double x, double) { w.value(x); });
+        w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
     }
 
@@ -249,6 +250,11 @@ FmuState deserialize(const char* bytes, size_t size) {
         sim.state.v = r.vector("velocity", dofs);
         sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
         Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
+        sim.factor_substeps = r.finite_doubles("cached substep sizes");
+        if (sim.factor_substeps.size() > Stepper::factor_cache_size)
+            r.fail("more cached substep sizes than the factor cache holds");
+        for (double dt : sim.factor_substeps)
+            if (!(dt > 0)) r.fail("cached substep sizes must be > 0");
         visit(sim.observables, [&](auto& x) {
             using T = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<T, double>) x = r.finite("observable");

@@ -15,7 +15,8 @@ struct FmuState {
     ModelState model;
 };
 
-constexpr unsigned state_format_version = 3;  // 2: String variables, field output; 3: damping, works
+constexpr unsigned state_format_version = 4;  // 2: String variables, field output; 3: damping,
+                                              // works; 4: cached substep sizes
 
 std::vector<char> serialize(const FmuState& state);
 // Throws ModelError naming the defect: wrong magic or version, truncation, checksum, sizes

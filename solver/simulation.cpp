@@ -210,6 +210,10 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     if (s.u.size() != dofs || s.v.size() != dofs ||
         (s.lambda.size() != nc && s.lambda.size() != 2 * nc))
         throw std::invalid_argument("state does not fit this mesh");
+    for (double dt : snapshot.factor_substeps)
+        if (!(std::isfinite(dt) && dt > 0))
+            throw std::invalid_argument("cached substep sizes must be finite and > 0");
+    stepper_.set_cached_substeps(snapshot.factor_substeps);
     state_ = s;
     works_ = snapshot.works;
     observables_ = snapshot.observables;

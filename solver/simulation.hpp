@@ -26,12 +26,13 @@ struct StepInputs {
     double foundation_acceleration = 0, top_velocity = 0;
 };
 
-// Everything that evolves in time, as plain data (the factorizations are derived from the
-// parameters and rebuilt on demand, so they are not part of it).
+// Everything that evolves in time, as plain data. The factorizations are derived from the
+// parameters and the substep sizes they were made for, so only those sizes are part of it.
 struct SimulationSnapshot {
     State state;
     Works works;              // since t0
     Observables observables;  // the last step's averages
+    std::vector<double> factor_substeps;  // Stepper::cached_substeps()
 };
 
 // What the last communication step cost.
@@ -71,7 +72,9 @@ public:
     // Substeps per step for a step of size h.
     int substeps_for(double h) const;
 
-    SimulationSnapshot snapshot() const { return {state_, works_, observables_}; }
+    SimulationSnapshot snapshot() const {
+        return {state_, works_, observables_, stepper_.cached_substeps()};
+    }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
     const StepStatistics& statistics() const { return statistics_; }

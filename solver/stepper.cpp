@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <cmath>
 
 namespace contactbody {
@@ -85,6 +86,32 @@ Stepper::Factor& Stepper::factor_for(double dt) {
             return *cache_[0];
         }
     }
+    std::rotate(cache_.begin(), cache_.end() - 1, cache_.end());  // drops the oldest
+    cache_[0] = make_factor(dt);
+    return *cache_[0];
+}
+
+std::vector<double> Stepper::cached_substeps() const {
+    std::vector<double> sizes;
+    for (const auto& f : cache_)
+        if (f) sizes.push_back(f->dt);
+    return sizes;
+}
+
+void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
+    if (sizes.size() > cache_.size())
+        throw std::invalid_argument("more cached substep sizes than the cache holds");
+    std::array<std::unique_ptr<Factor>, factor_cache_size> next;
+    for (size_t k = 0; k < sizes.size(); ++k) {
+        for (auto& f : cache_)  // a factor of exactly this size is kept, not rebuilt
+            if (f && f->dt == sizes[k]) next[k] = std::move(f);
+        if (!next[k]) next[k] = make_factor(sizes[k]);
+    }
+    cache_ = std::move(next);
+    problem_factor_ = 0;
+}
+
+std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     auto f = std::make_unique<Factor>();
     f->dt = dt;
     const int nc = num_contact_nodes(), m = 2 * nc;
@@ -105,9 +132,7 @@ Stepper::Factor& Stepper::factor_for(double dt) {
         S(f->cholesky->position(contact_dofs[static_cast<size_t>(c)]) - first, c) = c < nc ? -1 : 1;
     f->G = f->cholesky->trailing_block().triangularView<Eigen::Lower>().solve(S);
     f->delassus.noalias() = f->G.transpose() * f->G;
-    std::rotate(cache_.begin(), cache_.end() - 1, cache_.end());  // drops the oldest
-    cache_[0] = std::move(f);
-    return *cache_[0];
+    return f;
 }
 
 void Stepper::setup_contact_problem(const Factor& f) {

@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "contact_solver.hpp"
 #include "discretization.hpp"
@@ -109,6 +110,12 @@ public:
     SubstepReport substep(State& s, double dt, const SubstepLoad& load);
 
     const ContactSnapshot& last_contact() const { return snapshot_; }
+    // Substep sizes of the cached factors, most recent first. A substep reuses a factor whose
+    // size is within 1e-14 of its own, so results depend on these sizes to the last bit:
+    // they are part of the state, and restoring them rebuilds exactly those factors.
+    std::vector<double> cached_substeps() const;
+    void set_cached_substeps(const std::vector<double>& sizes);
+    static constexpr size_t factor_cache_size = 4;
     int factorizations() const { return factorizations_; }
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
@@ -126,7 +133,8 @@ private:
     ContactSolver solver_;
     ContactProblem problem_;
     // Most recent first: masters alternate step sizes, and refined substeps add halves.
-    std::array<std::unique_ptr<Factor>, 4> cache_;
+    std::array<std::unique_ptr<Factor>, factor_cache_size> cache_;
+    std::unique_ptr<Factor> make_factor(double dt);
     int problem_factor_ = 0;  // id of the factor problem_.W was built from
     int factorizations_ = 0;
     bool timing_ = false;

@@ -8,6 +8,8 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2LastSuccessfulTime, fmi2Terminated
 
+from conftest import Instance
+
 ERROR, DISCARD = 3, 2
 REAL_SETTABLE = ["width", "height", "density", "lambda", "mu", "friction_coefficient",
                  "internal_step", "contact_tolerance", "initial_gap", "foundation_velocity",
@@ -157,3 +159,26 @@ def test_unknown_log_category_is_refused(instance):
     instance.setDebugLogging(True, ["logEvents"])
     initialize(instance)
     assert any("initialized" in m[2] for m in instance.messages)
+
+
+def test_coarse_mesh_rule_for_the_redistributed_mass(model_description, unzipped, vr):
+    """The rule the message states (scenes issue, item 6): M_r fails for ny = 2 and nx >= 2,
+    ny = 3 and nx >= 3, ny = 4 and nx >= 7; never for ny >= 5; the consistent mass always works."""
+    inst = Instance(model_description, unzipped, "coarse")
+    try:
+        for ny in (2, 3, 4, 5):
+            for nx in (1, 2, 3, 6, 7, 12):
+                for variant in (1, 3):
+                    inst.reset()
+                    inst.setupExperiment(startTime=0)
+                    inst.enterInitializationMode()
+                    inst.setInteger([vr["nx"], vr["ny"], vr["mass_matrix"]], [nx, ny, variant])
+                    fails = variant == 1 and nx >= {2: 2, 3: 3, 4: 7, 5: 10**9}[ny]
+                    if fails:
+                        expect_error(inst, inst.exitInitializationMode,
+                                     f"nx = {nx}, ny = {ny}", "ny = 4 for nx >= 7",
+                                     "Use ny >= 5, or mass_matrix = 0 or 3")
+                    else:
+                        inst.exitInitializationMode()
+    finally:
+        inst.close()

@@ -13,6 +13,30 @@ Simulation::Simulation(const SceneParameters& params, double initial_top_displac
     : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
     state_.time = start_time;
     product_.resize(state_.u.size());
+    initial_reactions();
+}
+
+// Before the first step the force outputs describe the initial state: the forces in static
+// balance with its displacement, A u = f, on the contact nodes' y rows (where they push the
+// body up, i.e. compress it) and on the clamped rows. Friction is 0 until the first step.
+void Simulation::initial_reactions() {
+    const Discretization& d = stepper_.discretization();
+    const SceneParameters& p = stepper_.parameters();
+    product_.noalias() = d.A * state_.u;
+    Observables o;
+    for (size_t i = 0; i < d.mesh.contact_nodes.size(); ++i) {
+        const int node = d.mesh.contact_nodes[i];
+        const double up = product_[dof_y(node)];
+        o.max_penetration = std::max(o.max_penetration, -state_.u[dof_y(node)] - p.initial_gap);
+        if (!(up > 0)) continue;
+        o.normal_force += up;
+        ++o.active_contact_nodes;
+        if (i == 0) o.corner_pressure = up / (0.5 * d.mesh.hx());
+    }
+    for (int dof : d.clamped_dofs)
+        (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product_[dof];
+    observables_ = o;
+    energies_current_ = false;
 }
 
 int Simulation::substeps_for(double h) const {

@@ -146,6 +146,8 @@ std::vector<char> serialize(const FmuState& s) {
     w.value(s.model.start_time);
     w.value(s.model.input_rates[0]);
     w.value(s.model.input_rates[1]);
+    w.value(s.model.previous_inputs[0]);
+    w.value(s.model.previous_inputs[1]);
     w.doubles(s.model.field_output_times);
     w.value<uint64_t>(s.model.next_field_output);
     w.value<uint8_t>(s.model.has_simulation);
@@ -229,6 +231,8 @@ FmuState deserialize(const char* bytes, size_t size) {
     s.model.start_time = r.finite("start time");
     s.model.input_rates[0] = r.finite("foundation_velocity derivative");
     s.model.input_rates[1] = r.finite("top_displacement derivative");
+    s.model.previous_inputs[0] = r.finite("foundation_velocity at the last communication point");
+    s.model.previous_inputs[1] = r.finite("top_displacement at the last communication point");
     s.model.field_output_times = r.finite_doubles("field output times");
     s.model.next_field_output = r.value<uint64_t>("next field output");
     if (s.model.next_field_output < s.model.field_output_times.size())

@@ -83,14 +83,14 @@ int main(int argc, char** argv) {
         x << "    <Unit name=\"" << unit << "\"><BaseUnit " << exponents << "/></Unit>\n";
     x << R"(  </UnitDefinitions>
   <TypeDefinitions>
-    <SimpleType name="MassMatrix">
-      <Enumeration>
 )";
-    for (size_t k = 0; k < mass_matrix_items().size(); ++k)
-        x << "        <Item name=\"" << mass_matrix_items()[k] << "\" value=\"" << k << "\"/>\n";
-    x << R"(      </Enumeration>
-    </SimpleType>
-  </TypeDefinitions>
+    for (const EnumerationType& t : enumeration_types()) {
+        x << "    <SimpleType name=\"" << t.name << "\">\n      <Enumeration>\n";
+        for (size_t k = 0; k < t.items.size(); ++k)
+            x << "        <Item name=\"" << t.items[k] << "\" value=\"" << k << "\"/>\n";
+        x << "      </Enumeration>\n    </SimpleType>\n";
+    }
+    x << R"(  </TypeDefinitions>
   <LogCategories>
 )";
     for (const std::string& c : log_categories()) x << "    <Category name=\"" << c << "\"/>\n";
@@ -112,7 +112,9 @@ int main(int argc, char** argv) {
         switch (v.type) {
             case Type::Real: x << "Real"; break;
             case Type::Integer: x << "Integer"; break;
-            case Type::Enumeration: x << "Enumeration declaredType=\"MassMatrix\""; break;
+            case Type::Enumeration:
+                x << "Enumeration declaredType=\"" << enumeration_type(v).name << "\"";
+                break;
             case Type::String: x << "String"; break;
         }
         if (*v.unit) x << " unit=\"" << v.unit << "\"";

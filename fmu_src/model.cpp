@@ -152,6 +152,7 @@ void ContactBodyModel::initialize() {
     build_simulation(values_);
     open_field_output();
     values_.out = Observables{};
+    previous_inputs_ = {values_.foundation_velocity, values_.top_displacement};
     rebuild_ = false;
     next_field_output_ = 0;
     if (fields_) write_due_fields();  // the initial state
@@ -162,6 +163,7 @@ ModelState ContactBodyModel::save() const {
     s.values = values_;
     s.start_time = start_time_;
     s.input_rates = input_rates_;
+    s.previous_inputs = previous_inputs_;
     s.has_simulation = sim_ && !rebuild_;
     if (s.has_simulation) s.simulation = sim_->snapshot();
     if (fields_) s.field_output_times = fields_->times();
@@ -203,6 +205,7 @@ void ContactBodyModel::load(const ModelState& state) {
     values_ = saved;
     start_time_ = state.start_time;
     input_rates_ = state.input_rates;
+    previous_inputs_ = state.previous_inputs;
     rebuild_ = !state.has_simulation;
     next_field_output_ = state.next_field_output;
     if (state.has_simulation) {
@@ -240,16 +243,28 @@ void ContactBodyModel::do_step(double current_time, double h) {
     if (steps > 1e8)
         throw ModelError(concat("communicationStepSize ", h, " needs ", steps,
                                 " substeps of internal_step; use smaller steps"));
+    // Each input's value at the step's start and its rate across the step: the derivative the
+    // master set, or with input_interpolation = ramp and no derivative, the line from the
+    // value at the previous communication point to the one set now.
+    const std::array<double*, 2> value = {&values_.foundation_velocity, &values_.top_displacement};
+    std::array<double, 2> start{}, rate{};
+    const bool ramp = values_.input_interpolation == static_cast<int>(InputInterpolation::ramp);
+    for (int i = 0; i < 2; ++i) {
+        const bool ramped = ramp && input_rates_[i] == 0;
+        start[i] = ramped ? previous_inputs_[i] : *value[i];
+        rate[i] = ramped ? (*value[i] - previous_inputs_[i]) / h : input_rates_[i];
+    }
     StepInputs in;
-    in.foundation_velocity = values_.foundation_velocity;
-    in.top_displacement = values_.top_displacement;
-    in.foundation_acceleration = input_rates_[0];
-    in.top_velocity = input_rates_[1];
+    in.foundation_velocity = start[0];
+    in.top_displacement = start[1];
+    in.foundation_acceleration = rate[0];
+    in.top_velocity = rate[1];
     try {
         sim_->do_step(h, in);
         // Interpolated inputs go on along their line until the master sets them again.
         values_.foundation_velocity += input_rates_[0] * h;
         values_.top_displacement += input_rates_[1] * h;
+        previous_inputs_ = {values_.foundation_velocity, values_.top_displacement};
         if (fields_) write_due_fields();
     } catch (const NumericalFailure& e) {
         throw StepError(concat("step from t = ", t, " failed, state restored to its start: ",

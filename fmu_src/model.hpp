@@ -18,6 +18,7 @@ struct ModelState {
     Values values;
     double start_time = 0;
     std::array<double, 2> input_rates{};  // d/dt foundation_velocity, top_displacement
+    std::array<double, 2> previous_inputs{};  // their values at the last communication point
     bool has_simulation = false;
     SimulationSnapshot simulation;
     // Field output so far: the times of the files written, and the index k of the next
@@ -65,6 +66,7 @@ private:
 
     Values values_;
     std::array<double, 2> input_rates_{};
+    std::array<double, 2> previous_inputs_{};  // where input_interpolation = ramp starts
     std::unique_ptr<Simulation> sim_;
     std::unique_ptr<FieldWriter> fields_;  // present while result_directory is set
     uint64_t next_field_output_ = 0;

@@ -18,6 +18,8 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 #define ACCESS_REAL(field) [](Values& v) -> double& { return v.field; }, nullptr
 #define ACCESS_INT(field) nullptr, [](Values& v) -> int& { return v.field; }
 #define ACCESS_STRING(field) nullptr, nullptr, [](Values& v) -> std::string& { return v.field; }
+#define ACCESS_ENUM(field, type) \
+    nullptr, [](Values& v) -> int& { return v.field; }, nullptr, type
 
 using T = Type;
 using C = Causality;
@@ -33,7 +35,7 @@ const std::vector<Variable> table = {
     {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, false, ACCESS_REAL(lambda)},
     {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 0, inf, true, ACCESS_REAL(mu)},
     {"friction_coefficient", 8, T::Real, C::parameter, V::tunable, "", "Coulomb friction coefficient F", 1.2, 0, inf, false, ACCESS_REAL(friction_coefficient)},
-    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, num_mass_variants - 1, false, ACCESS_INT(mass_matrix)},
+    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, num_mass_variants - 1, false, ACCESS_ENUM(mass_matrix, "MassMatrix")},
     {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 0, inf, true, ACCESS_REAL(internal_step)},
     {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve", 1e-10, 0, 1, true, ACCESS_REAL(contact_tolerance)},
     {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},
@@ -42,6 +44,7 @@ const std::vector<Variable> table = {
     {"damping_mass", 15, T::Real, C::parameter, V::fixed, "1/s", "Rayleigh damping: alpha of C = alpha M + beta A (M: the variant's mass matrix)", 0, 0, inf, false, ACCESS_REAL(damping_mass)},
     {"damping_stiffness", 16, T::Real, C::parameter, V::fixed, "s", "Rayleigh damping: beta of C = alpha M + beta A", 0, 0, inf, false, ACCESS_REAL(damping_stiffness)},
     {"min_internal_step", 17, T::Real, C::parameter, V::fixed, "s", "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)", 1e-9, 0, inf, true, ACCESS_REAL(min_internal_step)},
+    {"input_interpolation", 18, T::Enumeration, C::parameter, V::fixed, "", "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)", 0, 0, 1, false, ACCESS_ENUM(input_interpolation, "InputInterpolation")},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -143,11 +146,19 @@ Values start_values() {
     return values;
 }
 
-const std::vector<std::string>& mass_matrix_items() {
-    static const std::vector<std::string> items = {
-        "standard", "redistributed_normal", "redistributed_both", "standard_implicit_contact",
-        "redistributed_implicit_contact"};
-    return items;
+const std::vector<EnumerationType>& enumeration_types() {
+    static const std::vector<EnumerationType> types = {
+        {"MassMatrix", {"standard", "redistributed_normal", "redistributed_both",
+                        "standard_implicit_contact", "redistributed_implicit_contact"}},
+        {"InputInterpolation", {"hold", "ramp"}},
+    };
+    return types;
+}
+
+const EnumerationType& enumeration_type(const Variable& v) {
+    for (const EnumerationType& t : enumeration_types())
+        if (v.enumeration && std::string(v.enumeration) == t.name) return t;
+    throw std::logic_error(std::string("variable ") + v.name + " has no enumeration type");
 }
 
 const std::vector<std::string>& log_categories() {

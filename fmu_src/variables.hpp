@@ -18,6 +18,7 @@ struct Values {
     int nx, ny, mass_matrix;
     double internal_step, contact_tolerance, initial_gap;
     double damping_mass, damping_stiffness, min_internal_step;
+    int input_interpolation;  // InputInterpolation
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double foundation_velocity, top_displacement;
@@ -44,6 +45,7 @@ struct Variable {
     double& (*real)(Values&);  // exactly one of real / integer / string is set, by type
     int& (*integer)(Values&);
     std::string& (*string)(Values&) = nullptr;
+    const char* enumeration = nullptr;  // the EnumerationType's name, for Enumeration variables
 
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
@@ -66,8 +68,18 @@ const Variable* find_variable(unsigned value_reference);
 // Values with every start value.
 Values start_values();
 
-// Names of the enumeration items of mass_matrix, in value order (SPEC §2).
-const std::vector<std::string>& mass_matrix_items();
+// How held inputs enter a step: at their value (FMI 2.0 without derivatives), or ramped from
+// the value at the previous communication point (one step of delay, no jumps).
+enum class InputInterpolation : int { hold = 0, ramp = 1 };
+
+// The enumeration types: XML name and item names in value order. Each Enumeration variable
+// names its type (Variable::enumeration).
+struct EnumerationType {
+    const char* name;
+    std::vector<std::string> items;
+};
+const std::vector<EnumerationType>& enumeration_types();
+const EnumerationType& enumeration_type(const Variable& v);
 // Log categories, in the order of the XML.
 const std::vector<std::string>& log_categories();
 

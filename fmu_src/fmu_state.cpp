@@ -34,7 +34,7 @@ void visit(O& o, F&& f) {
                     &o.energy_minus_friction_work, &o.normal_force, &o.friction_force,
                     &o.corner_pressure, &o.corner_friction, &o.top_reaction_x, &o.top_reaction_y,
                     &o.max_penetration, &o.damping_work, &o.clamp_work, &o.normal_contact_work,
-                    &o.friction_dissipation, &o.foundation_work})
+                    &o.friction_dissipation, &o.foundation_work, &o.top_position, &o.top_velocity})
         f(*x);
     f(o.active_contact_nodes);
     f(o.slipping_contact_nodes);
@@ -144,10 +144,8 @@ std::vector<char> serialize(const FmuState& s) {
         else w.string(v.string(values));
     }
     w.value(s.model.start_time);
-    w.value(s.model.input_rates[0]);
-    w.value(s.model.input_rates[1]);
-    w.value(s.model.previous_inputs[0]);
-    w.value(s.model.previous_inputs[1]);
+    for (double x : s.model.input_rates) w.value(x);
+    for (double x : s.model.previous_inputs) w.value(x);
     w.doubles(s.model.field_output_times);
     w.value<uint64_t>(s.model.next_field_output);
     w.value<uint8_t>(s.model.has_simulation);
@@ -229,10 +227,8 @@ FmuState deserialize(const char* bytes, size_t size) {
         }
     }
     s.model.start_time = r.finite("start time");
-    s.model.input_rates[0] = r.finite("foundation_velocity derivative");
-    s.model.input_rates[1] = r.finite("top_displacement derivative");
-    s.model.previous_inputs[0] = r.finite("foundation_velocity at the last communication point");
-    s.model.previous_inputs[1] = r.finite("top_displacement at the last communication point");
+    for (double& x : s.model.input_rates) x = r.finite("input derivative");
+    for (double& x : s.model.previous_inputs) x = r.finite("input at the last communication point");
     s.model.field_output_times = r.finite_doubles("field output times");
     s.model.next_field_output = r.value<uint64_t>("next field output");
     if (s.model.next_field_output < s.model.field_output_times.size())

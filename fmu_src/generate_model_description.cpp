@@ -44,6 +44,7 @@ const std::map<std::string, std::string> units = {
     {"1/s", R"(s="-1")"},
     {"m/s", R"(m="1" s="-1")"},
     {"kg/m3", R"(kg="1" m="-3")"},
+    {"kg/m", R"(kg="1" m="-1")"},
     {"Pa", R"(kg="1" m="-1" s="-2")"},
     {"N/m", R"(kg="1" s="-2")"},
     {"J/m", R"(kg="1" m="1" s="-2")"},

@@ -152,7 +152,7 @@ void ContactBodyModel::initialize() {
     build_simulation(values_);
     open_field_output();
     values_.out = Observables{};
-    previous_inputs_ = {values_.foundation_velocity, values_.top_displacement};
+    previous_inputs_ = {values_.foundation_velocity, values_.top_displacement, values_.top_force};
     rebuild_ = false;
     next_field_output_ = 0;
     if (fields_) write_due_fields();  // the initial state
@@ -246,10 +246,11 @@ void ContactBodyModel::do_step(double current_time, double h) {
     // Each input's value at the step's start and its rate across the step: the derivative the
     // master set, or with input_interpolation = ramp and no derivative, the line from the
     // value at the previous communication point to the one set now.
-    const std::array<double*, 2> value = {&values_.foundation_velocity, &values_.top_displacement};
-    std::array<double, 2> start{}, rate{};
+    const std::array<double*, num_inputs> value = {
+        &values_.foundation_velocity, &values_.top_displacement, &values_.top_force};
+    std::array<double, num_inputs> start{}, rate{};
     const bool ramp = values_.input_interpolation == static_cast<int>(InputInterpolation::ramp);
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < num_inputs; ++i) {
         const bool ramped = ramp && input_rates_[i] == 0;
         start[i] = ramped ? previous_inputs_[i] : *value[i];
         rate[i] = ramped ? (*value[i] - previous_inputs_[i]) / h : input_rates_[i];
@@ -259,12 +260,14 @@ void ContactBodyModel::do_step(double current_time, double h) {
     in.top_displacement = start[1];
     in.foundation_acceleration = rate[0];
     in.top_velocity = rate[1];
+    in.top_force = start[2];
+    in.top_force_rate = rate[2];
     try {
         sim_->do_step(h, in);
         // Interpolated inputs go on along their line until the master sets them again.
-        values_.foundation_velocity += input_rates_[0] * h;
-        values_.top_displacement += input_rates_[1] * h;
-        previous_inputs_ = {values_.foundation_velocity, values_.top_displacement};
+        for (int i = 0; i < num_inputs; ++i) *value[i] += input_rates_[i] * h;
+        previous_inputs_ = {values_.foundation_velocity, values_.top_displacement,
+                            values_.top_force};
         if (fields_) write_due_fields();
     } catch (const NumericalFailure& e) {
         throw StepError(concat("step from t = ", t, " failed, state restored to its start: ",

@@ -17,8 +17,8 @@ namespace contactbody::fmu {
 struct ModelState {
     Values values;
     double start_time = 0;
-    std::array<double, 2> input_rates{};  // d/dt foundation_velocity, top_displacement
-    std::array<double, 2> previous_inputs{};  // their values at the last communication point
+    std::array<double, num_inputs> input_rates{};  // d/dt of each input (input_index order)
+    std::array<double, num_inputs> previous_inputs{};  // at the last communication point
     bool has_simulation = false;
     SimulationSnapshot simulation;
     // Field output so far: the times of the files written, and the index k of the next
@@ -65,8 +65,8 @@ private:
     void write_due_fields();
 
     Values values_;
-    std::array<double, 2> input_rates_{};
-    std::array<double, 2> previous_inputs_{};  // where input_interpolation = ramp starts
+    std::array<double, num_inputs> input_rates_{};
+    std::array<double, num_inputs> previous_inputs_{};  // where input_interpolation = ramp starts
     std::unique_ptr<Simulation> sim_;
     std::unique_ptr<FieldWriter> fields_;  // present while result_directory is set
     uint64_t next_field_output_ = 0;

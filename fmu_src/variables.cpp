@@ -45,9 +45,14 @@ const std::vector<Variable> table = {
     {"damping_stiffness", 16, T::Real, C::parameter, V::fixed, "s", "Rayleigh damping: beta of C = alpha M + beta A", 0, 0, inf, false, ACCESS_REAL(damping_stiffness)},
     {"min_internal_step", 17, T::Real, C::parameter, V::fixed, "s", "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)", 1e-9, 0, inf, true, ACCESS_REAL(min_internal_step)},
     {"input_interpolation", 18, T::Enumeration, C::parameter, V::fixed, "", "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)", 0, 0, 1, false, ACCESS_ENUM(input_interpolation, "InputInterpolation")},
+    {"top_control", 19, T::Enumeration, C::parameter, V::fixed, "", "Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)", 0, 0, 1, false, ACCESS_ENUM(top_control, "TopControl")},
+    {"top_mass", 23, T::Real, C::parameter, V::fixed, "kg/m", "Mass of the top plate (top_control = force)", 1.0, 0, inf, true, ACCESS_REAL(top_mass)},
+    {"initial_velocity_x", 24, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, x (the clamped dofs excepted)", 0, none, none, false, ACCESS_REAL(initial_velocity_x)},
+    {"initial_velocity_y", 25, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, y (with the plate under force control)", 0, none, none, false, ACCESS_REAL(initial_velocity_y)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
+    {"top_force", 22, T::Real, C::input, V::continuous, "N/m", "Force pressing the top plate down (top_control = force), positive downwards", 0, none, none, false, ACCESS_REAL(top_force)},
     // Outputs
     {"energy", 100, T::Real, C::output, V::continuous, "J/m", "Total energy E (paper eq. 19) with the variant's mass matrix", none, none, none, false, ACCESS_REAL(out.energy)},
     {"kinetic_energy", 101, T::Real, C::output, V::continuous, "J/m", "Kinetic part of E", none, none, none, false, ACCESS_REAL(out.kinetic_energy)},
@@ -68,6 +73,8 @@ const std::vector<Variable> table = {
     {"normal_contact_work", 116, T::Real, C::output, V::continuous, "J/m", "Work of the normal contact forces on the body since the start", none, none, none, false, ACCESS_REAL(out.normal_contact_work)},
     {"friction_dissipation", 117, T::Real, C::output, V::continuous, "J/m", "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)", none, none, none, false, ACCESS_REAL(out.friction_dissipation)},
     {"foundation_work", 118, T::Real, C::output, V::continuous, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)", none, none, none, false, ACCESS_REAL(out.foundation_work)},
+    {"top_position", 119, T::Real, C::output, V::continuous, "m", "Vertical displacement u_y of the top edge (the plate under force control)", none, none, none, false, ACCESS_REAL(out.top_position)},
+    {"top_velocity", 120, T::Real, C::output, V::continuous, "m/s", "Vertical velocity of the top edge", none, none, none, false, ACCESS_REAL(out.top_velocity)},
 };
 
 }  // namespace
@@ -89,6 +96,10 @@ SceneParameters Values::scene() const {
     p.damping_mass = damping_mass;
     p.damping_stiffness = damping_stiffness;
     p.min_internal_step = min_internal_step;
+    p.force_control = top_control == static_cast<int>(TopControl::force);
+    p.top_mass = top_mass;
+    p.initial_velocity_x = initial_velocity_x;
+    p.initial_velocity_y = initial_velocity_y;
     return p;
 }
 
@@ -123,7 +134,8 @@ void check_range(const Variable& v, double value) {
 
 int input_index(const Variable& v) {
     if (v.causality != Causality::input) return -1;
-    return std::string(v.name) == "foundation_velocity" ? 0 : 1;
+    const std::string name = v.name;
+    return name == "foundation_velocity" ? 0 : name == "top_displacement" ? 1 : 2;
 }
 
 const Variable* find_variable(unsigned value_reference) {
@@ -151,6 +163,7 @@ const std::vector<EnumerationType>& enumeration_types() {
         {"MassMatrix", {"standard", "redistributed_normal", "redistributed_both",
                         "standard_implicit_contact", "redistributed_implicit_contact"}},
         {"InputInterpolation", {"hold", "ramp"}},
+        {"TopControl", {"displacement", "force"}},
     };
     return types;
 }

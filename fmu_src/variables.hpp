@@ -19,9 +19,11 @@ struct Values {
     double internal_step, contact_tolerance, initial_gap;
     double damping_mass, damping_stiffness, min_internal_step;
     int input_interpolation;  // InputInterpolation
+    int top_control;          // TopControl
+    double top_mass, initial_velocity_x, initial_velocity_y;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
-    double foundation_velocity, top_displacement;
+    double foundation_velocity, top_displacement, top_force;
     Observables out;
 
     SceneParameters scene() const;
@@ -60,7 +62,8 @@ constexpr size_t max_string_length = 4096;
 // Throws std::invalid_argument naming the variable if value is NULL, too long or not printable.
 void check_string(const Variable& v, const char* value);
 
-// True for the two inputs; index 0 = foundation_velocity, 1 = top_displacement.
+// The inputs' index: 0 = foundation_velocity, 1 = top_displacement, 2 = top_force; -1 else.
+constexpr int num_inputs = 3;
 int input_index(const Variable& v);
 
 // nullptr when no variable has this reference.
@@ -71,6 +74,8 @@ Values start_values();
 // How held inputs enter a step: at their value (FMI 2.0 without derivatives), or ramped from
 // the value at the previous communication point (one step of delay, no jumps).
 enum class InputInterpolation : int { hold = 0, ramp = 1 };
+// The top edge: clamped to top_displacement, or a rigid plate pushed by top_force.
+enum class TopControl : int { displacement = 0, force = 1 };
 
 // The enumeration types: XML name and item names in value order. Each Enumeration variable
 // names its type (Variable::enumeration).

@@ -125,12 +125,12 @@ def payload_offsets(md):
         off[v.name] = pos
         pos += {"Real": 8, "String": 8}.get(v.type, 4)  # an empty String: its u64 length
     off["start_time"] = pos
-    off["field_output_count"] = pos + 40  # after 2 rates and 2 previous inputs; no times follow
-    off["next_field_output"] = pos + 48
-    off["simulation_flag"] = pos + 56
-    off["time"] = pos + 57
-    off["u_length"] = pos + 65
-    off["u"] = pos + 73
+    off["field_output_count"] = pos + 56  # after 3 rates and 3 previous inputs; no times follow
+    off["next_field_output"] = pos + 64
+    off["simulation_flag"] = pos + 72
+    off["time"] = pos + 73
+    off["u_length"] = pos + 81
+    off["u"] = pos + 89
     return off
 
 
@@ -151,7 +151,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 6": blob[:8] + struct.pack("<I", 6) + blob[12:],
+        "version 7": blob[:8] + struct.pack("<I", 7) + blob[12:],
+        "version 5 (before the top force)": blob[:8] + struct.pack("<I", 5) + blob[12:],
         "version 4 (before input_interpolation)": blob[:8] + struct.pack("<I", 4) + blob[12:],
         "version 3 (before cached substep sizes)": blob[:8] + struct.pack("<I", 3) + blob[12:],
         "version 2 (before damping)": blob[:8] + struct.pack("<I", 2) + blob[12:],

@@ -63,6 +63,9 @@ void check_parameters(const SceneParameters& p) {
     require_positive("min_internal_step", p.min_internal_step);
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
+    if (p.force_control) require_positive("top_mass", p.top_mass);
+    if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
+    if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
         reject("initial_gap", "finite and >= 0", p.initial_gap);
     if (!(std::isfinite(p.damping_mass) && p.damping_mass >= 0))
@@ -89,31 +92,51 @@ Discretization discretize(const SceneParameters& p) {
     d.contact_at_end_of_step = contact_at_end_of_step(p.mass_matrix);
 
     const int n = d.mesh.num_dofs();
-    std::vector<char> clamped(n, 0);
-    for (int node : d.mesh.top_nodes) clamped[dof_x(node)] = clamped[dof_y(node)] = 1;
+    std::vector<char> clamped(n, 0), tied(n, 0);
+    for (int node : d.mesh.top_nodes) {
+        clamped[dof_x(node)] = 1;
+        (p.force_control ? tied : clamped)[dof_y(node)] = 1;
+    }
     d.free_index.assign(n, -1);
     for (int dof = 0; dof < n; ++dof) {
+        if (clamped[dof] || tied[dof]) d.top_dofs.push_back(dof);
         if (clamped[dof]) {
             d.clamped_dofs.push_back(dof);
-        } else {
-            d.free_index[dof] = static_cast<int>(d.free_dofs.size());
-            d.free_dofs.push_back(dof);
+            continue;
+        }
+        d.moving_dofs.push_back(dof);
+        if (tied[dof]) continue;
+        d.free_index[dof] = static_cast<int>(d.free_dofs.size());
+        d.free_dofs.push_back(dof);
+    }
+    const int nf = static_cast<int>(d.free_dofs.size()) + (p.force_control ? 1 : 0);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int k = 0; k < static_cast<int>(d.free_dofs.size()); ++k) t.emplace_back(d.free_dofs[k], k, 1.0);
+    if (p.force_control) {
+        d.plate_index = nf - 1;
+        d.plate_mass = p.top_mass;
+        for (int node : d.mesh.top_nodes) {
+            t.emplace_back(dof_y(node), d.plate_index, 1.0);
+            d.free_index[dof_y(node)] = d.plate_index;
         }
     }
-    const SparseMatrix Pf = selector(d.free_dofs, n), Pc = selector(d.clamped_dofs, n);
-    const SparseMatrix PfT = Pf.transpose(), PcT = Pc.transpose();
-    d.M_free_rows = Pf * d.M;
-    d.M_clamped_rows = Pc * d.M;
-    d.A_clamped_rows = Pc * d.A;
-    d.A_free_clamped = Pf * d.A * PcT;
+    d.expand.resize(n, nf);
+    d.expand.setFromTriplets(t.begin(), t.end());
+    const SparseMatrix R = d.expand.transpose(), Pc = selector(d.clamped_dofs, n);
+    const SparseMatrix PcT = Pc.transpose(), Pt = selector(d.top_dofs, n);
+    d.M_free_rows = R * d.M;
+    d.M_top_rows = Pt * d.M;
+    d.A_top_rows = Pt * d.A;
+    d.A_free_clamped = R * d.A * PcT;
     d.M_free_clamped = d.M_free_rows * PcT;
-    d.A_free = Pf * d.A * PfT;
-    d.M_free = d.M_free_rows * PfT;
+    d.A_free = R * d.A * d.expand;
+    d.M_free = d.M_free_rows * d.expand;
+    if (p.force_control) d.M_free.coeffRef(d.plate_index, d.plate_index) += p.top_mass;
     d.C.resize(n, n);
     if (p.damped()) d.C = p.damping_mass * d.M + p.damping_stiffness * d.A;
-    d.C_free_rows = Pf * d.C;
+    d.C_free_rows = R * d.C;
     d.C_free_clamped = d.C_free_rows * PcT;
-    d.C_free = d.C_free_rows * PfT;
+    d.C_free = d.C_free_rows * d.expand;
     for (int node : d.mesh.contact_nodes) {
         d.contact_x.push_back(d.free_index[dof_x(node)]);
         d.contact_y.push_back(d.free_index[dof_y(node)]);

@@ -39,6 +39,12 @@ struct SceneParameters {
     double initial_gap = 0;
     // Rayleigh damping C = damping_mass M + damping_stiffness A (M: the variant's mass matrix).
     double damping_mass = 0, damping_stiffness = 0;
+    // The top edge: clamped to top_displacement, or a rigid plate of mass top_mass (kg/m) with
+    // u_x = 0, pressed down by the force top_force.
+    bool force_control = false;
+    double top_mass = 1.0;
+    // Uniform initial velocity of the body (and of the plate), m/s.
+    double initial_velocity_x = 0, initial_velocity_y = 0;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 };
 
@@ -54,14 +60,22 @@ struct Discretization {
     bool contact_at_end_of_step = false;  // else on u^{k+1/2} (the paper's midpoint)
     SparseMatrix A;                 // all dofs
     SparseMatrix M;                 // the variant's mass matrix, all dofs
-    std::vector<int> free_dofs;     // ascending
-    std::vector<int> clamped_dofs;  // top edge, x and y, ascending
-    std::vector<int> free_index;    // dof -> position in free_dofs, or -1 when clamped
-    // Blocks used by the stepper: rows free / clamped, columns all / clamped.
+    // The unknowns ("free", n_f of them): every dof that is neither clamped nor tied to the
+    // top plate, then, under force control, the plate's vertical displacement w (plate_index).
+    // expand (all dofs x free) maps them to all dofs: its transpose sums the plate's rows.
+    std::vector<int> free_dofs;     // ascending: the dofs that are unknowns themselves
+    std::vector<int> clamped_dofs;  // top edge x, and y under displacement control; ascending
+    std::vector<int> moving_dofs;   // all but the clamped ones (free and tied), ascending
+    std::vector<int> top_dofs;      // top edge, x and y, ascending: the reaction's rows
+    std::vector<int> free_index;    // dof -> its unknown (the plate's for tied dofs), or -1
+    int plate_index = -1;           // force control: the unknown w
+    double plate_mass = 0;          // kg/m, force control
+    SparseMatrix expand;
+    // Blocks used by the stepper: rows free / top, columns all / clamped.
     RowMajorSparseMatrix M_free_rows;  // row-major: the substep multiplies by it every time
     SparseMatrix A_free_clamped, M_free_clamped;
-    RowMajorSparseMatrix M_clamped_rows, A_clamped_rows;  // few rows, read row by row
-    SparseMatrix A_free, M_free;    // free x free
+    RowMajorSparseMatrix M_top_rows, A_top_rows;  // few rows, read row by row
+    SparseMatrix A_free, M_free;    // free x free (M_free with the plate's mass)
     // Rayleigh damping C = alpha M + beta A and the same blocks of it; all empty (no
     // entries) when undamped, so that the undamped scheme is computed exactly as before.
     SparseMatrix C;

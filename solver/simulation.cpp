@@ -33,7 +33,7 @@ void Simulation::initial_reactions() {
         ++o.active_contact_nodes;
         if (i == 0) o.corner_pressure = up / (0.5 * d.mesh.hx());
     }
-    for (int dof : d.clamped_dofs)
+    for (int dof : d.top_dofs)
         (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product_[dof];
     observables_ = o;
     energies_current_ = false;
@@ -69,7 +69,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const Observables saved_observables = observables_;
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
-        move_clamp(in.top_displacement, in.top_velocity);
+        if (!stepper_.parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
         for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
         state_.time = t0 + h;  // no drift from summing substeps
 
@@ -91,6 +91,13 @@ void Simulation::do_step(double h, const StepInputs& in) {
         throw;
     }
     statistics_ = stats;
+}
+
+double Simulation::plate_kinetic_energy(const State& s) const {
+    const Discretization& d = stepper_.discretization();
+    if (d.plate_index < 0) return 0;
+    const double v = s.v[dof_y(d.mesh.top_nodes[0])];
+    return 0.5 * d.plate_mass * v * v;
 }
 
 void Simulation::check_finite(const Observables& o) const {
@@ -132,7 +139,7 @@ void Simulation::move_clamp(double top, double rate) {
 double Simulation::energy(const State& s) {
     const Discretization& d = stepper_.discretization();
     product_.noalias() = d.M * s.v;
-    double e = 0.5 * s.v.dot(product_);
+    double e = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
     product_.noalias() = d.A * s.u;
     return e + 0.5 * s.u.dot(product_);
 }
@@ -145,6 +152,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     load.top_end = in.top_displacement + in.top_velocity * s1;
     load.top_rate = in.top_velocity;
     load.foundation_velocity = in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
+    load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
     SubstepReport r;
     try {
@@ -248,7 +256,7 @@ const Observables& Simulation::observables() {
     if (!energies_current_) {
         const Discretization& d = stepper_.discretization();
         product_.noalias() = d.M * state_.v;
-        observables_.kinetic_energy = 0.5 * state_.v.dot(product_);
+        observables_.kinetic_energy = 0.5 * state_.v.dot(product_) + plate_kinetic_energy(state_);
         product_.noalias() = d.A * state_.u;
         observables_.strain_energy = 0.5 * state_.u.dot(product_);
         observables_.energy = observables_.kinetic_energy + observables_.strain_energy;
@@ -259,6 +267,9 @@ const Observables& Simulation::observables() {
         observables_.normal_contact_work = works_.normal_contact;
         observables_.friction_dissipation = works_.friction_dissipation;
         observables_.foundation_work = works_.foundation;
+        const int top_y = dof_y(d.mesh.top_nodes[0]);
+        observables_.top_position = state_.u[top_y];
+        observables_.top_velocity = state_.v[top_y];
         energies_current_ = true;
     }
     return observables_;

@@ -11,6 +11,7 @@ struct Observables {
     // Works on the body since t0 (Works): E - E(0) = clamp + normal_contact + friction - damping.
     double damping_work = 0, clamp_work = 0, normal_contact_work = 0;
     double friction_dissipation = 0, foundation_work = 0;
+    double top_position = 0, top_velocity = 0;  // u_y, v_y of the top edge (the plate)
     // Averaged over the last communication step.
     double normal_force = 0, friction_force = 0;
     double corner_pressure = 0, corner_friction = 0;
@@ -24,6 +25,7 @@ struct Observables {
 struct StepInputs {
     double foundation_velocity = 0, top_displacement = 0;
     double foundation_acceleration = 0, top_velocity = 0;
+    double top_force = 0, top_force_rate = 0;  // force control
 };
 
 // Everything that evolves in time, as plain data. The factorizations are derived from the
@@ -91,6 +93,7 @@ private:
     std::string growth_advice() const;              // what to change when E runs away
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state (uses product_)
+    double plate_kinetic_energy(const State& s) const;  // force control: 1/2 m_p v_top^2
 
     Stepper stepper_;
     State state_, saved_;

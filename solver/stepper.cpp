@@ -45,7 +45,7 @@ struct Stepper::Factor {
 
 Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discretize(params)) {
     options_.tolerance = params.contact_tolerance;
-    const Eigen::Index nf = static_cast<Eigen::Index>(disc_.free_dofs.size());
+    const Eigen::Index nf = disc_.expand.cols();
     const Eigen::Index nc = num_contact_nodes();
     z_.resize(disc_.mesh.num_dofs());
     u_half_.resize(disc_.mesh.num_dofs());
@@ -68,6 +68,8 @@ State Stepper::initial_state(double top_displacement) const {
     s.v.setZero(mesh.num_dofs());
     for (int n = 0; n < mesh.num_nodes(); ++n)
         s.u[dof_y(n)] = top_displacement * mesh.point(n).y / mesh.height;
+    for (int dof : disc_.moving_dofs)
+        s.v[dof] = dof % 2 == 0 ? params_.initial_velocity_x : params_.initial_velocity_y;
     s.lambda.setZero(params_.friction_coefficient > 0 ? 2 * num_contact_nodes()
                                                       : num_contact_nodes());
     return s;
@@ -166,6 +168,10 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     rhs_.noalias() = d.M_free_rows * z_;
     rhs_.noalias() -= f.K_free_clamped * clamped_half_;
     if (params_.damped()) rhs_.noalias() += c2 * (d.C_free_rows * s.u);
+    if (d.plate_index >= 0) {  // the plate's own inertia and the force pressing it down
+        const int top_y = dof_y(d.mesh.top_nodes[0]);
+        rhs_[d.plate_index] += d.plate_mass * z_[top_y] - load.top_force;
+    }
     laps.lap(timings_.update);
     Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
     laps.lap(timings_.solve);
@@ -205,7 +211,11 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     f.cholesky->backward(u_half_free_);
     laps.lap(timings_.solve);
 
-    for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
+    if (d.plate_index < 0) {
+        for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
+    } else {
+        u_half_.noalias() = d.expand * u_half_free_;  // the plate's w on every top y dof
+    }
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];
     if (params_.damped()) {
         du_ = 2 * (u_half_ - s.u);  // u^{k+1} - u^k on all dofs
@@ -213,18 +223,23 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report.work.damping = du_.dot(C_du_) / dt;
     }
 
-    // Force of the clamp on the body: the clamped rows' residual of the midpoint equation;
-    // its work is over the clamped dofs' displacement in this substep.
-    for (Eigen::Index k = 0; k < clamped_half_.size(); ++k) {
+    // Force of the clamp (or of the plate) on the body: the top rows' residual of the midpoint
+    // equation. Its work: over the clamped dofs' motion; under force control the top force's
+    // over the plate's, which with the plate's kinetic energy in E closes the balance.
+    for (size_t k = 0; k < d.top_dofs.size(); ++k) {
+        const int dof = d.top_dofs[k];
         double r = 0;
-        for (RowMajorSparseMatrix::InnerIterator it(d.M_clamped_rows, k); it; ++it)
+        for (RowMajorSparseMatrix::InnerIterator it(d.M_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
             r += it.value() * (c1 * u_half_[it.col()] - z_[it.col()]);
-        for (RowMajorSparseMatrix::InnerIterator it(d.A_clamped_rows, k); it; ++it)
+        for (RowMajorSparseMatrix::InnerIterator it(d.A_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
             r += it.value() * u_half_[it.col()];
-        if (params_.damped()) r += 0.5 * c2 * C_du_[d.clamped_dofs[k]];
-        (d.clamped_dofs[k] % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
-        report.work.clamp += r * 2 * (clamped_half_[k] - s.u[d.clamped_dofs[k]]);
+        if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
+        (dof % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
+        if (d.free_index[dof] < 0) report.work.clamp += r * 2 * (u_half_[dof] - s.u[dof]);
     }
+    if (d.plate_index >= 0)
+        report.work.clamp -= load.top_force * 2 * (u_half_free_[d.plate_index] -
+                                                   s.u[dof_y(d.mesh.top_nodes[0])]);
 
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
@@ -258,9 +273,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     report.corner_lambda_N = snapshot_.lambda_N[0];
     report.corner_lambda_T = snapshot_.lambda_T[0];
 
-    // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the free dofs;
+    // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.
-    for (int dof : d.free_dofs) {
+    for (int dof : d.moving_dofs) {
         const double du = u_half_[dof] - s.u[dof];
         s.v[dof] = 2 * c2 * du - s.v[dof];
         s.u[dof] += 2 * du;

@@ -30,13 +30,15 @@ struct State {
 struct SubstepLoad {
     double top_start = 0, top_end = 0, top_rate = 0;
     double foundation_velocity = 0;
+    double top_force = 0;  // force control: N/m pressing the plate down, over the substep
 };
 
 // Exact discrete work of each force on the body (J/m), so that over any run
 //   E - E(0) = clamp + normal_contact + friction - damping,
 // and friction = foundation - friction_dissipation.
 struct Works {
-    double clamp = 0;                 // clamp reaction over the clamped dofs' displacement
+    double clamp = 0;                 // clamp reaction over the clamped dofs' displacement, or
+                                      // the top force over the plate's (force control)
     double normal_contact = 0;        // sum lambda_N (u_N^{k+1} - u_N^k)
     double friction = 0;              // sum lambda_T (u_x^{k+1} - u_x^k)
     double friction_dissipation = 0;  // sum lambda_T (V dt - (u_x^{k+1} - u_x^k)), >= 0
@@ -100,7 +102,8 @@ public:
     const SceneParameters& parameters() const { return params_; }
     int num_contact_nodes() const { return static_cast<int>(disc_.contact_x.size()); }
 
-    // The paper's initial state: u_x = 0, u_y = top * y / H, v = 0.
+    // The paper's initial state: u_x = 0, u_y = top * y / H, and v = the initial velocity on
+    // the moving dofs (0 unless initial_velocity_x, _y are set).
     State initial_state(double top_displacement) const;
     // Friction coefficient is tunable between substeps (F = 0 drops the tangential unknowns).
     void set_friction_coefficient(double friction);

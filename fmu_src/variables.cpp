@@ -49,6 +49,7 @@ const std::vector<Variable> table = {
     {"top_mass", 23, T::Real, C::parameter, V::fixed, "kg/m", "Mass of the top plate (top_control = force)", 1.0, 0, inf, true, ACCESS_REAL(top_mass)},
     {"initial_velocity_x", 24, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, x (the clamped dofs excepted)", 0, none, none, false, ACCESS_REAL(initial_velocity_x)},
     {"initial_velocity_y", 25, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, y (with the plate under force control)", 0, none, none, false, ACCESS_REAL(initial_velocity_y)},
+    {"initial_state", 26, T::Enumeration, C::parameter, V::fixed, "", "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement with the foundation at rest, reached by a quasi-static frictional load path; top_control = displacement)", 0, 0, 1, false, ACCESS_ENUM(initial_state, "InitialState")},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -100,6 +101,7 @@ SceneParameters Values::scene() const {
     p.top_mass = top_mass;
     p.initial_velocity_x = initial_velocity_x;
     p.initial_velocity_y = initial_velocity_y;
+    p.static_initial_state = initial_state == static_cast<int>(InitialState::static_equilibrium);
     return p;
 }
 
@@ -164,6 +166,7 @@ const std::vector<EnumerationType>& enumeration_types() {
                         "standard_implicit_contact", "redistributed_implicit_contact"}},
         {"InputInterpolation", {"hold", "ramp"}},
         {"TopControl", {"displacement", "force"}},
+        {"InitialState", {"paper", "static"}},
     };
     return types;
 }

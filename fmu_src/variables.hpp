@@ -20,6 +20,7 @@ struct Values {
     double damping_mass, damping_stiffness, min_internal_step;
     int input_interpolation;  // InputInterpolation
     int top_control;          // TopControl
+    int initial_state;        // InitialState
     double top_mass, initial_velocity_x, initial_velocity_y;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
@@ -76,6 +77,8 @@ Values start_values();
 enum class InputInterpolation : int { hold = 0, ramp = 1 };
 // The top edge: clamped to top_displacement, or a rigid plate pushed by top_force.
 enum class TopControl : int { displacement = 0, force = 1 };
+// The initial displacement: the paper's linear profile, or the static equilibrium.
+enum class InitialState : int { paper = 0, static_equilibrium = 1 };
 
 // The enumeration types: XML name and item names in value order. Each Enumeration variable
 // names its type (Variable::enumeration).

@@ -104,3 +104,29 @@ def test_a_constant_force_is_carried_by_the_foundation(fmu_path):
     late = r["time"] > 0.005
     assert np.mean(r["normal_force"][late]) == pytest.approx(15000, rel=0.03)
     assert np.mean(r["top_reaction_y"][late]) == pytest.approx(-15000, rel=0.01)
+
+
+@pytest.mark.parametrize("variant", [0, 1, 3, 4])
+@pytest.mark.parametrize("friction", [0.0, 0.5])
+def test_static_initial_state_stays_at_rest(fmu_path, variant, friction):
+    """initial_state = static with the foundation at rest and a constant load: the body stays at
+    rest, kinetic energy <= 1e-12 x strain energy over 0.01 s (measured <= 1.1e-15), and the
+    outputs at t0 carry the preload."""
+    r = fmpy.simulate_fmu(fmu_path, stop_time=0.01, output_interval=1e-4,
+                          start_values={"initial_state": 1, "foundation_velocity": 0.0,
+                                        "friction_coefficient": friction, "mass_matrix": variant},
+                          output=["kinetic_energy", "strain_energy", "normal_force",
+                                  "top_reaction_y"])
+    assert np.all(r["kinetic_energy"] <= 1e-12 * r["strain_energy"])
+    assert r["normal_force"][0] > 1e4 and r["top_reaction_y"][0] == pytest.approx(
+        -r["normal_force"][0], rel=1e-9)
+    np.testing.assert_allclose(r["normal_force"], r["normal_force"][0], rtol=1e-6)
+
+
+def test_static_initial_state_is_refused_with_force_control(instance, vr):
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    instance.setInteger([vr["initial_state"], vr["top_control"]], [1, 1])
+    with pytest.raises(Exception):
+        instance.exitInitializationMode()
+    assert "not available with top_control = force" in instance.text()

@@ -45,6 +45,9 @@ struct SceneParameters {
     double top_mass = 1.0;
     // Uniform initial velocity of the body (and of the plate), m/s.
     double initial_velocity_x = 0, initial_velocity_y = 0;
+    // Initial displacement: the paper's linear profile, or the static equilibrium under the
+    // initial top displacement with the foundation at rest (displacement control only).
+    bool static_initial_state = false;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 };
 

@@ -13,7 +13,35 @@ Simulation::Simulation(const SceneParameters& params, double initial_top_displac
     : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
     state_.time = start_time;
     product_.resize(state_.u.size());
+    if (params.static_initial_state) static_initial_state(initial_top_displacement);
     initial_reactions();
+}
+
+// A quasi-static load path: the top displacement goes from 0 to its initial value in 10
+// substeps so long (1e3 s) that the mass terms weigh 1e-15 of the stiffness, with the
+// foundation at rest, so that friction acts on each increment's slip; then one more substep
+// at the final load, over which nothing moves: its u^{k+1/2} = u^{k+1} is in static balance
+// with contact and friction, for every variant. The body starts there at rest.
+void Simulation::static_initial_state(double top) {
+    constexpr int increments = 10;
+    constexpr double quasi_static = 1e3;
+    State s = stepper_.initial_state(0.0);
+    s.v.setZero();
+    SubstepLoad load;
+    for (int k = 1; k <= increments + 1; ++k) {
+        load.top_start = top * std::min(k - 1, increments) / increments;
+        load.top_end = top * std::min(k, increments) / increments;
+        try {
+            stepper_.substep(s, quasi_static, load);
+        } catch (const ContactSolveError& e) {
+            throw std::invalid_argument(
+                std::string("initial_state = static: the load path's contact solve failed (") +
+                e.what() + "); use initial_state = paper");
+        }
+    }
+    s.v.setZero();
+    s.time = state_.time;
+    state_ = s;
 }
 
 // Before the first step the force outputs describe the initial state: the forces in static

@@ -1,11 +1,16 @@
 """The force-driven top (scenes issue, item 1): a rigid plate of mass top_mass with u_x = 0,
-pushed down by the input top_force; initial velocities; the impact scene (item 4)."""
+pushed down by the input top_force; initial velocities; the static initial state; and the
+scenes of item 4 (impact, lift-off and re-contact, reversal: examples/scenes.py)."""
+import sys
+
 import fmpy
 import numpy as np
 import pytest
 from fmpy.fmi2 import FMU2Slave
 
-from conftest import Instance
+from conftest import ROOT, Instance
+
+sys.path.insert(0, str(ROOT / "examples"))
 
 WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work", "energy"]
 
@@ -130,3 +135,25 @@ def test_static_initial_state_is_refused_with_force_control(instance, vr):
     with pytest.raises(Exception):
         instance.exitInitializationMode()
     assert "not available with top_control = force" in instance.text()
+
+
+def test_lift_off_and_re_contact(fmu_path):
+    """examples/scenes.py: the top force goes 15 -> -5 -> 15 kN/m (ramped): the contact opens
+    (measured from 7 ms) and closes again by the end."""
+    import scenes
+    r = scenes.lift_off(fmu_path)
+    open_steps = r["active_contact_nodes"] == 0
+    assert open_steps.any() and not open_steps[0] and r["active_contact_nodes"][-1] > 0
+    # normal_force is the step's average: zero once the contact was open the whole step
+    assert np.all(r["normal_force"][1:][open_steps[1:] & open_steps[:-1]] == 0)
+
+
+def test_reversal_turns_the_friction_force(fmu_path):
+    """Foundation velocity 0.5 -> -0.5 m/s at 10 ms (F = 0.3, static preload, damped): the
+    friction force is +F N before and -F N after (measured 3550 and -3594 N/m)."""
+    import scenes
+    r = scenes.reversal(fmu_path)
+    before, after = r["time"] < 0.0095, r["time"] > 0.012
+    ratio = r["friction_force"] / r["normal_force"]
+    assert np.mean(ratio[before & (r["time"] > 0.001)]) == pytest.approx(0.3, rel=0.05)
+    assert np.mean(ratio[after]) == pytest.approx(-0.3, rel=0.05)

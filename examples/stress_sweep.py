@@ -6,8 +6,9 @@ initial gap, damping and all five mass_matrix variants. Each scene runs in its o
 Recorded per scene: status (ok, error: the FMU's message, refused at initialization, crash,
 timeout), max E against the work put in (E(0) + |clamp_work| + |foundation_work|), the energy
 balance error, max penetration, Newton iterations, Gauss-Seidel sweeps and refinements (from
-the FMU's log). Blow-up: max E above 1e3 x the work put in. Not covered yet: a force-driven
-top and the static initial state (the scenes issue's item 1 is not implemented).
+the FMU's log). Blow-up: max E above 1e3 x the work put in. Both top controls (with a force
+from tension to compression and plate masses 0.1-10 kg/m). Not covered: the static initial
+state.
 
 Writes OUT/stress_sweep.json and .md (per variant: the fraction that fails, blows up or
 refines, and the worst cases).
@@ -48,7 +49,10 @@ def random_scene(rng, variant):
         "internal_step": float(np.exp(rng.uniform(np.log(5e-7), np.log(3.2e-5)))),
         "top_displacement": float(rng.uniform(-1e-3, 2e-4) * H),
         "initial_gap": float(rng.choice([0.0, rng.uniform(0, 1e-4) * H])),
-        "damping_stiffness": float(rng.choice([0.0, 0.0, 4e-6])) if variant != 4 else 0.0,
+        "damping_stiffness": float(rng.choice([0.0, 0.0, 4e-6])),
+        "top_control": int(rng.integers(0, 2)),
+        "top_force": float(rng.uniform(-0.2, 1.0) * mu * H * 1e-3),  # tension to compression
+        "top_mass": float(np.exp(rng.uniform(np.log(0.1), np.log(10)))),
     }
 
 

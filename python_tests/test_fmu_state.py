@@ -62,16 +62,9 @@ def test_rollback_and_replay_are_bit_identical(model_description, unzipped, vr):
     inst.close()
 
 
-def test_serialized_state_restores_in_this_and_another_process(model_description, unzipped, vr,
-                                                               tmp_path):
-    inst = start(model_description, unzipped, friction_coefficient=0.7)
-    run(inst, vr, 0, 7)
-    blob = inst.serializeFMUstate(inst.getFMUstate())
-    expected = run(inst, vr, 7, 12)
-
-    inst.setFMUstate(inst.deSerializeFMUstate(blob))
-    assert run(inst, vr, 7, 12) == expected
-
+def rows_in_another_process(unzipped, blob, steps, tmp_path):
+    """Restores the serialized state in a fresh process and returns its outputs after each of
+    the (time, step size) steps, bit for bit (hex)."""
     (tmp_path / "state.bin").write_bytes(blob)
     script = f"""
 import json, sys
@@ -86,15 +79,29 @@ inst.enterInitializationMode()
 inst.exitInitializationMode()
 inst.setFMUstate(inst.deSerializeFMUstate(open({str(tmp_path / 'state.bin')!r}, 'rb').read()))
 rows = []
-for k in range(7, 12):
-    inst.doStep(k * {H!r}, {H!r})
+for t, h in {steps!r}:
+    inst.doStep(t, h)
     rows.append([x.hex() if isinstance(x, float) else x for x in
                  inst.getReal([vr[n] for n in {READ!r}]) + inst.getInteger([vr['active_contact_nodes']])])
 print(json.dumps(rows))
 """
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
-    other = [[float.fromhex(x) if isinstance(x, str) else x for x in row]
-             for row in json.loads(out.stdout.strip().splitlines()[-1])]
+    return [[float.fromhex(x) if isinstance(x, str) else x for x in row]
+            for row in json.loads(out.stdout.strip().splitlines()[-1])]
+
+
+def test_serialized_state_restores_in_this_and_another_process(model_description, unzipped, vr,
+                                                               tmp_path):
+    inst = start(model_description, unzipped, friction_coefficient=0.7)
+    run(inst, vr, 0, 7)
+    blob = inst.serializeFMUstate(inst.getFMUstate())
+    expected = run(inst, vr, 7, 12)
+
+    inst.setFMUstate(inst.deSerializeFMUstate(blob))
+    assert run(inst, vr, 7, 12) == expected
+
+    steps = [(k * H, H) for k in range(7, 12)]
+    other = rows_in_another_process(unzipped, blob, steps, tmp_path)
     assert other == expected
     inst.close()
 
@@ -361,27 +368,5 @@ def test_restore_into_a_fresh_instance_and_process_replays_bit_for_bit(model_des
     assert go(fresh, steps[30:]) == expected
     fresh.close()
 
-    (tmp_path / "state.bin").write_bytes(blob)
-    script = f"""
-import json, sys
-sys.path.insert(0, {str(ROOT / 'python_tests')!r})
-import fmpy
-from conftest import Instance
-md = fmpy.read_model_description({str(FMU)!r})
-vr = {{v.name: v.valueReference for v in md.modelVariables}}
-inst = Instance(md, {unzipped!r})
-inst.setupExperiment(startTime=0)
-inst.enterInitializationMode()
-inst.exitInitializationMode()
-inst.setFMUstate(inst.deSerializeFMUstate(open({str(tmp_path / 'state.bin')!r}, 'rb').read()))
-rows = []
-for t, h in {steps[30:]!r}:
-    inst.doStep(t, h)
-    rows.append([x.hex() if isinstance(x, float) else x for x in
-                 inst.getReal([vr[n] for n in {READ!r}]) + inst.getInteger([vr['active_contact_nodes']])])
-print(json.dumps(rows))
-"""
-    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
-    other = [[float.fromhex(x) if isinstance(x, str) else x for x in row]
-             for row in json.loads(out.stdout.strip().splitlines()[-1])]
+    other = rows_in_another_process(unzipped, blob, steps[30:], tmp_path)
     assert other == expected

@@ -35,7 +35,7 @@ const std::vector<Variable> table = {
     {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, false, ACCESS_REAL(lambda)},
     {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 0, inf, true, ACCESS_REAL(mu)},
     {"friction_coefficient", 8, T::Real, C::parameter, V::tunable, "", "Coulomb friction coefficient F", 1.2, 0, inf, false, ACCESS_REAL(friction_coefficient)},
-    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment (SPEC 2)", 1, 0, num_mass_variants - 1, false, ACCESS_ENUM(mass_matrix, "MassMatrix")},
+    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment: 0 standard, 1 redistributed_normal (the paper), 2 redistributed_both, 3 standard_implicit_contact, 4 redistributed_implicit_contact (M_r, contact at the end of the step: cannot gain energy at contact)", 1, 0, num_mass_variants - 1, false, ACCESS_ENUM(mass_matrix, "MassMatrix")},
     {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 0, inf, true, ACCESS_REAL(internal_step)},
     {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve", 1e-10, 0, 1, true, ACCESS_REAL(contact_tolerance)},
     {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, false, ACCESS_REAL(initial_gap)},

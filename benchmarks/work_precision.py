@@ -44,7 +44,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "examples"))
 from convergence import errors, reference_fields  # noqa: E402
-from scene import DT_LADDER, FMU, TABLE2, cells  # noqa: E402
+from scene import DT_LADDER, FMU, TABLE2, cells, set_values  # noqa: E402
 
 OUT = ROOT / "benchmarks" / "results"
 STOP, INTERVAL = 5.12e-3, 1.6e-4
@@ -82,12 +82,7 @@ class WarmInstance:
                 values = {**values, "field_output_interval": INTERVAL}
                 slave.setString([self.vars["result_directory"].valueReference],
                                 [str(result_directory)])
-            for name, value in values.items():
-                v = self.vars[name]
-                if v.type == "Real":
-                    slave.setReal([v.valueReference], [float(value)])
-                else:
-                    slave.setInteger([v.valueReference], [int(value)])
+            set_values(slave, self.vars, values)
             slave.exitInitializationMode()
             steps = round(STOP / INTERVAL)
             start = time.perf_counter()

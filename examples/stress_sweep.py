@@ -23,7 +23,7 @@ import sys
 
 import numpy as np
 
-from scene import FMU, ROOT
+from scene import FMU, ROOT, set_values
 
 VARIANTS = ["standard", "redistributed_normal", "redistributed_both",
             "standard_implicit_contact", "redistributed_implicit_contact"]
@@ -66,7 +66,8 @@ def run_scene(scene, stop, fmu):
     from fmpy.logging import addLoggerProxy
 
     md = fmpy.read_model_description(str(fmu))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
+    variables = {v.name: v for v in md.modelVariables}
+    vr = {name: v.valueReference for name, v in variables.items()}
     log = []
     record = {"scene": scene, "status": "ok", "message": ""}
     slave = FMU2Slave(guid=md.guid, unzipDirectory=fmpy.extract(str(fmu)),
@@ -80,11 +81,7 @@ def run_scene(scene, stop, fmu):
     try:
         slave.setupExperiment(startTime=0)
         slave.enterInitializationMode()
-        for name, value in scene.items():
-            if isinstance(value, int):
-                slave.setInteger([vr[name]], [value])
-            else:
-                slave.setReal([vr[name]], [value])
+        set_values(slave, variables, scene)
         try:
             slave.exitInitializationMode()
         except FMICallException:

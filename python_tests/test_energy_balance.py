@@ -59,7 +59,8 @@ def run_balance(model_description, unzipped, vr, variant, friction, alpha, beta,
     try:
         inst.setupExperiment(startTime=0)
         inst.enterInitializationMode()
-        inst.setInteger([vr["nx"], vr["ny"], vr["mass_matrix"]], [10, 10, variant])
+        inst.setInteger([vr["nx"], vr["ny"], vr["mass_matrix"], vr["input_interpolation"]],
+                        [10, 10, variant, int(inputs == "interpolated")])
         inst.setReal([vr["friction_coefficient"], vr["damping_mass"], vr["damping_stiffness"]],
                      [friction, alpha, beta])
         inst.exitInitializationMode()
@@ -69,7 +70,7 @@ def run_balance(model_description, unzipped, vr, variant, friction, alpha, beta,
         inputs_vr = [vr["top_displacement"], vr["foundation_velocity"]]
         for k in range(steps):
             t = k * h
-            if inputs == "held":  # values that jump at every communication point
+            if inputs in ("held", "interpolated"):  # values set at every communication point
                 inst.setReal(inputs_vr, [-2.5e-5 * (1 + 0.5 * np.sin(2000 * t)),
                                          20 * np.cos(900 * t)])
             elif inputs == "ramped":  # first derivatives: linear across each step
@@ -83,7 +84,7 @@ def run_balance(model_description, unzipped, vr, variant, friction, alpha, beta,
 
 
 @pytest.mark.parametrize("variant", [0, 1, 2, 3, 4])
-@pytest.mark.parametrize("inputs", ["constant", "held", "ramped"])
+@pytest.mark.parametrize("inputs", ["constant", "held", "ramped", "interpolated"])
 @pytest.mark.parametrize("friction,alpha,beta", [(0.0, 0, 0), (0.3, 0, 0), (0.3, 50, 4e-6)])
 def test_energy_balance_closes(model_description, unzipped, vr, variant, inputs, friction,
                                alpha, beta):

@@ -88,6 +88,8 @@ struct Discretization {
     std::vector<int> contact_x, contact_y;
     // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T).
     std::vector<int> contact_unknowns() const;
+    // A top node's y dof: all of them move together (the clamp's value, or the plate's w).
+    int top_y_dof() const { return dof_y(mesh.top_nodes.front()); }
 };
 
 Discretization discretize(const SceneParameters& p);

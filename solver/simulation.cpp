@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace contactbody {
@@ -124,7 +125,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
 double Simulation::plate_kinetic_energy(const State& s) const {
     const Discretization& d = stepper_.discretization();
     if (d.plate_index < 0) return 0;
-    const double v = s.v[dof_y(d.mesh.top_nodes[0])];
+    const double v = s.v[d.top_y_dof()];
     return 0.5 * d.plate_mass * v * v;
 }
 
@@ -164,12 +165,17 @@ void Simulation::move_clamp(double top, double rate) {
     energies_current_ = false;
 }
 
-double Simulation::energy(const State& s) {
+std::pair<double, double> Simulation::kinetic_and_strain_energy(const State& s) {
     const Discretization& d = stepper_.discretization();
     product_.noalias() = d.M * s.v;
-    double e = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
+    const double kinetic = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
     product_.noalias() = d.A * s.u;
-    return e + 0.5 * s.u.dot(product_);
+    return {kinetic, 0.5 * s.u.dot(product_)};
+}
+
+double Simulation::energy(const State& s) {
+    const auto [kinetic, strain] = kinetic_and_strain_energy(s);
+    return kinetic + strain;
 }
 
 void Simulation::advance(const StepInputs& in, double s0, double dt, double weight,
@@ -282,11 +288,8 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
 
 const Observables& Simulation::observables() {
     if (!energies_current_) {
-        const Discretization& d = stepper_.discretization();
-        product_.noalias() = d.M * state_.v;
-        observables_.kinetic_energy = 0.5 * state_.v.dot(product_) + plate_kinetic_energy(state_);
-        product_.noalias() = d.A * state_.u;
-        observables_.strain_energy = 0.5 * state_.u.dot(product_);
+        std::tie(observables_.kinetic_energy, observables_.strain_energy) =
+            kinetic_and_strain_energy(state_);
         observables_.energy = observables_.kinetic_energy + observables_.strain_energy;
         observables_.friction_work = works_.friction;
         observables_.energy_minus_friction_work = observables_.energy - works_.friction;
@@ -295,7 +298,7 @@ const Observables& Simulation::observables() {
         observables_.normal_contact_work = works_.normal_contact;
         observables_.friction_dissipation = works_.friction_dissipation;
         observables_.foundation_work = works_.foundation;
-        const int top_y = dof_y(d.mesh.top_nodes[0]);
+        const int top_y = stepper_.discretization().top_y_dof();
         observables_.top_position = state_.u[top_y];
         observables_.top_velocity = state_.v[top_y];
         energies_current_ = true;

@@ -1,6 +1,8 @@
 // Communication steps of the body (SPEC §3) and the observables of SPEC §4.
 #pragma once
 
+#include <utility>
+
 #include "stepper.hpp"
 
 namespace contactbody {
@@ -94,6 +96,7 @@ private:
     std::string growth_advice() const;              // what to change when E runs away
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state (uses product_)
+    std::pair<double, double> kinetic_and_strain_energy(const State& s);  // (uses product_)
     double plate_kinetic_energy(const State& s) const;  // force control: 1/2 m_p v_top^2
 
     Stepper stepper_;

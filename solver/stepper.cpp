@@ -169,8 +169,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     rhs_.noalias() -= f.K_free_clamped * clamped_half_;
     if (params_.damped()) rhs_.noalias() += c2 * (d.C_free_rows * s.u);
     if (d.plate_index >= 0) {  // the plate's own inertia and the force pressing it down
-        const int top_y = dof_y(d.mesh.top_nodes[0]);
-        rhs_[d.plate_index] += d.plate_mass * z_[top_y] - load.top_force;
+        rhs_[d.plate_index] += d.plate_mass * z_[d.top_y_dof()] - load.top_force;
     }
     laps.lap(timings_.update);
     Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
@@ -211,11 +210,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     f.cholesky->backward(u_half_free_);
     laps.lap(timings_.solve);
 
-    if (d.plate_index < 0) {
-        for (size_t k = 0; k < d.free_dofs.size(); ++k) u_half_[d.free_dofs[k]] = u_half_free_[k];
-    } else {
-        u_half_.noalias() = d.expand * u_half_free_;  // the plate's w on every top y dof
-    }
+    u_half_.noalias() = d.expand * u_half_free_;  // (the plate's w on every top y dof)
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];
     if (params_.damped()) {
         du_ = 2 * (u_half_ - s.u);  // u^{k+1} - u^k on all dofs
@@ -239,7 +234,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     }
     if (d.plate_index >= 0)
         report.work.clamp -= load.top_force * 2 * (u_half_free_[d.plate_index] -
-                                                   s.u[dof_y(d.mesh.top_nodes[0])]);
+                                                   s.u[d.top_y_dof()]);
 
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;

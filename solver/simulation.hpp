@@ -68,7 +68,7 @@ public:
     // message naming the time, the sizes tried, the contact state and what to change.
     void do_step(double h, const StepInputs& inputs);
 
-    const Observables& observables();  // energies computed here, only when asked
+    const Observables& observables();  // energies computed here: once per step (checked finite)
     double time() const { return state_.time; }
     const State& state() const { return state_; }
     Stepper& stepper() { return stepper_; }

@@ -114,7 +114,8 @@ void ContactBodyModel::set_input_derivative(const Variable& v, int order, double
 void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
     try {
-        sim_ = std::make_unique<Simulation>(values.scene(), values.top_displacement, start_time_);
+        sim_ = std::make_unique<Simulation>(values.scene(), values.top_displacement, start_time_,
+                                            values.top_force);
     } catch (const std::invalid_argument& e) {
         sim_.reset();
         throw ModelError(e.what());

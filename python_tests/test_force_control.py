@@ -128,13 +128,38 @@ def test_static_initial_state_stays_at_rest(fmu_path, variant, friction):
     np.testing.assert_allclose(r["normal_force"], r["normal_force"][0], rtol=1e-6)
 
 
-def test_static_initial_state_is_refused_with_force_control(instance, vr):
+@pytest.mark.parametrize("variant", [0, 1, 3, 4])
+@pytest.mark.parametrize("friction", [0.0, 0.5])
+@pytest.mark.parametrize("gap", [0.0, 2e-5])
+def test_static_initial_state_under_force_control_stays_at_rest(fmu_path, variant, friction, gap):
+    """top_control = force, initial_state = static, 15 kN/m on the plate, foundation at rest
+    (with an initial gap, which the body starts closed on): the body and the plate stay at rest
+    over 0.01 s, the foundation carries the force from t0."""
+    r = fmpy.simulate_fmu(fmu_path, stop_time=0.01, output_interval=1e-4,
+                          start_values={"initial_state": 1, "top_control": 1, "top_force": 15000.0,
+                                        "foundation_velocity": 0.0, "top_displacement": 0.0,
+                                        "friction_coefficient": friction, "mass_matrix": variant,
+                                        "initial_gap": gap},
+                          output=["kinetic_energy", "strain_energy", "normal_force",
+                                  "top_reaction_y", "top_velocity", "top_position",
+                                  "max_penetration"])
+    assert np.all(r["kinetic_energy"] <= 1e-12 * r["strain_energy"])
+    assert r["strain_energy"][0] > 0 and r["top_position"][0] < -gap
+    assert np.all(np.abs(r["max_penetration"]) <= 1e-12)
+    np.testing.assert_allclose(r["normal_force"], 15000.0, rtol=1e-6)
+    np.testing.assert_allclose(r["top_reaction_y"], -15000.0, rtol=1e-6)
+    np.testing.assert_allclose(r["top_position"], r["top_position"][0], rtol=1e-9)
+
+
+@pytest.mark.parametrize("force", [0.0, -100.0])
+def test_static_initial_state_needs_a_pressing_force(instance, vr, force):
     instance.setupExperiment(startTime=0)
     instance.enterInitializationMode()
     instance.setInteger([vr["initial_state"], vr["top_control"]], [1, 1])
+    instance.setReal([vr["top_force"]], [force])
     with pytest.raises(Exception):
         instance.exitInitializationMode()
-    assert "not available with top_control = force" in instance.text()
+    assert "needs top_force > 0" in instance.text()
 
 
 def test_lift_off_and_re_contact(fmu_path):

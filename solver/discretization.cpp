@@ -64,10 +64,6 @@ void check_parameters(const SceneParameters& p) {
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
     if (p.force_control) require_positive("top_mass", p.top_mass);
-    if (p.force_control && p.static_initial_state)
-        throw std::invalid_argument(
-            "initial_state = static is not available with top_control = force yet: use "
-            "top_control = displacement, or initial_state = paper");
     if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
     if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))

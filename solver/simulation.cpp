@@ -10,30 +10,30 @@
 namespace contactbody {
 
 Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
-                       double start_time)
+                       double start_time, double initial_top_force)
     : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
     state_.time = start_time;
     product_.resize(state_.u.size());
-    if (params.static_initial_state) static_initial_state(initial_top_displacement);
+    if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
 }
 
-// A quasi-static load path: the top displacement goes from 0 to its initial value in 10
-// substeps so long (1e3 s) that the mass terms weigh 1e-15 of the stiffness, with the
-// foundation at rest, so that friction acts on each increment's slip; then one more substep
-// at the final load, over which nothing moves: its u^{k+1/2} = u^{k+1} is in static balance
-// with contact and friction, for every variant. The body starts there at rest.
-void Simulation::static_initial_state(double top) {
+// A quasi-static load path: the top displacement goes from 0 to `top` in 10 substeps so long
+// (1e3 s) that the mass terms weigh 1e-15 of the stiffness, with the foundation at rest, so
+// that friction acts on each increment's slip; then one more substep at the final load, over
+// which nothing moves: its u^{k+1/2} = u^{k+1} is in static balance with contact and
+// friction, for every variant. The body is left there at rest.
+static State quasi_static_path(Stepper& stepper, double top) {
     constexpr int increments = 10;
     constexpr double quasi_static = 1e3;
-    State s = stepper_.initial_state(0.0);
+    State s = stepper.initial_state(0.0);
     s.v.setZero();
     SubstepLoad load;
     for (int k = 1; k <= increments + 1; ++k) {
         load.top_start = top * std::min(k - 1, increments) / increments;
         load.top_end = top * std::min(k, increments) / increments;
         try {
-            stepper_.substep(s, quasi_static, load);
+            stepper.substep(s, quasi_static, load);
         } catch (const ContactSolveError& e) {
             throw std::invalid_argument(
                 std::string("initial_state = static: the load path's contact solve failed (") +
@@ -41,8 +41,46 @@ void Simulation::static_initial_state(double top) {
         }
     }
     s.v.setZero();
-    s.time = state_.time;
-    state_ = s;
+    return s;
+}
+
+// Under force control the plate (u_x = 0, one u_y) is a clamp at an unknown height, and only
+// the contact holds the body in y, which a path driven by the force itself would leave to the
+// 1e-15 mass terms. So the path is run clamped, with no gap: from the unloaded state, contact
+// and Coulomb friction are positively homogeneous, so the state scales exactly with the
+// clamp's displacement, and the scale that makes the reaction equal the force is one
+// division. An initial gap is then closed by a rigid shift, which strains nothing.
+void Simulation::static_initial_state(double top, double force) {
+    const SceneParameters& p = stepper_.parameters();
+    if (!p.force_control) {
+        const double time = state_.time;
+        state_ = quasi_static_path(stepper_, top);
+        state_.time = time;
+        return;
+    }
+    if (!(force > 0))
+        throw std::invalid_argument(
+            "initial_state = static with top_control = force needs top_force > 0 at the start "
+            "(it is " + std::to_string(force) + " N/m): only the contact holds the body; use "
+            "initial_state = paper for a body that starts free");
+    SceneParameters clamped = p;
+    clamped.force_control = false;
+    clamped.initial_gap = 0;
+    Stepper path_stepper(clamped);
+    const double probe = -1e-4 * p.height;
+    const State s = quasi_static_path(path_stepper, probe);
+    const Discretization& d = path_stepper.discretization();
+    double pressing = 0;  // the clamp's force on the body, downwards (A symmetric: col = row)
+    for (int dof : d.top_dofs)
+        if (dof % 2 == 1) pressing -= d.A.col(dof).dot(s.u);
+    if (!(pressing > 0))
+        throw std::invalid_argument("initial_state = static: the clamped load path carries no "
+                                    "force; use initial_state = paper");
+    const double scale = force / pressing;
+    state_.u = scale * s.u;
+    for (Eigen::Index dof = 1; dof < state_.u.size(); dof += 2) state_.u[dof] -= p.initial_gap;
+    state_.v.setZero();
+    state_.lambda = scale * s.lambda;
 }
 
 // Before the first step the force outputs describe the initial state: the forces in static

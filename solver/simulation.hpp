@@ -57,8 +57,10 @@ public:
 
 class Simulation {
 public:
+    // The initial load: the top displacement (top_control = displacement) or the force on the
+    // plate (force), which initial_state = static puts the body in balance with.
     Simulation(const SceneParameters& params, double initial_top_displacement,
-               double start_time = 0);
+               double start_time = 0, double initial_top_force = 0);
 
     // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
     // fails is redone from its start as two halves, recursively down to min_internal_step
@@ -86,7 +88,7 @@ public:
 private:
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
-    void static_initial_state(double top);  // initial_state = static
+    void static_initial_state(double top, double force);  // initial_state = static
     // One substep over [s0, s0 + dt] of the step (times from its start), halved on failure;
     // weight = dt / nominal substep (a power of two), for the step averages.
     void advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums);

@@ -36,8 +36,9 @@ void visit(O& o, F&& f) {
                     &o.max_penetration, &o.damping_work, &o.clamp_work, &o.normal_contact_work,
                     &o.friction_dissipation, &o.foundation_work, &o.top_position, &o.top_velocity})
         f(*x);
-    f(o.active_contact_nodes);
-    f(o.slipping_contact_nodes);
+    for (auto* x : {&o.active_contact_nodes, &o.slipping_contact_nodes, &o.substeps,
+                    &o.substep_refinements, &o.contact_iterations, &o.gauss_seidel_sweeps})
+        f(*x);
 }
 
 class Writer {
@@ -155,6 +156,7 @@ std::vector<char> serialize(const FmuState& s) {
         w.vector(sim.state.u);
         w.vector(sim.state.v);
         w.vector(sim.state.lambda);
+        w.vector(sim.state.sticking);
         Works::for_each(sim.works, sim.works, [&](double x, double) { w.value(x); });
         w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
@@ -249,6 +251,7 @@ FmuState deserialize(const char* bytes, size_t size) {
         sim.state.u = r.vector("displacement", dofs);
         sim.state.v = r.vector("velocity", dofs);
         sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
+        sim.state.sticking = r.vector("sticking nodes", nc);
         Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
         sim.factor_substeps = r.finite_doubles("cached substep sizes");
         if (sim.factor_substeps.size() > Stepper::factor_cache_size)

@@ -50,6 +50,7 @@ const std::vector<Variable> table = {
     {"initial_velocity_x", 24, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, x (the clamped dofs excepted)", 0, none, none, false, ACCESS_REAL(initial_velocity_x)},
     {"initial_velocity_y", 25, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, y (with the plate under force control)", 0, none, none, false, ACCESS_REAL(initial_velocity_y)},
     {"initial_state", 26, T::Enumeration, C::parameter, V::fixed, "", "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)", 0, 0, 1, false, ACCESS_ENUM(initial_state, "InitialState")},
+    {"static_friction_ratio", 27, T::Real, C::parameter, V::fixed, "", "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)", 1, 1, max_static_friction_ratio, false, ACCESS_REAL(static_friction_ratio)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, false, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, false, ACCESS_REAL(top_displacement)},
@@ -76,6 +77,10 @@ const std::vector<Variable> table = {
     {"foundation_work", 118, T::Real, C::output, V::continuous, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)", none, none, none, false, ACCESS_REAL(out.foundation_work)},
     {"top_position", 119, T::Real, C::output, V::continuous, "m", "Vertical displacement u_y of the top edge (the plate under force control)", none, none, none, false, ACCESS_REAL(out.top_position)},
     {"top_velocity", 120, T::Real, C::output, V::continuous, "m/s", "Vertical velocity of the top edge", none, none, none, false, ACCESS_REAL(out.top_velocity)},
+    {"substeps", 121, T::Integer, C::output, V::discrete, "", "Midpoint substeps taken in the last communication step (ceil(step / internal_step), plus one per refinement)", none, none, none, false, ACCESS_INT(out.substeps)},
+    {"substep_refinements", 122, T::Integer, C::output, V::discrete, "", "Substeps of the last communication step redone as two halves after a failed contact solve", none, none, none, false, ACCESS_INT(out.substep_refinements)},
+    {"contact_iterations", 123, T::Integer, C::output, V::discrete, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed", none, none, none, false, ACCESS_INT(out.contact_iterations)},
+    {"gauss_seidel_sweeps", 124, T::Integer, C::output, V::discrete, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)", none, none, none, false, ACCESS_INT(out.gauss_seidel_sweeps)},
 };
 
 }  // namespace
@@ -90,6 +95,7 @@ SceneParameters Values::scene() const {
     p.lambda = lambda;
     p.mu = mu;
     p.friction_coefficient = friction_coefficient;
+    p.static_friction_ratio = static_friction_ratio;
     p.mass_matrix = static_cast<MassVariant>(mass_matrix);
     p.internal_step = internal_step;
     p.contact_tolerance = contact_tolerance;

@@ -22,6 +22,7 @@ struct Values {
     int top_control;          // TopControl
     int initial_state;        // InitialState
     double top_mass, initial_velocity_x, initial_velocity_y;
+    double static_friction_ratio;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double foundation_velocity, top_displacement, top_force;

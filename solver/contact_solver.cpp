@@ -47,7 +47,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
             status_[i] = NodeStatus::stick;
             continue;
         }
-        const double bound = p.friction * trial;
+        const double bound = p.friction[i] * trial;
         const double z = lambda[n + i] - r_[n + i] * (u_hat_[n + i] - p.slip_origin[i]);
         if (std::abs(z) <= bound) {
             phi[n + i] = lambda[n + i] - z;
@@ -68,10 +68,10 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
 // the node states found by residual()), computed on the reduced system: open nodes' unknowns
 // and slipping nodes' tangential ones follow explicitly from the others,
 //   open:      delta_N = phi_N, delta_T = -phi_T     (lambda goes to 0)
-//   slipping:  delta_T = -phi_T + sf (phi_N - delta_N),  sf = +-F
+//   slipping:  delta_T = -phi_T + sf (phi_N - delta_N),  sf = +-F_i
 // and the remaining rows (N of active nodes, T of sticking ones), divided by r, read
 //   W(N_i, :) delta = phi_N / r_N,   W(T_i, :) delta = -phi_T / r_T.
-// The reduced matrix depends only on W and the pattern, so its LU is reused while they hold.
+// The reduced matrix depends only on W, the pattern and F, so its LU is reused while they hold.
 void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();
@@ -81,7 +81,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
             explicit_[i] = phi_[i];
             if (friction) explicit_[n + i] = -phi_[n + i];
         } else if (friction && pattern_[i] != 1) {
-            explicit_[n + i] = -phi_[n + i] + slip_sign(i, p.friction) * phi_[i];
+            explicit_[n + i] = -phi_[n + i] + slip_sign(p, i) * phi_[i];
         }
     }
     if (!reuse) {
@@ -99,7 +99,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
         for (Eigen::Index b = 0; b < k; ++b) {
             const int col = reduced_[b];
             const bool slipping = friction && col < n && pattern_[col] != 1;
-            const double sf = slipping ? slip_sign(col, p.friction) : 0;
+            const double sf = slipping ? slip_sign(p, col) : 0;
             for (Eigen::Index a = 0; a < k; ++a)
                 reduced_matrix_(a, b) = p.W(reduced_[a], col) -
                                         (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
@@ -132,7 +132,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
     if (friction)
         for (Eigen::Index i = 0; i < n; ++i)
             if (pattern_[i] == 2 || pattern_[i] == -2)
-                step_[n + i] -= slip_sign(i, p.friction) * step_[i];
+                step_[n + i] -= slip_sign(p, i) * step_[i];
 }
 
 ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
@@ -214,7 +214,8 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
             const double qN = u_hat_[i] - p.W(i, i) * lN - aNT * lT;
             const double qT = friction ? u_hat_[t] - aNT * lN - aTT * lT : 0.0;
             const Local l = solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
-                                       friction ? p.slip_origin[i] : 0.0, p.friction, friction);
+                                       friction ? p.slip_origin[i] : 0.0,
+                                       friction ? p.friction[i] : 0.0, friction);
             if (l.lN != lN) {
                 u_hat_.noalias() += (l.lN - lN) * p.W.col(i);
                 lambda[i] = l.lN;
@@ -251,10 +252,12 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         // The reduced Newton matrix is fixed by W and the node states: when the states of
         // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
         const bool reuse = p.revision != 0 && p.revision == lu_revision_ &&
-                           pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_;
+                           pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_ &&
+                           p.friction.size() == lu_friction_.size() && p.friction == lu_friction_;
         newton_direction(p, reuse);
         if (!reuse) {
             lu_pattern_ = pattern_;
+            lu_friction_ = p.friction;
             lu_revision_ = p.revision;
             ++factorizations_;
         }

@@ -4,7 +4,7 @@
 //   u_hat = a + W lambda   (u_hat = (u_N, u_T) at the nodes, W the Delassus operator B K^-1 B^T),
 // find lambda such that at every node i
 //   lambda_N <= 0,  u_N - gap_limit <= 0,  lambda_N (u_N - gap_limit) = 0,
-//   lambda_T in F lambda_N Sgn(u_T - slip_origin)          (Coulomb on the slip).
+//   lambda_T in F_i lambda_N Sgn(u_T - slip_origin)        (Coulomb on the slip).
 // Without friction (F == 0) the tangential part is absent: lambda and u_hat have n entries.
 #pragma once
 
@@ -23,7 +23,7 @@ struct ContactProblem {
     Eigen::VectorXd a;           // u_hat at lambda = 0
     Eigen::VectorXd gap_limit;   // n: u_N must not exceed it
     Eigen::VectorXd slip_origin; // n: slip is u_T - slip_origin (unused without friction)
-    double friction = 0;         // F
+    Eigen::VectorXd friction;    // n: F_i, the node's friction coefficient (with friction)
     // Identifies W: the solver reuses its Newton factorization across solves while the revision
     // (nonzero) and the node states are unchanged. Set a new one whenever W changes; 0 = never
     // reuse. next_revision() gives process-wide unique values.
@@ -71,9 +71,9 @@ private:
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     void newton_direction(const ContactProblem& p, bool reuse);
-    // +-F for a slipping node, the sign of its slip.
-    double slip_sign(Eigen::Index i, double friction) const {
-        return pattern_[i] > 0 ? friction : -friction;
+    // +-F_i for a slipping node, the sign of its slip.
+    double slip_sign(const ContactProblem& p, Eigen::Index i) const {
+        return pattern_[i] > 0 ? p.friction[i] : -p.friction[i];
     }
 
     // Workspace kept between calls so that steady stepping does not reallocate.
@@ -85,6 +85,7 @@ private:
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
     // What the Jacobian depends on besides W: per node 0 open, 1 stick, +-2 slip direction.
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> pattern_, lu_pattern_;
+    Eigen::VectorXd lu_friction_;  // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
     long factorizations_ = 0;
 };

@@ -54,6 +54,8 @@ void check_parameters(const SceneParameters& p) {
         reject("lambda", "finite with lambda + mu > 0", p.lambda);
     if (!(std::isfinite(p.friction_coefficient) && p.friction_coefficient >= 0))
         reject("friction_coefficient", "finite and >= 0", p.friction_coefficient);
+    if (!(p.static_friction_ratio >= 1 && p.static_friction_ratio <= max_static_friction_ratio))
+        reject("static_friction_ratio", "in [1, 10]", p.static_friction_ratio);
     const int variant = static_cast<int>(p.mass_matrix);
     if (variant < 0 || variant >= num_mass_variants)
         reject("mass_matrix", "0, 1, 2, 3 or 4", variant);

@@ -32,6 +32,9 @@ struct SceneParameters {
     int nx = 20, ny = 20;
     double density = 1000, lambda = 300e6, mu = 150e6;
     double friction_coefficient = 1.2;
+    // A node that sticks needs static_friction_ratio x F to break loose; a slipping node feels
+    // F. 1 is Coulomb's law; above 1 the friction drops at the onset of slip (stick-slip).
+    double static_friction_ratio = 1;
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
     double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
@@ -54,6 +57,9 @@ struct SceneParameters {
 // Limits shared by the solver and the FMI layer (which also writes them as min/max).
 constexpr int max_cells_per_direction = 4096;
 constexpr long max_nodes = 4'000'000;
+// Measured static/kinetic ratios of dry friction stay below 3; larger ones only make the
+// contact step stiffer (and F x ratio must stay finite).
+constexpr double max_static_friction_ratio = 10;
 
 // Throws std::invalid_argument naming the first offending parameter (SPEC names).
 void check_parameters(const SceneParameters& p);

@@ -29,7 +29,7 @@ ContactProblem ElementaryExample::problem(const Eigen::Vector2d& f) const {
     p.a = inverse_ * f;
     p.gap_limit = Eigen::VectorXd::Zero(1);
     p.slip_origin = Eigen::VectorXd::Constant(1, u_tau_old_);
-    p.friction = friction_;
+    p.friction = Eigen::VectorXd::Constant(1, friction_);
     return p;
 }
 

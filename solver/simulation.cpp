@@ -81,6 +81,7 @@ void Simulation::static_initial_state(double top, double force) {
     for (Eigen::Index dof = 1; dof < state_.u.size(); dof += 2) state_.u[dof] -= p.initial_gap;
     state_.v.setZero();
     state_.lambda = scale * s.lambda;
+    state_.sticking = s.sticking;
 }
 
 // Before the first step the force outputs describe the initial state: the forces in static
@@ -148,6 +149,10 @@ void Simulation::do_step(double h, const StepInputs& in) {
         avg.top_reaction_x /= n;
         avg.top_reaction_y /= n;
         observables_ = avg;
+        observables_.substeps = n + stats.refinements;  // each halving adds one substep
+        observables_.substep_refinements = stats.refinements;
+        observables_.contact_iterations = stats.contact_iterations;
+        observables_.gauss_seidel_sweeps = stats.gauss_seidel_sweeps;
         energies_current_ = false;
         check_finite(observables());  // no NaN under fmi2OK: every output, every step
     } catch (...) {
@@ -312,7 +317,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     const Eigen::Index dofs = stepper_.discretization().mesh.num_dofs();
     const Eigen::Index nc = stepper_.num_contact_nodes();
     if (s.u.size() != dofs || s.v.size() != dofs ||
-        (s.lambda.size() != nc && s.lambda.size() != 2 * nc))
+        (s.lambda.size() != nc && s.lambda.size() != 2 * nc) || s.sticking.size() != nc)
         throw std::invalid_argument("state does not fit this mesh");
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))

@@ -20,6 +20,9 @@ struct Observables {
     double top_reaction_x = 0, top_reaction_y = 0;
     double max_penetration = 0;  // over the substeps of the last communication step
     int active_contact_nodes = 0, slipping_contact_nodes = 0;  // at the last substep
+    // What the last communication step cost (StepStatistics): substeps taken (a refined one
+    // counts once per piece), refinements, Newton iterations and Gauss-Seidel sweeps.
+    int substeps = 0, substep_refinements = 0, contact_iterations = 0, gauss_seidel_sweeps = 0;
 };
 
 // Inputs over one communication step: values at its start and their time derivatives

@@ -72,6 +72,7 @@ State Stepper::initial_state(double top_displacement) const {
         s.v[dof] = dof % 2 == 0 ? params_.initial_velocity_x : params_.initial_velocity_y;
     s.lambda.setZero(params_.friction_coefficient > 0 ? 2 * num_contact_nodes()
                                                       : num_contact_nodes());
+    s.sticking.setZero(num_contact_nodes());
     return s;
 }
 
@@ -142,7 +143,7 @@ void Stepper::setup_contact_problem(const Factor& f) {
     const bool friction = params_.friction_coefficient > 0;
     problem_.W = friction ? f.delassus : Eigen::MatrixXd(f.delassus.topLeftCorner(nc, nc));
     problem_.a.resize(friction ? 2 * nc : nc);
-    problem_.friction = params_.friction_coefficient;
+    problem_.friction.setConstant(friction ? nc : 0, params_.friction_coefficient);
     problem_.revision = ContactProblem::next_revision();
     snapshot_.delassus_diagonal = f.delassus.diagonal();
     problem_factor_ = f.id;
@@ -196,6 +197,11 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
                          : ux_old + 0.5 * dt * load.foundation_velocity;
         }
     }
+    const bool static_friction = friction && params_.static_friction_ratio != 1;
+    if (static_friction)  // the nodes that stuck in the last substep hold with F_s
+        for (int i = 0; i < nc; ++i)
+            problem_.friction[i] = params_.friction_coefficient *
+                                   (s.sticking[i] != 0 ? params_.static_friction_ratio : 1.0);
     SubstepReport report;
     if (touching) {
         const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
@@ -260,6 +266,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report.work.friction_dissipation += lT * (foundation_step - dux);
         report.max_penetration =
             std::max(report.max_penetration, uN_new - params_.initial_gap);
+        s.sticking[i] = friction && touching && solver_.status()[i] == NodeStatus::stick ? 1.0 : 0.0;
         if (touching && solver_.status()[i] != NodeStatus::open) {
             ++report.active_nodes;
             if (solver_.status()[i] == NodeStatus::slip) ++report.slipping_nodes;

@@ -22,6 +22,7 @@ namespace contactbody {
 struct State {
     Eigen::VectorXd u, v;    // all dofs (clamped ones carry the top displacement)
     Eigen::VectorXd lambda;  // last multipliers: lambda_N[n_c], then lambda_T[n_c] if F > 0
+    Eigen::VectorXd sticking;  // n_c: 1 where the node stuck in the last substep, else 0
     double time = 0;
 };
 

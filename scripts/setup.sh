@@ -23,6 +23,8 @@ if [ ! -x .venv/bin/python ] || ! cmp -s requirements.txt .venv/requirements.ins
     .venv/bin/pip install -q --disable-pip-version-check -r requirements.txt
     cp requirements.txt .venv/requirements.installed
 fi
+# The contactbody package (examples, tests, contactbody-study), editable from this checkout.
+.venv/bin/pip install -q --disable-pip-version-check --no-deps --no-build-isolation -e .
 
 # fmpy's wheel also ships a cmake: use Debian's.
 /usr/bin/cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \

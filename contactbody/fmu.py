@@ -1,0 +1,262 @@
+"""The ContactBody FMU from Python: where it is, and `Model`, one extracted FMU with one
+instance that runs any number of simulations (fmi2Reset between them).
+
+fmpy's simulate_fmu extracts the FMU on every call and changes the working directory; a
+parameter study calls it thousands of times. Model extracts once, keeps its instance, and
+passes input slopes itself (fmi2SetRealInputDerivatives), which simulate_fmu cannot for this
+FMU (fmpy 0.3.32 allocates derivative slots for exactly 9 inputs).
+"""
+from __future__ import annotations
+
+import ctypes
+import itertools
+import os
+import pathlib
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass
+
+import fmpy
+import numpy as np
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+from fmpy.logging import addLoggerProxy
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def find_fmu(path: str | os.PathLike | None = None) -> pathlib.Path:
+    """The FMU to use: `path` if given, else $CONTACTBODY_FMU, else build/ContactBody.fmu of
+    this checkout (scripts/setup.sh builds it there)."""
+    candidate = pathlib.Path(path or os.environ.get("CONTACTBODY_FMU") or
+                             ROOT / "build" / "ContactBody.fmu").expanduser().resolve()
+    if not candidate.is_file():
+        raise FileNotFoundError(f"no FMU at {candidate}: build it with scripts/setup.sh, or "
+                                "give its path (argument or CONTACTBODY_FMU)")
+    return candidate
+
+
+# fmpy's native logger proxy (which formats the variadic message) holds one Python callback
+# for the whole process: messages are routed to their instance by instance name.
+_messages_by_instance: dict[str, list] = {}
+
+
+def _log(_env, name, status, category, message):
+    _messages_by_instance.setdefault(name.decode(), []).append(
+        (status, category.decode(), message.decode()))
+
+
+_logger = fmi2CallbackLoggerTYPE(_log)
+_serial = itertools.count()
+
+
+class Instance:
+    """An fmpy FMU2Slave whose log messages are kept in .messages as (status, category, text).
+    Other attributes are the FMU2Slave's (doStep, getReal, ...)."""
+
+    def __init__(self, model_description, unzipped, name="instance"):
+        self.name = f"{name}#{next(_serial)}"
+        self.messages = _messages_by_instance.setdefault(self.name, [])
+        self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=str(unzipped),
+                               modelIdentifier=model_description.coSimulation.modelIdentifier,
+                               instanceName=self.name)
+        self.callbacks = fmi2CallbackFunctions()
+        self.callbacks.logger = _logger
+        addLoggerProxy(ctypes.byref(self.callbacks))
+        self.slave.instantiate(callbacks=self.callbacks)
+
+    def __getattr__(self, name):
+        return getattr(self.slave, name)
+
+    def text(self):
+        return "\n".join(m[2] for m in self.messages)
+
+    def close(self):
+        self.slave.freeInstance()
+        _messages_by_instance.pop(self.name, None)
+
+    def free_library(self):
+        self.slave.freeLibrary()
+
+
+@dataclass(frozen=True)
+class Profile:
+    """An input given as a piecewise linear function of time: values at increasing times,
+    held constant outside them."""
+    times: tuple
+    values: tuple
+
+    @staticmethod
+    def of(pairs) -> "Profile":
+        """From [[t0, v0], [t1, v1], ...]."""
+        times, values = zip(*((float(t), float(v)) for t, v in pairs))
+        if any(b <= a for a, b in zip(times, times[1:])):
+            raise ValueError(f"profile times must increase: {times}")
+        return Profile(times, values)
+
+    def value(self, t: float) -> float:
+        return float(np.interp(t, self.times, self.values))
+
+    def slope(self, t: float) -> float:
+        """Slope of the segment that starts at or before t (0 outside the profile)."""
+        k = int(np.searchsorted(self.times, t, side="right")) - 1
+        if k < 0 or k + 1 >= len(self.times):
+            return 0.0
+        return (self.values[k + 1] - self.values[k]) / (self.times[k + 1] - self.times[k])
+
+
+class SimulationFailed(RuntimeError):
+    """An FMI call failed; the message carries the FMU's own error messages."""
+
+
+class Interface:
+    """The FMU's variables by name, from its model description, and how values are given."""
+
+    def __init__(self, description):
+        self.description = description
+        self.variables = {v.name: v for v in description.modelVariables}
+        self.enumerations = {t.name: {item.name: int(item.value) for item in t.items}
+                             for t in description.typeDefinitions if t.type == "Enumeration"}
+
+    def variable(self, name):
+        try:
+            return self.variables[name]
+        except KeyError:
+            raise KeyError(f"the FMU has no variable {name!r}") from None
+
+    def coerce(self, name, value):
+        """A value as the FMU takes it: enumeration names (mass_matrix = 'redistributed_both')
+        become their integers; Real, Integer and String values are checked for type."""
+        v = self.variable(name)
+        if v.causality not in ("parameter", "input"):
+            raise ValueError(f"{name} is an {v.causality}, not a parameter or an input")
+        if v.type == "Enumeration":
+            if isinstance(value, str):
+                items = self.enumerations[v.declaredType.name]
+                if value not in items:
+                    raise ValueError(f"{name} = {value!r}: not one of {sorted(items)}")
+                return items[value]
+            return int(value)
+        if v.type == "Integer":
+            if isinstance(value, str) or float(value) != int(value):
+                raise ValueError(f"{name} = {value!r}: not an integer")
+            return int(value)
+        if v.type == "String":
+            return str(value)
+        return float(value)
+
+
+class Model(Interface):
+    """One extracted FMU and one instance of it, reused for every run."""
+
+    def __init__(self, fmu=None, name="contactbody"):
+        self.path = find_fmu(fmu)
+        super().__init__(fmpy.read_model_description(str(self.path)))
+        self.directory = tempfile.mkdtemp(prefix="ContactBody_")
+        fmpy.extract(str(self.path), self.directory)
+        self.name = name
+        self.instance = Instance(self.description, self.directory, name)
+        self._used = False
+
+    def close(self):
+        if self.instance is not None:
+            self.instance.close()
+            self.instance.free_library()
+            self.instance = None
+        shutil.rmtree(self.directory, ignore_errors=True)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def set_values(self, values: dict):
+        for name, value in values.items():
+            v, x = self.variable(name), self.coerce(name, value)
+            if v.type == "Real":
+                self.instance.setReal([v.valueReference], [x])
+            elif v.type == "String":
+                self.instance.setString([v.valueReference], [x])
+            else:
+                self.instance.setInteger([v.valueReference], [x])
+
+    def _call(self, what, f, *args):
+        before = len(self.instance.messages)
+        try:
+            return f(*args)
+        except FMICallException as e:
+            errors = [m[2] for m in self.instance.messages[before:] if m[0] >= 2]
+            raise SimulationFailed(f"{what}: " + ("; ".join(errors) or str(e))) from None
+
+    def start(self, values: dict, start_time: float = 0.0):
+        """Resets the instance if it has run before, and initializes it with these values
+        (parameters and input start values)."""
+        if self._used:
+            try:
+                self.instance.reset()
+            except FMICallException:  # a failed reset: start over with a new instance
+                self.instance.close()
+                self.instance = Instance(self.description, self.directory, self.name)
+        self._used = True
+        self.instance.messages.clear()
+        self._call("setupExperiment", self.instance.setupExperiment, None, start_time)
+        self._call("enterInitializationMode", self.instance.enterInitializationMode)
+        self._call("setting values", self.set_values, values)
+        self._call("exitInitializationMode", self.instance.exitInitializationMode)
+
+    def run(self, values: dict, stop_time: float, output_interval: float, outputs,
+            inputs: dict | None = None, start_time: float = 0.0):
+        """Simulates from start_time to stop_time in steps of output_interval.
+
+        values: parameters and constant inputs by name; inputs: input name -> Profile,
+        passed as value and slope at every communication point (exact for profiles whose
+        breakpoints are communication points). Returns (series, seconds): series maps "time"
+        and every output to an array with one row per communication point, the first at
+        start_time; seconds is the time spent in doStep."""
+        inputs = inputs or {}
+        start = dict(values)
+        for name, profile in inputs.items():
+            if self.variable(name).causality != "input":
+                raise ValueError(f"{name} is not an input: it cannot follow a profile")
+            start[name] = profile.value(start_time)
+        self.start(start, start_time)
+        steps = int(round((stop_time - start_time) / output_interval))
+        if steps < 1 or abs(start_time + steps * output_interval - stop_time) > 1e-9 * stop_time:
+            raise ValueError(f"stop_time - start_time must be a multiple of output_interval")
+        reals = [self.variable(n).valueReference for n in outputs
+                 if self.variable(n).type == "Real"]
+        integers = [self.variable(n).valueReference for n in outputs
+                    if self.variable(n).type != "Real"]
+        real_names = [n for n in outputs if self.variable(n).type == "Real"]
+        integer_names = [n for n in outputs if self.variable(n).type != "Real"]
+        rows_r = np.empty((steps + 1, len(reals)))
+        rows_i = np.empty((steps + 1, len(integers)), dtype=np.int64)
+        input_refs = {n: self.variable(n).valueReference for n in inputs}
+        inst, seconds = self.instance, 0.0
+
+        def read(k):
+            if reals:
+                rows_r[k] = inst.getReal(reals)
+            if integers:
+                rows_i[k] = inst.getInteger(integers)
+
+        read(0)
+        # Communication points as fmpy's simulate_fmu computes them (start + k * interval),
+        # so that the same point gives the same bits through either master.
+        times = start_time + output_interval * np.arange(steps + 1)
+        for k in range(steps):
+            t, h = float(times[k]), float(times[k + 1] - times[k])
+            for name, profile in inputs.items():
+                ref = input_refs[name]
+                inst.setReal([ref], [profile.value(t)])
+                inst.setRealInputDerivatives([ref], [1], [profile.slope(t)])
+            tic = time.perf_counter()
+            self._call(f"doStep to t = {times[k + 1]:.9g}", inst.doStep, t, h)
+            seconds += time.perf_counter() - tic
+            read(k + 1)
+        series = {"time": times}
+        series.update({n: rows_r[:, j] for j, n in enumerate(real_names)})
+        series.update({n: rows_i[:, j] for j, n in enumerate(integer_names)})
+        return series, seconds

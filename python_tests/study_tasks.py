@@ -1,0 +1,11 @@
+"""A study task for the tests: kills its worker process on the point with nx = 7, as a crash
+of the FMU inside the worker would; runs every other point normally."""
+import os
+
+from contactbody import study
+
+
+def crash_on_nx_7(point, s, digest):
+    if point.get("nx") == 7:
+        os._exit(3)
+    return study._run_on_worker(point, s, digest)

@@ -107,7 +107,12 @@ class Profile:
 
 
 class SimulationFailed(RuntimeError):
-    """An FMI call failed; the message carries the FMU's own error messages."""
+    """An FMI call failed; the message carries the FMU's own error messages. stage is
+    "initialization" or "step"; series holds the rows up to the failed step (run only)."""
+
+    def __init__(self, message, stage, series=None):
+        super().__init__(message)
+        self.stage, self.series = stage, series
 
 
 class Interface:
@@ -182,13 +187,13 @@ class Model(Interface):
             else:
                 self.instance.setInteger([v.valueReference], [x])
 
-    def _call(self, what, f, *args):
+    def _call(self, what, f, *args, stage="initialization"):
         before = len(self.instance.messages)
         try:
             return f(*args)
         except FMICallException as e:
             errors = [m[2] for m in self.instance.messages[before:] if m[0] >= 2]
-            raise SimulationFailed(f"{what}: " + ("; ".join(errors) or str(e))) from None
+            raise SimulationFailed(f"{what}: " + ("; ".join(errors) or str(e)), stage) from None
 
     def start(self, values: dict, start_time: float = 0.0):
         """Resets the instance if it has run before, and initializes it with these values
@@ -242,6 +247,12 @@ class Model(Interface):
             if integers:
                 rows_i[k] = inst.getInteger(integers)
 
+        def collect(rows):
+            series = {"time": times[:rows]}
+            series.update({n: rows_r[:rows, j] for j, n in enumerate(real_names)})
+            series.update({n: rows_i[:rows, j] for j, n in enumerate(integer_names)})
+            return series
+
         read(0)
         # Communication points as fmpy's simulate_fmu computes them (start + k * interval),
         # so that the same point gives the same bits through either master.
@@ -253,10 +264,11 @@ class Model(Interface):
                 inst.setReal([ref], [profile.value(t)])
                 inst.setRealInputDerivatives([ref], [1], [profile.slope(t)])
             tic = time.perf_counter()
-            self._call(f"doStep to t = {times[k + 1]:.9g}", inst.doStep, t, h)
+            try:
+                self._call(f"doStep to t = {times[k + 1]:.9g}", inst.doStep, t, h, stage="step")
+            except SimulationFailed as e:
+                e.series = collect(k + 1)
+                raise
             seconds += time.perf_counter() - tic
             read(k + 1)
-        series = {"time": times}
-        series.update({n: rows_r[:, j] for j, n in enumerate(real_names)})
-        series.update({n: rows_i[:, j] for j, n in enumerate(integer_names)})
-        return series, seconds
+        return collect(steps + 1), seconds

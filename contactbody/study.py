@@ -14,7 +14,8 @@ flushed), so a killed study loses nothing finished, and a rerun skips the points
 it. results.parquet holds the same rows; it is rewritten from the journal as points finish
 (at most every 5 s) and at the end. A point whose run fails (a parameter the FMU refuses, a
 contact solve that fails, a worker process that dies) is recorded with its message, and the
-study goes on.
+study goes on. A point whose worker dies is run once more (another point on the same worker
+may have been the cause); a second death is recorded as its own.
 """
 from __future__ import annotations
 
@@ -310,12 +311,16 @@ def _client(workers, scheduler, dashboard=True):
     return Client(cluster), cluster
 
 
+def _key(pid: str) -> str:
+    return f"point-{pid}-{time.monotonic_ns()}"
+
+
 def run_study(study: Study, out, fmu=None, workers: int | None = None,
               scheduler: str | None = None, retry_failed: bool = False, progress: bool = True,
               dashboard: bool = True, log=print, task=None):
     """Runs the points of `study` not yet in `out`'s table; returns the whole table (pandas),
     with the number of points this call ran in its attrs["ran"]. task: the function run on
-    the workers, task(point, study, digest) -> (record, series) (default: run the point on
+    the workers, task(point, study=, digest=) -> (record, series) (default: run the point on
     the worker's model; tests pass one that crashes its worker)."""
     from distributed import as_completed
     from tqdm import tqdm
@@ -351,23 +356,40 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
             if dashboard and client.dashboard_link:
                 log(f"dask dashboard: {client.dashboard_link}")
             client.register_plugin(ShipFMU(data, digest))
-            futures = {client.submit(task or _run_on_worker, point, study, digest, pure=False,
-                                     key=f"point-{pid}-{time.monotonic_ns()}"): pid
-                       for pid, point in todo.items()}
+            task = task or _run_on_worker
+            pids = list(todo)
+            # One batch, so that the scheduler queues the points and hands each worker one
+            # at a time.
+            batch = client.map(task, [todo[p] for p in pids], study=study, digest=digest,
+                               pure=False, key=[_key(p) for p in pids])
+            futures = dict(zip(batch, pids))
+            deaths = dict.fromkeys(pids, 0)
             last_parquet = time.monotonic()
-            for future in tqdm(as_completed(futures), total=len(futures), disable=not progress,
-                               desc="points", unit="point"):
-                pid = futures[future]
+            bar = tqdm(total=len(pids), disable=not progress, desc="points", unit="point")
+            completed = as_completed(batch)
+            for future in completed:
+                pid = futures.pop(future)
                 series = None
                 try:
                     record, series = future.result()
                 except Exception as e:  # noqa: BLE001 (any failure is the point's record)
                     name = type(e).__name__
-                    why = ("its worker process died while running it"
+                    if name == "KilledWorker" and deaths[pid] == 0:
+                        # Its worker died: because of it, or of another point running there.
+                        # Once more; a second death is its own.
+                        deaths[pid] += 1
+                        again = client.submit(task, todo[pid], study=study, digest=digest, pure=False,
+                                              key=_key(pid))
+                        futures[again] = pid
+                        completed.add(again)
+                        future.release()
+                        continue
+                    why = ("its worker process died while running it, twice"
                            if name == "KilledWorker" else "the task failed")
                     record = {"status": "failed", "message": f"{why} ({name}: {e})",
                               **failed_metrics(), "wall_time": math.nan,
                               "dostep_time": math.nan}
+                bar.update()
                 future.release()
                 point = todo[pid]
                 record.update({"point_id": pid,
@@ -379,6 +401,7 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
                 if time.monotonic() - last_parquet > 5:
                     table.write_parquet()
                     last_parquet = time.monotonic()
+            bar.close()
         finally:
             client.close()
             if cluster is not None:

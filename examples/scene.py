@@ -28,14 +28,3 @@ def simulate(stop_time, output_interval, fmu=FMU, outputs=None, **start_values):
     result = simulate_fmu(str(fmu), stop_time=stop_time, output_interval=output_interval,
                           start_values=start_values, output=outputs)
     return result, time.perf_counter() - start
-
-
-def set_values(slave, variables, values):
-    """Sets start values on an fmpy FMU2Slave by name (variables: name -> ScalarVariable of
-    the model description), Real ones by setReal, Integer and Enumeration ones by setInteger."""
-    for name, value in values.items():
-        v = variables[name]
-        if v.type == "Real":
-            slave.setReal([v.valueReference], [float(value)])
-        else:
-            slave.setInteger([v.valueReference], [int(value)])

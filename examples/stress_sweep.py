@@ -23,12 +23,13 @@ import sys
 
 import numpy as np
 
-from scene import FMU, ROOT, set_values
+from scene import FMU, ROOT
 
 VARIANTS = ["standard", "redistributed_normal", "redistributed_both",
             "standard_implicit_contact", "redistributed_implicit_contact"]
 OUTPUTS = ["energy", "clamp_work", "normal_contact_work", "friction_work", "damping_work",
-           "foundation_work", "max_penetration"]
+           "foundation_work", "max_penetration", "contact_iterations", "gauss_seidel_sweeps",
+           "substep_refinements"]
 
 
 def random_scene(rng, variant):
@@ -58,63 +59,31 @@ def random_scene(rng, variant):
 
 def run_scene(scene, stop, fmu):
     """In this process: the scene's record (called in a child process by sweep())."""
-    import ctypes
+    from contactbody.fmu import Model, SimulationFailed
 
-    import fmpy
-    from fmpy.fmi1 import FMICallException
-    from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
-    from fmpy.logging import addLoggerProxy
-
-    md = fmpy.read_model_description(str(fmu))
-    variables = {v.name: v for v in md.modelVariables}
-    vr = {name: v.valueReference for name, v in variables.items()}
-    log = []
     record = {"scene": scene, "status": "ok", "message": ""}
-    slave = FMU2Slave(guid=md.guid, unzipDirectory=fmpy.extract(str(fmu)),
-                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="sweep")
-    callbacks = fmi2CallbackFunctions()  # fmpy's proxy formats the variadic message
-    callbacks.logger = fmi2CallbackLoggerTYPE(lambda *a: log.append(a[-1].decode()))
-    addLoggerProxy(ctypes.byref(callbacks))
-    slave.instantiate(callbacks=callbacks, loggingOn=True)
-    slave.setDebugLogging(True, ["logEvents", "logContactSolver"])
-    refs = [vr[n] for n in OUTPUTS]
-    try:
-        slave.setupExperiment(startTime=0)
-        slave.enterInitializationMode()
-        set_values(slave, variables, scene)
+    with Model(fmu, name="sweep") as model:
         try:
-            slave.exitInitializationMode()
-        except FMICallException:
-            record.update(status="refused", message=log[-1] if log else "")
-            return record
-        first = dict(zip(OUTPUTS, slave.getReal(refs)))
-        rows = [first]
-        h = 1e-4
-        try:
-            for k in range(round(stop / h)):
-                slave.doStep(k * h, h)
-                rows.append(dict(zip(OUTPUTS, slave.getReal(refs))))
-        except FMICallException:
-            record.update(status="error", message=log[-1] if log else "")
-        energy = np.array([r["energy"] for r in rows])
-        last = rows[-1]
-        put_in = first["energy"] + abs(last["clamp_work"]) + abs(last["foundation_work"])
-        balance = (last["energy"] - first["energy"] - last["clamp_work"]
-                   - last["normal_contact_work"] - last["friction_work"] + last["damping_work"])
-        record.update(
-            steps=len(rows) - 1, max_energy=float(energy.max()), work_in=float(put_in),
-            blow_up=bool(energy.max() > 1e3 * put_in),
-            balance_error=float(abs(balance) / max(abs(last["energy"]), put_in, 1e-300)),
-            max_penetration=float(max(r["max_penetration"] for r in rows)),
-            newton_iterations=sum(int(m.split("Newton iterations ")[1].split()[0])
-                                  for m in log if "Newton iterations " in m),
-            sweeps=sum(int(m.split("Gauss-Seidel sweeps ")[1].split()[0])
-                       for m in log if "Gauss-Seidel sweeps " in m),
-            refinements=sum(int(m.split(": ")[1].split()[0]) for m in log
-                            if "substeps redone as halves" in m))
-        return record
-    finally:
-        slave.freeInstance()
+            rows, _ = model.run(scene, stop, 1e-4, OUTPUTS)
+        except SimulationFailed as e:
+            if e.stage == "initialization":
+                record.update(status="refused", message=str(e))
+                return record
+            record.update(status="error", message=str(e))
+            rows = e.series
+    energy, last = rows["energy"], {n: rows[n][-1] for n in OUTPUTS}
+    put_in = energy[0] + abs(last["clamp_work"]) + abs(last["foundation_work"])
+    balance = (last["energy"] - energy[0] - last["clamp_work"] - last["normal_contact_work"]
+               - last["friction_work"] + last["damping_work"])
+    record.update(
+        steps=len(energy) - 1, max_energy=float(energy.max()), work_in=float(put_in),
+        blow_up=bool(energy.max() > 1e3 * put_in),
+        balance_error=float(abs(balance) / max(abs(last["energy"]), put_in, 1e-300)),
+        max_penetration=float(rows["max_penetration"].max()),
+        newton_iterations=int(rows["contact_iterations"].sum()),
+        sweeps=int(rows["gauss_seidel_sweeps"].sum()),
+        refinements=int(rows["substep_refinements"].sum()))
+    return record
 
 
 def sweep(scenes, stop, fmu=FMU, timeout=120):

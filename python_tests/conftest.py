@@ -1,7 +1,5 @@
 """Shared fixtures: the built FMU, its extracted copy, and low-level instances that record
 every log message."""
-import ctypes
-import itertools
 import os
 import pathlib
 import shutil
@@ -9,8 +7,9 @@ import tempfile
 
 import fmpy
 import pytest
-from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
-from fmpy.logging import addLoggerProxy
+
+# An fmpy FMU2Slave that keeps its log messages in .messages (status, category, text).
+from contactbody.fmu import Instance  # noqa: F401
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 # CONTACTBODY_FMU points the suite at another build (the sanitizer job's).
@@ -40,44 +39,6 @@ def unzipped(fmu_path):
 @pytest.fixture(scope="session")
 def vr(model_description):
     return {v.name: v.valueReference for v in model_description.modelVariables}
-
-
-# fmpy's native logger proxy (which formats the variadic message) holds one Python logger
-# for the whole process: messages are routed to their instance by instance name.
-_messages_by_instance = {}
-
-
-def _log(_env, name, status, category, message):
-    _messages_by_instance.setdefault(name.decode(), []).append(
-        (status, category.decode(), message.decode()))
-
-
-_logger = fmi2CallbackLoggerTYPE(_log)
-_serial = itertools.count()
-
-
-class Instance:
-    """An FMU2Slave whose log messages are kept in .messages as (status, category, text)."""
-
-    def __init__(self, model_description, unzipped, name="instance"):
-        self.name = f"{name}#{next(_serial)}"
-        self.messages = _messages_by_instance.setdefault(self.name, [])
-        self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
-                               modelIdentifier=model_description.coSimulation.modelIdentifier,
-                               instanceName=self.name)
-        self.callbacks = fmi2CallbackFunctions()
-        self.callbacks.logger = _logger
-        addLoggerProxy(ctypes.byref(self.callbacks))
-        self.slave.instantiate(callbacks=self.callbacks)
-
-    def __getattr__(self, name):
-        return getattr(self.slave, name)
-
-    def text(self):
-        return "\n".join(m[2] for m in self.messages)
-
-    def close(self):
-        self.slave.freeInstance()
 
 
 @pytest.fixture

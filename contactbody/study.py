@@ -301,11 +301,9 @@ def _client(workers, scheduler, dashboard=True):
     from distributed import Client, LocalCluster
     if scheduler:
         return Client(scheduler), None
-    # allowed-failures 0: a point that kills its worker is recorded at once, not retried on
-    # 3 more workers; worker-saturation 1: a worker holds only the point it runs, so a dying
-    # worker takes no other point with it.
-    with dask.config.set({"distributed.scheduler.allowed-failures": 0,
-                          "distributed.scheduler.worker-saturation": 1.0}):
+    # allowed-failures 0: a point whose worker dies comes back to run_study at once (which
+    # runs it once more itself), instead of being retried on 3 more workers.
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
         cluster = LocalCluster(n_workers=workers or os.cpu_count(), threads_per_worker=1,
                                processes=True, dashboard_address=":8787" if dashboard else None)
     return Client(cluster), cluster

@@ -1,0 +1,130 @@
+"""Cost of a parameter study (issue 13): 64 points of the default scene (the paper's body,
+F = 1.2, 0.02 s at a 1e-4 s communication step; foundation_velocity from 10 to 30 m/s so
+that every point differs), measured in one run:
+
+  bare:       the 64 points in a plain loop on one contactbody.Model in this process; the
+              time of their doSteps only, and of the whole loop;
+  1 worker:   contactbody.study.run_study on a LocalCluster of 1 worker, wall time of the
+              call (cluster start-up included, and also reported without it);
+  2 workers:  the same on 2 workers.
+
+Per-point overhead = (study wall - bare doSteps) / bare doSteps; speed-up = 1 worker / 2.
+The machine is noisy (identical bare loops differ by up to 20 %): each of the three is run
+three times, interleaved, and the best time is kept. Writes benchmarks/results/study.{md,json}.
+
+    .venv/bin/python benchmarks/study_benchmark.py [--points 64]
+"""
+import argparse
+import json
+import os
+import pathlib
+import sys
+import tempfile
+import time
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")  # as dask's nanny sets it for its workers
+
+import numpy as np  # noqa: E402
+
+from contactbody.fmu import Model, find_fmu  # noqa: E402
+from contactbody.study import Study, run_study  # noqa: E402
+
+RESULTS = pathlib.Path(__file__).resolve().parent / "results"
+ROUNDS = 3
+
+
+def study_of(points):
+    return Study(stop_time=0.02, output_interval=1e-4,
+                 grid={"foundation_velocity": [float(v) for v in np.linspace(10, 30, points)]})
+
+
+def bare(study):
+    """The points in a plain loop: (doStep seconds, whole-loop seconds)."""
+    with Model(find_fmu()) as model:
+        from contactbody.study import OUTPUTS
+        start, dostep = time.perf_counter(), 0.0
+        for point in study.expand():
+            _, seconds = model.run(point, study.stop_time, study.output_interval, OUTPUTS)
+            dostep += seconds
+        return dostep, time.perf_counter() - start
+
+
+def cluster_start(workers):
+    """Seconds to start and stop a LocalCluster of this size with a client."""
+    from distributed import Client, LocalCluster
+    tic = time.perf_counter()
+    with LocalCluster(n_workers=workers, threads_per_worker=1, dashboard_address=None) as c:
+        with Client(c) as client:
+            client.wait_for_workers(workers)
+    return time.perf_counter() - tic
+
+
+def study_run(study, workers):
+    with tempfile.TemporaryDirectory() as out:
+        tic = time.perf_counter()
+        df = run_study(study, out, workers=workers, progress=False, dashboard=False,
+                       log=lambda *a: None)
+        wall = time.perf_counter() - tic
+    assert set(df["status"]) == {"ok"}, df["message"].unique()
+    return wall, float(df["dostep_time"].sum()), float(df["wall_time"].sum())
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--points", type=int, default=64)
+    args = parser.parse_args()
+    study = study_of(args.points)
+    n = args.points
+    runs = {"bare": [], 1: [], 2: []}
+    for _ in range(ROUNDS):
+        runs["bare"].append(bare(study))
+        runs[1].append(study_run(study, 1))
+        runs[2].append(study_run(study, 2))
+    dostep, loop = min(runs["bare"])
+    wall1, dostep1, point1 = min(runs[1])
+    wall2, dostep2, point2 = min(runs[2])
+    start1, start2 = min(cluster_start(1) for _ in range(2)), min(cluster_start(2) for _ in range(2))
+    r = {
+        "points": n, "cpu_count": os.cpu_count(),
+        "bare_dostep_s": dostep, "bare_loop_s": loop,
+        "cluster_start_1_s": start1, "cluster_start_2_s": start2,
+        "study_1_worker_s": wall1, "study_2_workers_s": wall2,
+        "study_1_worker_dostep_s": dostep1, "study_1_worker_points_s": point1,
+        "overhead_per_point": (wall1 - dostep) / dostep,
+        "overhead_per_point_without_start": (wall1 - start1 - dostep) / dostep,
+        "worker_side_overhead": (point1 - dostep1) / dostep1,
+        "speedup_2_workers": wall1 / wall2,
+        "speedup_2_workers_without_start": (wall1 - start1) / (wall2 - start2),
+    }
+    md = [
+        f"# Study benchmark ({n} points of the default scene, {os.cpu_count()} cores)",
+        "",
+        "Command: `.venv/bin/python benchmarks/study_benchmark.py`",
+        "",
+        "| what | seconds | per point (ms) |",
+        "|---|---|---|",
+        f"| bare: doSteps only | {dostep:.2f} | {1e3 * dostep / n:.1f} |",
+        f"| bare: whole loop (reset, initialization, doSteps, reading outputs) | {loop:.2f} "
+        f"| {1e3 * loop / n:.1f} |",
+        f"| LocalCluster start + stop, 1 worker / 2 workers | {start1:.2f} / {start2:.2f} | |",
+        f"| study, 1 worker (run_study wall) | {wall1:.2f} | {1e3 * wall1 / n:.1f} |",
+        f"| study, 2 workers (run_study wall) | {wall2:.2f} | {1e3 * wall2 / n:.1f} |",
+        "",
+        f"- the runner's own cost (1-worker study wall minus the points' wall times on the "
+        f"worker): {1e3 * (wall1 - point1) / n:.1f} ms per point",
+        f"- per-point overhead of the 1-worker study against the bare doSteps: "
+        f"**{100 * r['overhead_per_point']:.1f} %** "
+        f"({100 * r['overhead_per_point_without_start']:.1f} % without the cluster start-up; "
+        f"on the worker, point wall vs its doSteps: {100 * r['worker_side_overhead']:.1f} %)",
+        f"- 2 workers against 1: **{r['speedup_2_workers']:.2f}×** "
+        f"({r['speedup_2_workers_without_start']:.2f}× without the cluster start-up)",
+    ]
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / "study.json").write_text(json.dumps(r, indent=1))
+    (RESULTS / "study.md").write_text("\n".join(md) + "\n")
+    print("\n".join(md))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -22,12 +22,21 @@ class System:
     connections: (source "component.output", target "component.input");
     record: outputs kept at every communication point ("component.variable");
     bonds: power bonds checked by the adaptive master, (work A, work B, factor): the energy
-    that crosses the connection, counted on both sides, A = factor x B."""
+    that crosses the connection, counted on both sides, A = factor x B;
+    scales: typical magnitudes of outputs ("component.output" -> value, default 1), for the
+    masters' absolute tolerances and the relaxation's weighting;
+    averaged: outputs that are averages over the last step (ContactBody's forces), not
+    end-of-step values: strong coupling holds their targets at the guessed average."""
     components: dict
     connections: list
     parameters: dict = field(default_factory=dict)
     record: list = field(default_factory=list)
     bonds: list = field(default_factory=list)
+    scales: dict = field(default_factory=dict)
+    averaged: list = field(default_factory=list)  # sources whose output is a step average
+
+    def scale(self, path):
+        return float(self.scales.get(path, 1.0))
 
     def component_parameters(self, component):
         prefix = component + "."
@@ -138,10 +147,14 @@ class Master:
 
     def step_iterated(self, h, tolerance=1e-6, max_iterations=50):
         """Strong coupling: each input ramps across the step from its value at the start to a
-        guess of the source's output at the end; the guesses are iterated (Aitken-relaxed
-        fixed point) until they match the outputs to `tolerance` (relative). Returns the
-        iterations; raises RuntimeError if they do not converge."""
+        guess of the source's output at the end (or, for an averaged source, is held at a
+        guess of its average over the step, so that force x motion is the same on both
+        sides); the guesses are iterated (a fixed point with Aitken's relaxation, on
+        residuals divided by the sources' scales) until every output matches its guess to
+        tolerance x (its scale + |its value|). Returns the iterations; raises RuntimeError if
+        they do not converge."""
         connections = self.system.connections
+        scale = np.array([self.system.scale(s) for s, _ in connections])
         start = dict(self.held)
         guess = np.array([start[t] for _, t in connections])
         snapshot = self.save()
@@ -150,12 +163,15 @@ class Master:
             for iteration in range(1, max_iterations + 1):
                 if iteration > 1:
                     self.restore(snapshot)
-                slopes = {t: (g - start[t]) / h for (_, t), g in zip(connections, guess)}
-                self._do_step(h, start, slopes)
+                values, slopes = {}, {}
+                for (s, t), g in zip(connections, guess):
+                    averaged = s in self.system.averaged
+                    values[t] = g if averaged else start[t]
+                    slopes[t] = 0.0 if averaged else (g - start[t]) / h
+                self._do_step(h, values, slopes)
                 out = np.array([self.values[s] for s, _ in connections])
-                residual = out - guess
-                scale = np.maximum(np.abs(out), 1e-12)
-                if np.all(np.abs(residual) <= tolerance * scale):
+                residual = (out - guess) / scale
+                if np.all(np.abs(residual) <= tolerance * (1 + np.abs(out) / scale)):
                     self.held = {t: self.values[s] for s, t in connections}
                     return iteration
                 if previous_residual is not None:  # Aitken's dynamic relaxation
@@ -164,7 +180,7 @@ class Master:
                     if denominator > 0:
                         omega = -omega * float(previous_residual @ dr) / denominator
                 previous_residual = residual
-                guess = guess + omega * residual
+                guess = guess + omega * residual * scale
             raise RuntimeError(f"strong coupling did not converge in {max_iterations} "
                                f"iterations at t = {self.time - h:.9g}")
         finally:
@@ -194,28 +210,33 @@ class Master:
             rows.append(self._row())
         return self._result(rows)
 
-    def _error(self, coarse, fine, scales, rtol, atol):
-        """Step-doubling error of the coupled outputs and of the power bonds, in units of
-        the tolerance."""
+    def _error(self, start, coarse, fine, scales, rtol, atol):
+        """Step-doubling error of the coupled outputs, and the energy residual of the power
+        bonds over the step (what one side counted against the other), in units of the
+        tolerance."""
         error = 0.0
         for s, _ in self.system.connections:
             error = max(error, abs(fine[s] - coarse[s]) / (atol * scales[s] + rtol * abs(fine[s])))
         for a, b, factor in self.system.bonds:
-            mismatch = abs(fine[a] - factor * fine[b])
-            error = max(error, mismatch / (atol * scales[a] + rtol * abs(fine[a])))
+            mismatch = abs((fine[a] - start[a]) - factor * (fine[b] - start[b]))
+            error = max(error, mismatch / (atol * scales[a] + rtol * abs(fine[a] - start[a])))
         return error
 
     def run_adaptive(self, stop_time, rtol=1e-3, atol=1e-3, h0=1e-5, h_min=1e-7, h_max=1e-3,
-                     extrapolate=True, scales=None, start_time=0.0):
+                     extrapolate=True, scales=None, start_time=0.0, estimator="doubling"):
         """Step doubling: from the accepted point, one step of 2h and, after rolling every
         FMU back, two of h; the error is their difference on the connected outputs (and the
         power bonds' mismatch), against atol x scale + rtol x |value|. Accepted: the two
         half steps are kept; the step grows or shrinks with the error (order 1 of the
-        held inputs; 2 with extrapolated slopes). Returns the recorded outputs at the
-        accepted points; .accepted, .rejected and .do_steps count the work."""
+        held inputs; 2 with extrapolated slopes).
+        estimator="input": one step of h, and the error is how far each input the targets
+        assumed (held, or extrapolated along its slope) ended from its source's output at the
+        step's end (plus the bonds' residual); a rejected step is rolled back. It costs one
+        step per accepted step where doubling costs three.
+        Returns the recorded outputs at the accepted points; .accepted, .rejected and
+        .do_steps count the work."""
         self.initialize(start_time)
-        scales = scales or {}
-        scales = {p: scales.get(p, 1.0) for p in self.watched}
+        scales = {p: (scales or {}).get(p, self.system.scale(p)) for p in self.watched}
         rows = [self._row()]
         order = 2 if extrapolate else 1
         h = h0
@@ -224,12 +245,21 @@ class Master:
             h = min(h, 0.5 * (stop_time - self.time))
             start = self.save()
             try:
-                self.step(2 * h, extrapolate)
-                coarse = dict(self.values)
-                self.restore(start)
-                self.step(h, extrapolate)
-                self.step(h, extrapolate)
-                error = self._error(coarse, self.values, scales, rtol, atol)
+                if estimator == "doubling":
+                    self.step(2 * h, extrapolate)
+                    coarse = dict(self.values)
+                    self.restore(start)
+                    self.step(h, extrapolate)
+                    self.step(h, extrapolate)
+                else:  # the inputs' end values as the targets assumed them
+                    assumed = dict(self.values)
+                    if extrapolate and self.previous is not None:
+                        before, h0 = self.previous
+                        assumed = {p: v + (v - before[p]) / h0 * 2 * h
+                                   for p, v in self.values.items()}
+                    self.step(2 * h, extrapolate)
+                    coarse = assumed
+                error = self._error(start[1][1], coarse, self.values, scales, rtol, atol)
                 if error <= 1 or h <= h_min:
                     self.accepted += 1
                     rows.append(self._row())

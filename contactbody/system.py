@@ -30,10 +30,10 @@ from .master import System
 WIDTH = 0.01  # m: the body's thickness, the companions' contact_width
 
 # The body under the belt: damped (the damping issue's stable setting), F = 0.3, starting at
-# rest under its static preload; internal_step 2.5e-6 s divides every communication step the
-# examples use (1e-4 ... 1.25e-5 s), so the body's own time step is the same in all of them.
+# rest under its static preload; internal_step 3.125e-6 s divides every communication step the
+# examples use (1e-4 ... 3.125e-6 s), so the body's own time step is the same in all of them.
 BODY = {"nx": 10, "ny": 10, "friction_coefficient": 0.3, "damping_stiffness": 4e-6,
-        "initial_state": 1, "internal_step": 2.5e-6}
+        "initial_state": 1, "internal_step": 3.125e-6}
 
 
 def fmu(name):
@@ -50,7 +50,10 @@ def belt_system(**body) -> System:
         record=["belt.belt_velocity", "body.friction_force", "body.normal_force",
                 "body.slipping_contact_nodes", "body.active_contact_nodes", "belt.load_work",
                 "body.foundation_work", "belt.drive_work", "body.energy"],
-        bonds=[("belt.load_work", "body.foundation_work", WIDTH)])
+        bonds=[("belt.load_work", "body.foundation_work", WIDTH)],
+        scales={"belt.belt_velocity": 1.0, "body.friction_force": 1e3, "belt.load_work": 0.1,
+                "body.foundation_work": 10.0},
+        averaged=["body.friction_force"])
 
 
 def press_system(**body) -> System:
@@ -66,7 +69,9 @@ def press_system(**body) -> System:
                     "body.foundation_velocity": 0.5, "press.contact_width": WIDTH},
         record=["press.position", "press.velocity", "press.reaction_force",
                 "press.actuator_force", "body.top_reaction_y", "body.normal_force",
-                "body.energy"])
+                "body.energy"],
+        scales={"press.position": 1e-5, "body.top_reaction_y": 1e4},
+        averaged=["body.top_reaction_y"])
 
 
 # --- SSP -------------------------------------------------------------------------------------
@@ -137,7 +142,8 @@ def write_ssp(system: System, path, name="System", stop_time=0.01):
 def simulate_ssp(path, stop_time, step_size):
     """fmpy's simulate_ssp with the archive's parameters. Note fmpy's conventions: every
     input starts at 0 (not at its source's initial output), and each row holds the outputs
-    at the end of a step labelled with the step's start time."""
+    at the end of a step labelled with the step's start time; it adds up time
+    (time += step_size), so it may take one step past stop_time."""
     from fmpy.ssp.ssd import read_ssv
     from fmpy.ssp.simulation import simulate_ssp as fmpy_simulate_ssp
     with tempfile.TemporaryDirectory() as tmp:

@@ -29,7 +29,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import fields  # noqa: E402
-from scene import OUT, REFERENCE, TABLE2, WIDTH, cells, simulate  # noqa: E402
+from scene import output_argument, REFERENCE, TABLE2, WIDTH, cells, simulate  # noqa: E402
 
 STOP, INTERVAL = 5.12e-3, 1.6e-4
 
@@ -88,7 +88,9 @@ def main():
                         help="Rayleigh damping beta [s] (C = beta A) for every run")
     parser.add_argument("--single", nargs=4, type=float, help=argparse.SUPPRESS)
     parser.add_argument("--directory", help=argparse.SUPPRESS)
+    output_argument(parser)
     args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
     if args.single:  # one run in its own process, so that its peak memory can be measured
         h, dt, friction, beta = args.single
         print(json.dumps({"wall": run_one(h, dt, friction, args.directory, beta)}))
@@ -96,7 +98,7 @@ def main():
 
     beta = args.damping_stiffness
     tag = "_damped" if beta > 0 else ""
-    base = OUT / f"convergence_fields{tag}"
+    base = args.out / f"convergence_fields{tag}"
     report = {}
     for friction in args.friction:
         ref_dir = base / f"F{friction:g}" / "reference"
@@ -148,8 +150,8 @@ def main():
                          f"| {row['h1']:.3e} | {o1} | {row['wall']:.2f} |")
             prev = row
         lines.append("")
-    (OUT / f"convergence{tag}.md").write_text("\n".join(lines))
-    (OUT / f"convergence{tag}.json").write_text(json.dumps({"damping_stiffness": beta, **report},
+    (args.out / f"convergence{tag}.md").write_text("\n".join(lines))
+    (args.out / f"convergence{tag}.json").write_text(json.dumps({"damping_stiffness": beta, **report},
                                                           indent=1))
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -165,7 +167,7 @@ def main():
     fig.suptitle("Fig. 9: convergence against the reference (h = 0.0625 cm, dt = 5e-7 s)"
                  + damping)
     fig.tight_layout()
-    fig.savefig(OUT / f"figure_9{tag}.png", dpi=110)
+    fig.savefig(args.out / f"figure_9{tag}.png", dpi=110)
     print("\n".join(lines))
 
 

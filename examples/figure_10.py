@@ -5,17 +5,21 @@ Writes examples/output/figure_10.png and prints a table.
 
     .venv/bin/python examples/figure_10.py
 """
+import argparse
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from scene import OUT, TABLE2, VARIANTS, cells, simulate  # noqa: E402
+from scene import output_argument, TABLE2, VARIANTS, cells, simulate  # noqa: E402
 
 
 def main():
-    OUT.mkdir(parents=True, exist_ok=True)
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    output_argument(parser)
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.2), sharey=True)
     print(f"{'mass_matrix':<22} {'h [cm]':>7} {'dt [s]':>8} {'mean [MPa]':>11} "
           f"{'min [MPa]':>10} {'max [MPa]':>10}")
@@ -37,8 +41,8 @@ def main():
     axes[0].legend(fontsize=8)
     fig.suptitle("Fig. 10: corner_friction, F = 1.2 (averages over 16 µs output steps)")
     fig.tight_layout()
-    fig.savefig(OUT / "figure_10.png", dpi=110)
-    print(f"wrote {OUT / 'figure_10.png'}")
+    fig.savefig(args.out / "figure_10.png", dpi=110)
+    print(f"wrote {args.out / 'figure_10.png'}")
 
 
 if __name__ == "__main__":

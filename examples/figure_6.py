@@ -17,7 +17,7 @@ import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
 import fields  # noqa: E402
-from scene import OUT, simulate  # noqa: E402
+from scene import output_argument, simulate  # noqa: E402
 
 
 def main():
@@ -26,8 +26,9 @@ def main():
                         help="displacement scale (default: largest displacement drawn as 1 cm)")
     parser.add_argument("--mass-matrix", type=int, default=1)
     parser.add_argument("--times", type=float, nargs="+", default=[0, 1e-3, 2e-3, 4e-3])
+    output_argument(parser)
     args = parser.parse_args()
-    OUT.mkdir(parents=True, exist_ok=True)
+    args.out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as directory:
         simulate(max(args.times) + 1e-4, 1e-4, mass_matrix=args.mass_matrix,
                  result_directory=directory, field_output_interval=1e-4)
@@ -66,8 +67,8 @@ def main():
     axes[0, 0].set_ylabel("y [cm]")
     axes[1, 0].set_ylabel("contact pressure [MPa]")
     fig.tight_layout()
-    fig.savefig(OUT / "figure_6.png", dpi=110)
-    print(f"wrote {OUT / 'figure_6.png'}")
+    fig.savefig(args.out / "figure_6.png", dpi=110)
+    print(f"wrote {args.out / 'figure_6.png'}")
 
 
 if __name__ == "__main__":

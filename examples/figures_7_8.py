@@ -14,7 +14,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from scene import DT_LADDER, OUT, VARIANTS, simulate  # noqa: E402
+from scene import output_argument, DT_LADDER, VARIANTS, simulate  # noqa: E402
 
 
 def drift(r):
@@ -27,8 +27,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stop-time", type=float, default=0.02)
     parser.add_argument("--friction", type=float, default=1.2)
+    output_argument(parser)
     args = parser.parse_args()
-    OUT.mkdir(parents=True, exist_ok=True)
+    args.out.mkdir(parents=True, exist_ok=True)
 
     runs = {}
     print(f"{'mass_matrix':<27} {'dt [s]':>8} {'max E [J/m]':>12} {'E(end)':>11} "
@@ -60,8 +61,8 @@ def main():
         fig.suptitle(f"{'Fig. 7' if key == 'energy' else 'Fig. 8'}: h = 0.5 cm, "
                      f"F = {args.friction:g}")
         fig.tight_layout()
-        fig.savefig(OUT / filename, dpi=110)
-        print(f"wrote {OUT / filename}")
+        fig.savefig(args.out / filename, dpi=110)
+        print(f"wrote {args.out / filename}")
 
 
 if __name__ == "__main__":

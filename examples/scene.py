@@ -28,3 +28,9 @@ def simulate(stop_time, output_interval, fmu=FMU, outputs=None, **start_values):
     result = simulate_fmu(str(fmu), stop_time=stop_time, output_interval=output_interval,
                           start_values=start_values, output=outputs)
     return result, time.perf_counter() - start
+
+
+def output_argument(parser):
+    """--out DIR: where the script writes its files (default examples/output; created)."""
+    parser.add_argument("--out", type=pathlib.Path, default=OUT,
+                        help="output directory (default: examples/output)")

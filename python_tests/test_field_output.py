@@ -116,6 +116,7 @@ def test_rollback_rewrites_the_collection(model_description, unzipped, vr, tmp_p
         assert len(fields.read_collection(tmp_path / "contactbody.pvd")) == 8
         inst.setFMUstate(saved)
         assert len(fields.read_collection(tmp_path / "contactbody.pvd")) == 4
+        assert len(list(tmp_path.glob("*.vtu"))) == 4  # the rolled-back snapshots' files too
         assert inst.getReal([vr["energy"]]) == energy_saved
         inst.doStep(3e-4, 1e-4)
         listed = fields.read_collection(tmp_path / "contactbody.pvd")
@@ -123,6 +124,21 @@ def test_rollback_rewrites_the_collection(model_description, unzipped, vr, tmp_p
         inst.freeFMUstate(saved)
     finally:
         inst.close()
+
+
+def test_a_rerun_leaves_only_the_files_its_collection_lists(fmu_path, tmp_path):
+    """A longer run, then a shorter one into the same result_directory: the directory holds
+    exactly the .vtu files the new .pvd lists (other files are left alone)."""
+    (tmp_path / "notes.txt").write_text("mine")
+    run(fmu_path, result_directory=str(tmp_path), field_output_interval=1e-4)
+    assert len(list(tmp_path.glob("*.vtu"))) == 21
+    simulate_fmu(fmu_path, stop_time=5e-4, output_interval=1e-4,
+                 start_values={**SCENE, "result_directory": str(tmp_path),
+                               "field_output_interval": 1e-4})
+    listed = fields.read_collection(tmp_path / "contactbody.pvd")
+    assert sorted(p.name for p in tmp_path.glob("*.vtu")) == sorted(
+        pathlib.Path(f).name for _, f in listed)
+    assert len(listed) == 6 and (tmp_path / "notes.txt").read_text() == "mine"
 
 
 def test_nested_interpolation_is_exact_for_p1_fields():

@@ -73,6 +73,7 @@ FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string ba
     if (ec)
         throw std::runtime_error("result_directory '" + directory_ + "' cannot be created: " + ec.message());
     write_collection();  // fails here, at initialization, if the directory is not writable
+    remove_snapshots_from(0);  // a longer earlier run's snapshots would outlive the collection
 
     std::vector<double> points;
     points.reserve(3 * static_cast<size_t>(mesh.num_nodes()));
@@ -141,11 +142,29 @@ void FieldWriter::write(const State& s) {
 void FieldWriter::truncate(size_t count) {
     if (count < times_.size()) times_.resize(count);
     write_collection();
+    remove_snapshots_from(times_.size());
+}
+
+// Removes this writer's snapshot files (basename_NNNNNN.vtu) numbered `first` and up: the
+// directory then holds exactly the files its collection lists.
+void FieldWriter::remove_snapshots_from(size_t first) const {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(directory_, ec)) {
+        const std::string name = entry.path().filename().string();
+        const size_t digits = name.size() - basename_.size() - 5;  // "_" ... ".vtu"
+        if (name.size() != basename_.size() + 11 || name.compare(0, basename_.size(), basename_) != 0 ||
+            name[basename_.size()] != '_' || name.compare(name.size() - 4, 4, ".vtu") != 0)
+            continue;
+        const std::string number = name.substr(basename_.size() + 1, digits);
+        if (number.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (std::stoul(number) >= first) std::filesystem::remove(entry.path(), ec);
+    }
 }
 
 void FieldWriter::set_times(std::vector<double> times) {
     times_ = std::move(times);
     write_collection();
+    remove_snapshots_from(times_.size());
 }
 
 void FieldWriter::write_collection() const {

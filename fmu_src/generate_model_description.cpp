@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <string>
 
 #include "variables.hpp"
 
@@ -30,11 +31,30 @@ const char* name(Variability v) {
     return "";
 }
 
+// Text for an XML attribute value.
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+// The shortest decimal that reads back as x (0.1, not 0.10000000000000001).
 std::string number(double x) {
-    std::ostringstream s;
-    s.precision(17);
-    s << x;
-    return s.str();
+    if (x == std::floor(x) && std::abs(x) < 1e15) return std::to_string(static_cast<long long>(x));
+    for (int digits = 1;; ++digits) {
+        std::ostringstream s;
+        s.precision(digits);
+        s << x;
+        if (std::stod(s.str()) == x || digits >= 17) return s.str();
+    }
 }
 
 // SI base-unit exponents of the units the variables use.
@@ -105,7 +125,7 @@ int main(int argc, char** argv) {
         ++index;
         if (v.causality == Causality::output) outputs.push_back(index);
         x << "    <!-- " << index << " --><ScalarVariable name=\"" << v.name
-          << "\" valueReference=\"" << v.value_reference << "\" description=\"" << v.description
+          << "\" valueReference=\"" << v.value_reference << "\" description=\"" << escaped(v.description)
           << "\" causality=\"" << name(v.causality) << "\" variability=\"" << name(v.variability)
           << "\"";
         if (v.causality == Causality::output) x << " initial=\"calculated\"";

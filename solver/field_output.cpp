@@ -123,7 +123,11 @@ void FieldWriter::write(const State& s) {
     buffer_.clear();
     buffer_ += "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-               "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
+               "header_type=\"UInt64\">\n"
+               "  <!-- contact_force (N per metre of thickness, on the body) and contact_pressure "
+               "(Pa) are those of the last substep, instantaneous: the scalar outputs normal_force "
+               "and friction_force are averages over the communication step -->\n"
+               "  <UnstructuredGrid>\n";
     buffer_ += "    <Piece NumberOfPoints=\"" + std::to_string(nodes) + "\" NumberOfCells=\"" +
                std::to_string(mesh_.triangles.size()) + "\">\n";
     buffer_ += "      <PointData Vectors=\"displacement\">\n";

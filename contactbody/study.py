@@ -14,8 +14,8 @@ flushed), so a killed study loses nothing finished, and a rerun skips the points
 it. results.parquet holds the same rows; it is rewritten from the journal as points finish
 (at most every 5 s) and at the end. A point whose run fails (a parameter the FMU refuses, a
 contact solve that fails, a worker process that dies) is recorded with its message, and the
-study goes on. A point whose worker dies is run once more (another point on the same worker
-may have been the cause); a second death is recorded as its own.
+study goes on. A worker that dies takes down every point it held: those run once more, each
+alone on the cluster, after the others; a point whose worker dies again is recorded.
 """
 from __future__ import annotations
 
@@ -356,49 +356,48 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
             client.register_plugin(ShipFMU(data, digest))
             task = task or _run_on_worker
             pids = list(todo)
-            # One batch, so that the scheduler queues the points and hands each worker one
-            # at a time.
+            # One batch, so that the scheduler queues the points and hands them out as workers
+            # free up.
             batch = client.map(task, [todo[p] for p in pids], study=study, digest=digest,
                                pure=False, key=[_key(p) for p in pids])
-            futures = dict(zip(batch, pids))
-            deaths = dict.fromkeys(pids, 0)
             last_parquet = time.monotonic()
             bar = tqdm(total=len(pids), disable=not progress, desc="points", unit="point")
-            completed = as_completed(batch)
-            for future in completed:
-                pid = futures.pop(future)
+
+            def finish(pid, future, second_death=False):
+                nonlocal last_parquet
                 series = None
                 try:
                     record, series = future.result()
                 except Exception as e:  # noqa: BLE001 (any failure is the point's record)
                     name = type(e).__name__
-                    if name == "KilledWorker" and deaths[pid] == 0:
-                        # Its worker died: because of it, or of another point running there.
-                        # Once more; a second death is its own.
-                        deaths[pid] += 1
-                        again = client.submit(task, todo[pid], study=study, digest=digest, pure=False,
-                                              key=_key(pid))
-                        futures[again] = pid
-                        completed.add(again)
-                        future.release()
-                        continue
-                    why = ("its worker process died while running it, twice"
+                    if name == "KilledWorker" and not second_death:
+                        return False  # run again alone, after the others
+                    why = ("its worker process died while running it, also alone"
                            if name == "KilledWorker" else "the task failed")
                     record = {"status": "failed", "message": f"{why} ({name}: {e})",
                               **failed_metrics(), "wall_time": math.nan,
                               "dostep_time": math.nan}
-                bar.update()
                 future.release()
-                point = todo[pid]
                 record.update({"point_id": pid,
-                               **{k: _canonical(v) for k, v in point.items()}})
+                               **{k: _canonical(v) for k, v in todo[pid].items()}})
                 if series is not None:
                     (table.directory / "series").mkdir(exist_ok=True)
                     np.savez(table.directory / "series" / f"{pid}.npz", **series)
                 table.append(record)
+                bar.update()
                 if time.monotonic() - last_parquet > 5:
                     table.write_parquet()
                     last_parquet = time.monotonic()
+                return True
+
+            futures = dict(zip(batch, pids))
+            suspects = [futures[f] for f in as_completed(batch) if not finish(futures[f], f)]
+            # A dead worker takes down every point it held, not only the one that killed it:
+            # each of those runs once more, alone; a second death is its own.
+            for pid in suspects:
+                alone = client.submit(task, todo[pid], study=study, digest=digest, pure=False,
+                                      key=_key(pid))
+                finish(pid, alone, second_death=True)
             bar.close()
         finally:
             client.close()

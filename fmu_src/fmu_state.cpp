@@ -149,6 +149,8 @@ std::vector<char> serialize(const FmuState& s) {
     for (double x : s.model.previous_inputs) w.value(x);
     w.doubles(s.model.field_output_times);
     w.value<uint64_t>(s.model.next_field_output);
+    w.value<uint64_t>(s.model.edge_rows);
+    w.value<uint64_t>(s.model.next_edge_output);
     w.value<uint8_t>(s.model.has_simulation);
     if (s.model.has_simulation) {
         const SimulationSnapshot& sim = s.model.simulation;
@@ -235,6 +237,10 @@ FmuState deserialize(const char* bytes, size_t size) {
     s.model.next_field_output = r.value<uint64_t>("next field output");
     if (s.model.next_field_output < s.model.field_output_times.size())
         r.fail("next field output index is below the number of files written");
+    s.model.edge_rows = r.value<uint64_t>("edge history records");
+    s.model.next_edge_output = r.value<uint64_t>("next edge output");
+    if (s.model.next_edge_output < s.model.edge_rows)
+        r.fail("next edge output index is below the number of records written");
     const uint8_t has_simulation = r.value<uint8_t>("simulation flag");
     if (has_simulation > 1) r.fail("invalid simulation flag");
     s.model.has_simulation = has_simulation;

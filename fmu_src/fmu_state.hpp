@@ -15,9 +15,9 @@ struct FmuState {
     ModelState model;
 };
 
-constexpr unsigned state_format_version = 7;  // 2: String variables, field output; 3: damping,
+constexpr unsigned state_format_version = 8;  // 2: String variables, field output; 3: damping,
                                               // works; 4: cached substep sizes; 5: ramp start; 6: top force;
-                                              // 7: sticking nodes
+                                              // 7: sticking nodes; 8: edge history
 
 std::vector<char> serialize(const FmuState& state);
 // Throws ModelError naming the defect: wrong magic or version, truncation, checksum, sizes

@@ -1,5 +1,6 @@
 #include "model.hpp"
 
+#include <filesystem>
 #include <cmath>
 #include <sstream>
 
@@ -126,13 +127,34 @@ void ContactBodyModel::build_simulation(const Values& values) {
 // initialization, not in the middle of a run).
 void ContactBodyModel::open_field_output() {
     fields_.reset();
+    edge_.reset();
+    if (values_.edge_output_interval > 0 && values_.result_directory.empty())
+        throw ModelError("edge_output_interval > 0 needs a result_directory for the edge "
+                         "history file");
     if (values_.result_directory.empty()) return;
     try {
         fields_ = std::make_unique<FieldWriter>(sim_->stepper().discretization().mesh,
                                                 values_.result_directory);
+        if (values_.edge_output_interval > 0)
+            edge_ = std::make_unique<EdgeWriter>(
+                (std::filesystem::path(values_.result_directory) / "contactbody_edge.npy").string(),
+                sim_->stepper().num_contact_nodes());
     } catch (const std::exception& e) {
         throw ModelError(e.what());
     }
+}
+
+// One record at the first communication point at or after each due output time.
+void ContactBodyModel::write_due_edge() {
+    const double interval = values_.edge_output_interval;
+    const double elapsed = sim_->time() - start_time_;
+    if (elapsed < (static_cast<double>(next_edge_output_) - 1e-9) * interval) return;
+    try {
+        edge_->write(sim_->time(), sim_->edge());
+    } catch (const std::exception& e) {
+        throw ModelError(concat("edge history failed at t = ", sim_->time(), ": ", e.what()));
+    }
+    next_edge_output_ = static_cast<uint64_t>(std::floor(elapsed / interval + 1e-9)) + 1;
 }
 
 // Writes one file at the first communication point at or after each due output time.
@@ -156,7 +178,9 @@ void ContactBodyModel::initialize() {
     previous_inputs_ = {values_.foundation_velocity, values_.top_displacement, values_.top_force};
     rebuild_ = false;
     next_field_output_ = 0;
+    next_edge_output_ = 0;
     if (fields_) write_due_fields();  // the initial state
+    if (edge_) write_due_edge();
 }
 
 ModelState ContactBodyModel::save() const {
@@ -169,6 +193,8 @@ ModelState ContactBodyModel::save() const {
     if (s.has_simulation) s.simulation = sim_->snapshot();
     if (fields_) s.field_output_times = fields_->times();
     s.next_field_output = next_field_output_;
+    if (edge_) s.edge_rows = edge_->rows();
+    s.next_edge_output = next_edge_output_;
     return s;
 }
 
@@ -209,6 +235,7 @@ void ContactBodyModel::load(const ModelState& state) {
     previous_inputs_ = state.previous_inputs;
     rebuild_ = !state.has_simulation;
     next_field_output_ = state.next_field_output;
+    next_edge_output_ = state.next_edge_output;
     if (state.has_simulation) {
         // The collection lists what was written up to the saved time: a rolled-back run
         // overwrites the later files as it goes.
@@ -216,6 +243,7 @@ void ContactBodyModel::load(const ModelState& state) {
         if (fields_) {
             try {
                 fields_->set_times(state.field_output_times);
+                if (edge_) edge_->truncate(state.edge_rows);
             } catch (const std::exception& e) {
                 throw ModelError(e.what());
             }
@@ -270,6 +298,7 @@ void ContactBodyModel::do_step(double current_time, double h) {
         previous_inputs_ = {values_.foundation_velocity, values_.top_displacement,
                             values_.top_force};
         if (fields_) write_due_fields();
+        if (edge_) write_due_edge();
     } catch (const NumericalFailure& e) {
         throw StepError(concat("step from t = ", t, " failed, state restored to its start: ",
                                 e.what()));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "errors.hpp"
+#include "edge_output.hpp"
 #include "field_output.hpp"
 #include "variables.hpp"
 
@@ -25,6 +26,9 @@ struct ModelState {
     // output time start_time + k * field_output_interval.
     std::vector<double> field_output_times;
     uint64_t next_field_output = 0;
+    // Edge history so far: records written, and the index of the next output time.
+    uint64_t edge_rows = 0;
+    uint64_t next_edge_output = 0;
 };
 
 class ContactBodyModel {
@@ -63,6 +67,8 @@ private:
     void build_simulation(const Values& values);
     void open_field_output();
     void write_due_fields();
+    // Records due at this communication point (the edge history): true if one was written.
+    void write_due_edge();
 
     Values values_;
     std::array<double, num_inputs> input_rates_{};
@@ -70,6 +76,8 @@ private:
     std::unique_ptr<Simulation> sim_;
     std::unique_ptr<FieldWriter> fields_;  // present while result_directory is set
     uint64_t next_field_output_ = 0;
+    std::unique_ptr<EdgeWriter> edge_;  // present while edge_output_interval > 0
+    uint64_t next_edge_output_ = 0;
     bool rebuild_ = true;
     double start_time_ = 0;
 };

@@ -25,6 +25,7 @@ struct Values {
     double static_friction_ratio;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
+    double edge_output_interval;  // 0: no edge history
     double foundation_velocity, top_displacement, top_force;
     Observables out;
 

@@ -160,3 +160,62 @@ def test_nested_interpolation_is_exact_for_p1_fields():
     fine = fields.interpolate_nested(cp, values, 4, 4, 0.1, 0.1, fp)
     assert fields.l2_squared(fp, ft, fine) == pytest.approx(fields.l2_squared(cp, ct, values), rel=1e-12)
     assert fields.h1_squared(fp, ft, fine) == pytest.approx(fields.h1_squared(cp, ct, values), rel=1e-12)
+
+
+def test_edge_history_adds_up_to_the_scalar_outputs(fmu_path, tmp_path):
+    """contactbody_edge.npy (edge_output_interval): one record per output time; the node
+    pressures and friction densities times their share of the edge sum to normal_force and
+    friction_force (the same step averages) to round-off, and the node states count the
+    active and slipping nodes of the last substep."""
+    r = simulate_fmu(fmu_path, stop_time=2e-3, output_interval=1e-4,
+                     start_values={**SCENE, "friction_coefficient": 0.3,
+                                   "result_directory": str(tmp_path),
+                                   "edge_output_interval": 1e-4},
+                     output=["normal_force", "friction_force", "active_contact_nodes",
+                             "slipping_contact_nodes", "max_penetration"])
+    e = np.load(tmp_path / "contactbody_edge.npy")
+    assert len(e) == len(r) and np.array_equal(e["time"], r["time"])
+    hx = 0.1 / SCENE["nx"]
+    share = np.full(SCENE["nx"] + 1, hx)
+    share[[0, -1]] = hx / 2
+    np.testing.assert_allclose(e["pressure"] @ share, r["normal_force"], rtol=1e-12, atol=1e-6)
+    np.testing.assert_allclose(e["friction"] @ share, r["friction_force"], rtol=1e-12, atol=1e-6)
+    assert np.array_equal((e["state"][1:] > 0).sum(1), r["active_contact_nodes"][1:])
+    assert np.array_equal((e["state"][1:] == 2).sum(1), r["slipping_contact_nodes"][1:])
+    assert np.allclose(e["x"][0], np.arange(SCENE["nx"] + 1) * hx)
+    # the end-of-step gaps are the last substep's ends: max_penetration covers them
+    assert np.all(r["max_penetration"][1:] >= (-e["gap"][1:]).max(1) - 1e-15)
+
+
+def test_edge_history_follows_a_rollback(model_description, unzipped, vr, tmp_path):
+    inst = Instance(model_description, unzipped)
+    try:
+        inst.setString([vr["result_directory"]], [str(tmp_path)])
+        inst.setReal([vr["edge_output_interval"]], [1e-4])
+        inst.setInteger([vr["nx"], vr["ny"]], [8, 8])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.exitInitializationMode()
+        for k in range(3):
+            inst.doStep(k * 1e-4, 1e-4)
+        saved = inst.getFMUstate()
+        for k in range(3, 7):
+            inst.doStep(k * 1e-4, 1e-4)
+        assert len(np.load(tmp_path / "contactbody_edge.npy")) == 8
+        inst.setFMUstate(saved)
+        assert len(np.load(tmp_path / "contactbody_edge.npy")) == 4
+        inst.doStep(3e-4, 1e-4)
+        times = np.load(tmp_path / "contactbody_edge.npy")["time"]
+        assert np.allclose(times, np.arange(5) * 1e-4)
+        inst.freeFMUstate(saved)
+    finally:
+        inst.close()
+
+
+def test_edge_history_needs_a_result_directory(instance, vr):
+    instance.setReal([vr["edge_output_interval"]], [1e-4])
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    with pytest.raises(Exception):
+        instance.exitInitializationMode()
+    assert "needs a result_directory" in instance.text()

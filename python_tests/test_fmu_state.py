@@ -134,10 +134,12 @@ def payload_offsets(md):
     off["start_time"] = pos
     off["field_output_count"] = pos + 56  # after 3 rates and 3 previous inputs; no times follow
     off["next_field_output"] = pos + 64
-    off["simulation_flag"] = pos + 72
-    off["time"] = pos + 73
-    off["u_length"] = pos + 81
-    off["u"] = pos + 89
+    off["edge_rows"] = pos + 72
+    off["next_edge_output"] = pos + 80
+    off["simulation_flag"] = pos + 88
+    off["time"] = pos + 89
+    off["u_length"] = pos + 97
+    off["u"] = pos + 105
     return off
 
 
@@ -158,7 +160,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 8": blob[:8] + struct.pack("<I", 8) + blob[12:],
+        "version 9": blob[:8] + struct.pack("<I", 9) + blob[12:],
+        "version 7 (before the edge history)": blob[:8] + struct.pack("<I", 7) + blob[12:],
         "version 6 (before sticking nodes)": blob[:8] + struct.pack("<I", 6) + blob[12:],
         "version 5 (before the top force)": blob[:8] + struct.pack("<I", 5) + blob[12:],
         "version 4 (before input_interpolation)": blob[:8] + struct.pack("<I", 4) + blob[12:],
@@ -191,6 +194,7 @@ def corruptions(blob, md):
         "NaN displacement": patch(blob, o["u"] + 80, "<d", float("nan")),
         "velocity length": patch(blob, v_length, "<Q", 3),
         "simulation flag 7": patch(blob, o["simulation_flag"], "<B", 7),
+        "edge records beyond the next output": patch(blob, o["edge_rows"], "<Q", 5),
         "huge string length": patch(blob, o["result_directory"], "<Q", 2**62),
         "string longer than allowed": patch(blob, o["result_directory"], "<Q", 5000),
         "huge field output count": patch(blob, o["field_output_count"], "<Q", 2**61),

@@ -14,6 +14,17 @@ Simulation::Simulation(const SceneParameters& params, double initial_top_displac
     : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
     state_.time = start_time;
     product_.resize(state_.u.size());
+    const Mesh& mesh = stepper_.discretization().mesh;
+    const Eigen::Index nc = stepper_.num_contact_nodes();
+    edge_sum_N_.setZero(nc);
+    edge_sum_T_.setZero(nc);
+    edge_.x.resize(nc);
+    for (Eigen::Index i = 0; i < nc; ++i) edge_.x[i] = mesh.point(mesh.contact_nodes[i]).x;
+    edge_.pressure.setZero(nc);
+    edge_.friction.setZero(nc);
+    edge_.slip_velocity.setZero(nc);
+    edge_.gap.setZero(nc);
+    edge_.state.setZero(nc);
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
 }
@@ -95,6 +106,11 @@ void Simulation::initial_reactions() {
     for (size_t i = 0; i < d.mesh.contact_nodes.size(); ++i) {
         const int node = d.mesh.contact_nodes[i];
         const double up = product_[dof_y(node)];
+        const Eigen::Index k = static_cast<Eigen::Index>(i);
+        const double share = (i == 0 || i + 1 == d.mesh.contact_nodes.size() ? 0.5 : 1.0) * d.mesh.hx();
+        edge_.pressure[k] = up > 0 ? up / share : 0.0;
+        edge_.gap[k] = p.initial_gap + state_.u[dof_y(node)];
+        edge_.state[k] = up > 0 ? 1 : 0;  // pressed at rest: sticking
         o.max_penetration = std::max(o.max_penetration, -state_.u[dof_y(node)] - p.initial_gap);
         if (!(up > 0)) continue;
         o.normal_force += up;
@@ -135,6 +151,8 @@ void Simulation::do_step(double h, const StepInputs& in) {
     nominal_substep_ = dt;
     const Mesh& mesh = stepper_.discretization().mesh;
     const Observables saved_observables = observables_;
+    edge_sum_N_.setZero();
+    edge_sum_T_.setZero();
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
         if (!stepper_.parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
@@ -153,6 +171,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         observables_.substep_refinements = stats.refinements;
         observables_.contact_iterations = stats.contact_iterations;
         observables_.gauss_seidel_sweeps = stats.gauss_seidel_sweeps;
+        update_edge(n);
         energies_current_ = false;
         check_finite(observables());  // no NaN under fmi2OK: every output, every step
     } catch (...) {
@@ -163,6 +182,23 @@ void Simulation::do_step(double h, const StepInputs& in) {
         throw;
     }
     statistics_ = stats;
+}
+
+// The edge after a successful step of n nominal substeps: the averaged densities, and the
+// last substep's slip velocities and states.
+void Simulation::update_edge(int substeps) {
+    const Mesh& mesh = stepper_.discretization().mesh;
+    const ContactSnapshot& c = stepper_.last_contact();
+    const Eigen::Index nc = edge_.x.size();
+    for (Eigen::Index i = 0; i < nc; ++i) {
+        const double share = (i == 0 || i == nc - 1 ? 0.5 : 1.0) * mesh.hx() * substeps;
+        edge_.pressure[i] = -edge_sum_N_[i] / share;
+        edge_.friction[i] = edge_sum_T_[i] / share;
+        edge_.gap[i] = stepper_.parameters().initial_gap +
+                       state_.u[dof_y(mesh.contact_nodes[static_cast<size_t>(i)])];
+    }
+    edge_.slip_velocity = c.slip_velocity;
+    edge_.state = c.state;
 }
 
 double Simulation::plate_kinetic_energy(const State& s) const {
@@ -248,6 +284,9 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
         return;
     }
     works_ += r.work;
+    const ContactSnapshot& c = stepper_.last_contact();
+    edge_sum_N_ += weight * c.lambda_N;
+    edge_sum_T_ += weight * c.lambda_T;
     Observables& avg = sums.avg;
     avg.normal_force += weight * r.normal_force;
     avg.friction_force += weight * r.friction_force;

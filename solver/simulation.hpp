@@ -25,6 +25,17 @@ struct Observables {
     int substeps = 0, substep_refinements = 0, contact_iterations = 0, gauss_seidel_sweeps = 0;
 };
 
+// The bottom edge after a communication step, node by node (the edge history output).
+struct EdgeSnapshot {
+    Eigen::VectorXd x;              // m: the nodes' positions along the edge (reference)
+    Eigen::VectorXd pressure;       // Pa: normal contact force / the node's share of the edge,
+                                    //     averaged over the step like normal_force
+    Eigen::VectorXd friction;       // Pa: tangential force density, averaged like friction_force
+    Eigen::VectorXd slip_velocity;  // m/s: node velocity minus V over the last substep
+    Eigen::VectorXd gap;            // m: height above the foundation at the end of the step
+    Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // last substep: 0 open, 1 stick, 2 slip
+};
+
 // Inputs over one communication step: values at its start and their time derivatives
 // (zero derivatives hold the inputs constant, as FMI 2.0 does without input derivatives).
 struct StepInputs {
@@ -87,6 +98,8 @@ public:
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
     const StepStatistics& statistics() const { return statistics_; }
+    // The bottom edge after the last step (before the first: the initial static reactions).
+    const EdgeSnapshot& edge() const { return edge_; }
 
 private:
     struct StepSums;
@@ -112,6 +125,9 @@ private:
     bool energies_current_ = false;
     Eigen::VectorXd product_;
     Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
+    Eigen::VectorXd edge_sum_N_, edge_sum_T_;  // multipliers summed over the step's substeps
+    EdgeSnapshot edge_;
+    void update_edge(int substeps);
     double nominal_substep_ = 0;
 };
 

@@ -245,6 +245,8 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
     snapshot_.slip.setZero(nc);
+    snapshot_.slip_velocity.resize(nc);  // no reallocation once sized
+    snapshot_.state.resize(nc);
     snapshot_.lambda_N = s.lambda.head(nc);
     snapshot_.lambda_T.resize(nc);  // no reallocation once sized
     if (friction) snapshot_.lambda_T = s.lambda.tail(nc);
@@ -260,6 +262,8 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report.friction_force += lT;
         const double dux = ux_new - s.u[dof_x(node)], uN_old = -s.u[dof_y(node)];
         const double foundation_step = load.foundation_velocity * dt;
+        snapshot_.slip_velocity[i] = (dux - foundation_step) / dt;
+        snapshot_.state[i] = touching ? static_cast<signed char>(solver_.status()[i]) : 0;
         report.work.friction += lT * dux;
         report.work.normal_contact += lN * (uN_new - uN_old);
         report.work.foundation += lT * foundation_step;

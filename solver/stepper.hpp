@@ -84,6 +84,8 @@ struct ContactSnapshot {
     Eigen::VectorXd slip;                 // B_T u^{k+1/2} - slip origin (sign of the slip velocity)
     Eigen::VectorXd lambda_N, lambda_T;
     Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
+    Eigen::VectorXd slip_velocity;        // (u_x^{k+1} - u_x^k) / dt - V: relative to the foundation
+    Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // 0 open, 1 stick, 2 slip
 };
 
 // Where a substep's time goes, accumulated when timing is enabled (benchmarks).

@@ -1,0 +1,34 @@
+// The bottom edge over time in one NumPy file (.npy, a structured array, one record per
+// output time): time, and per contact node x, pressure, friction (Pa, step averages),
+// slip_velocity (m/s), gap (m) and state (0 open, 1 stick, 2 slip). np.load reads it; the
+// header's row count is rewritten with every record, so the file is valid at all times.
+#pragma once
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "simulation.hpp"
+
+namespace contactbody {
+
+class EdgeWriter {
+public:
+    // Creates (or empties) the file; throws std::runtime_error naming the path and the cause.
+    EdgeWriter(std::string path, Eigen::Index nodes);
+    void write(double time, const EdgeSnapshot& edge);
+    // Keeps the first `rows` records (after a rollback).
+    void truncate(uint64_t rows);
+    uint64_t rows() const { return rows_; }
+    const std::string& path() const { return path_; }
+
+private:
+    void write_header();
+    std::string path_;
+    Eigen::Index nodes_;
+    uint64_t rows_ = 0;
+    std::fstream file_;
+    std::string record_;  // one record's bytes, reused
+};
+
+}  // namespace contactbody

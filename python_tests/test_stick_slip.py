@@ -37,16 +37,22 @@ def test_stick_slip_period_is_converged_in_the_time_step(cycles):
     assert p1 == pytest.approx(p2, rel=0.01)
 
 
+def stick_slip_instance(model_description, unzipped, vr, name):
+    """The stick-slip scene on a 10 x 10 mesh, initialized."""
+    inst = Instance(model_description, unzipped, name)
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setInteger([vr["initial_state"], vr["nx"], vr["ny"]], [1, 10, 10])
+    inst.setReal([vr["friction_coefficient"], vr["static_friction_ratio"],
+                  vr["foundation_velocity"], vr["damping_stiffness"]], [0.5, 2.0, 0.05, 4e-6])
+    inst.exitInitializationMode()
+    return inst
+
+
 def test_energy_balance_closes_with_static_friction(model_description, unzipped, vr):
     """The works are those of the forces actually applied, whatever the coefficient was."""
-    inst = Instance(model_description, unzipped, "static friction")
+    inst = stick_slip_instance(model_description, unzipped, vr, "static friction")
     try:
-        inst.setupExperiment(startTime=0)
-        inst.enterInitializationMode()
-        inst.setInteger([vr["initial_state"], vr["nx"], vr["ny"]], [1, 10, 10])
-        inst.setReal([vr["friction_coefficient"], vr["static_friction_ratio"],
-                      vr["foundation_velocity"], vr["damping_stiffness"]], [0.5, 2.0, 0.05, 4e-6])
-        inst.exitInitializationMode()
         names = ["energy", "clamp_work", "normal_contact_work", "friction_work", "damping_work",
                  "friction_force", "normal_force"]
         e0 = inst.getReal([vr["energy"]])[0]
@@ -64,16 +70,6 @@ def test_energy_balance_closes_with_static_friction(model_description, unzipped,
 def test_sticking_nodes_are_part_of_the_fmu_state(model_description, unzipped, vr):
     """Which nodes stick decides their next coefficient: a state restored into a fresh
     instance replays the stick-slip run bit for bit."""
-    def make(name):
-        inst = Instance(model_description, unzipped, name)
-        inst.setupExperiment(startTime=0)
-        inst.enterInitializationMode()
-        inst.setInteger([vr["initial_state"], vr["nx"], vr["ny"]], [1, 10, 10])
-        inst.setReal([vr["friction_coefficient"], vr["static_friction_ratio"],
-                      vr["foundation_velocity"], vr["damping_stiffness"]], [0.5, 2.0, 0.05, 4e-6])
-        inst.exitInitializationMode()
-        return inst
-
     def go(inst, k0, k1):
         out = []
         for k in range(k0, k1):
@@ -82,12 +78,12 @@ def test_sticking_nodes_are_part_of_the_fmu_state(model_description, unzipped, v
                        inst.getInteger([vr["slipping_contact_nodes"]]))
         return out
 
-    a = make("a")
+    a = stick_slip_instance(model_description, unzipped, vr, "a")
     go(a, 0, 25)
     blob = a.serializeFMUstate(a.getFMUstate())
     expected = go(a, 25, 60)
     a.close()
-    b = make("b")
+    b = stick_slip_instance(model_description, unzipped, vr, "b")
     b.setFMUstate(b.deSerializeFMUstate(blob))
     assert go(b, 25, 60) == expected
     b.close()

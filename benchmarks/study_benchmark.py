@@ -101,6 +101,8 @@ def main():
         "",
         "Command: `.venv/bin/python benchmarks/study_benchmark.py`",
         "",
+        f"Best of {ROUNDS} interleaved runs each.",
+        "",
         "| what | seconds | per point (ms) |",
         "|---|---|---|",
         f"| bare: doSteps only | {dostep:.2f} | {1e3 * dostep / n:.1f} |",

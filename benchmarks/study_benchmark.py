@@ -59,11 +59,12 @@ def cluster_start(workers):
     return time.perf_counter() - tic
 
 
-def study_run(study, workers):
+def study_run(study, workers, client=None):
+    """run_study's wall time (with its own LocalCluster, or on a running one)."""
     with tempfile.TemporaryDirectory() as out:
         tic = time.perf_counter()
         df = run_study(study, out, workers=workers, progress=False, dashboard=False,
-                       log=lambda *a: None)
+                       log=lambda *a: None, client=client)
         wall = time.perf_counter() - tic
     assert set(df["status"]) == {"ok"}, df["message"].unique()
     return wall, float(df["dostep_time"].sum()), float(df["wall_time"].sum())
@@ -75,14 +76,22 @@ def main():
     args = parser.parse_args()
     study = study_of(args.points)
     n = args.points
-    runs = {"bare": [], 1: [], 2: []}
-    for _ in range(ROUNDS):
-        runs["bare"].append(bare(study))
-        runs[1].append(study_run(study, 1))
-        runs[2].append(study_run(study, 2))
+    from distributed import Client, LocalCluster
+    runs = {"bare": [], 1: [], 2: [], "running 1": [], "running 2": []}
+    with LocalCluster(n_workers=1, threads_per_worker=1, dashboard_address=None) as c1, \
+            Client(c1) as one, \
+            LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as c2, \
+            Client(c2) as two:
+        for _ in range(ROUNDS):
+            runs["bare"].append(bare(study))
+            runs[1].append(study_run(study, 1))
+            runs[2].append(study_run(study, 2))
+            runs["running 1"].append(study_run(study, 1, one))
+            runs["running 2"].append(study_run(study, 2, two))
     dostep, loop = min(runs["bare"])
     wall1, dostep1, point1 = min(runs[1])
     wall2, dostep2, point2 = min(runs[2])
+    running1, running2 = min(runs["running 1"])[0], min(runs["running 2"])[0]
     start1, start2 = min(cluster_start(1) for _ in range(2)), min(cluster_start(2) for _ in range(2))
     r = {
         "points": n, "cpu_count": os.cpu_count(),
@@ -92,6 +101,10 @@ def main():
         "study_1_worker_dostep_s": dostep1, "study_1_worker_points_s": point1,
         "overhead_per_point": (wall1 - dostep) / dostep,
         "overhead_per_point_without_start": (wall1 - start1 - dostep) / dostep,
+        "study_1_worker_running_cluster_s": running1,
+        "study_2_workers_running_cluster_s": running2,
+        "overhead_per_point_running_cluster": (running1 - dostep) / dostep,
+        "speedup_2_workers_running_cluster": running1 / running2,
         "worker_side_overhead": (point1 - dostep1) / dostep1,
         "speedup_2_workers": wall1 / wall2,
         "speedup_2_workers_without_start": (wall1 - start1) / (wall2 - start2),
@@ -111,6 +124,8 @@ def main():
         f"| LocalCluster start + stop, 1 worker / 2 workers | {start1:.2f} / {start2:.2f} | |",
         f"| study, 1 worker (run_study wall) | {wall1:.2f} | {1e3 * wall1 / n:.1f} |",
         f"| study, 2 workers (run_study wall) | {wall2:.2f} | {1e3 * wall2 / n:.1f} |",
+        f"| study on a running cluster (client=), 1 worker | {running1:.2f} | {1e3 * running1 / n:.1f} |",
+        f"| study on a running cluster (client=), 2 workers | {running2:.2f} | {1e3 * running2 / n:.1f} |",
         "",
         f"- the runner's own cost (1-worker study wall minus the points' wall times on the "
         f"worker): {1e3 * (wall1 - point1) / n:.1f} ms per point",
@@ -118,6 +133,9 @@ def main():
         f"**{100 * r['overhead_per_point']:.1f} %** "
         f"({100 * r['overhead_per_point_without_start']:.1f} % without the cluster start-up; "
         f"on the worker, point wall vs its doSteps: {100 * r['worker_side_overhead']:.1f} %)",
+        f"- on a running cluster: **{100 * r['overhead_per_point_running_cluster']:.1f} %** per "
+        f"point against the bare doSteps; 2 workers against 1 "
+        f"{r['speedup_2_workers_running_cluster']:.2f}×",
         f"- 2 workers against 1: **{r['speedup_2_workers']:.2f}×** "
         f"({r['speedup_2_workers_without_start']:.2f}× without the cluster start-up)",
     ]

@@ -315,11 +315,12 @@ def _key(pid: str) -> str:
 
 def run_study(study: Study, out, fmu=None, workers: int | None = None,
               scheduler: str | None = None, retry_failed: bool = False, progress: bool = True,
-              dashboard: bool = True, log=print, task=None):
+              dashboard: bool = True, log=print, task=None, client=None):
     """Runs the points of `study` not yet in `out`'s table; returns the whole table (pandas),
     with the number of points this call ran in its attrs["ran"]. task: the function run on
     the workers, task(point, study=, digest=) -> (record, series) (default: run the point on
-    the worker's model; tests pass one that crashes its worker)."""
+    the worker's model; tests pass one that crashes its worker). client: an existing
+    distributed.Client to run on (not closed; workers and scheduler are then ignored)."""
     from distributed import as_completed
     from tqdm import tqdm
 
@@ -349,7 +350,9 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
         if pid not in done:
             todo.setdefault(pid, point)
     if todo:
-        client, cluster = _client(workers, scheduler, dashboard)
+        own = client is None
+        if own:
+            client, cluster = _client(workers, scheduler, dashboard)
         try:
             if dashboard and client.dashboard_link:
                 log(f"dask dashboard: {client.dashboard_link}")
@@ -400,9 +403,10 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
                 finish(pid, alone, second_death=True)
             bar.close()
         finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
+            if own:
+                client.close()
+                if cluster is not None:
+                    cluster.close()
     df = table.write_parquet()
     df.attrs["ran"] = len(todo)
     return df

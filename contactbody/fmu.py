@@ -247,6 +247,10 @@ class Model(Interface):
             if integers:
                 rows_i[k] = inst.getInteger(integers)
 
+        # Communication points as fmpy's simulate_fmu computes them (start + k * interval),
+        # so that the same point gives the same bits through either master.
+        times = start_time + output_interval * np.arange(steps + 1)
+
         def collect(rows):
             series = {"time": times[:rows]}
             series.update({n: rows_r[:rows, j] for j, n in enumerate(real_names)})
@@ -254,9 +258,6 @@ class Model(Interface):
             return series
 
         read(0)
-        # Communication points as fmpy's simulate_fmu computes them (start + k * interval),
-        # so that the same point gives the same bits through either master.
-        times = start_time + output_interval * np.arange(steps + 1)
         for k in range(steps):
             t, h = float(times[k]), float(times[k + 1] - times[k])
             for name, profile in inputs.items():

@@ -1,4 +1,4 @@
-"""The paper's section 7 scene (Table 1) with the four mass matrices of SPEC §2, simulated
+"""The paper's section 7 scene (Table 1) with the four mass matrices of the paper (docs/contract.md), simulated
 through fmpy's own master. Writes examples/output/paper_scene.png and prints a table.
 
     .venv/bin/python examples/paper_scene.py [--internal-step 4e-6] [--stop-time 0.02]

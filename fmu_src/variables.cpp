@@ -26,7 +26,7 @@ using C = Causality;
 using V = Variability;
 
 const std::vector<Variable> table = {
-    // Parameters (SPEC §4)
+    // Parameters (docs/variables.md lists them)
     {"width", 1, T::Real, C::parameter, V::fixed, "m", "Width W of the body", 0.1, 0, inf, true, ACCESS_REAL(width)},
     {"height", 2, T::Real, C::parameter, V::fixed, "m", "Height H of the body", 0.1, 0, inf, true, ACCESS_REAL(height)},
     {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, false, ACCESS_INT(nx)},

@@ -1,4 +1,4 @@
-// The FMU's variables, declared once (SPEC §4). The FMI layer reads and writes through this
+// The FMU's variables, declared once (docs/variables.md is generated from them). The FMI layer reads and writes through this
 // table and generate_model_description writes modelDescription.xml from it.
 #pragma once
 

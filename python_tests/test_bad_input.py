@@ -1,4 +1,4 @@
-"""Bad input never crashes the host (SPEC §5, issue 2 item 7): each bad call returns
+"""Bad input never crashes the host (issue 2 item 7): each bad call returns
 fmi2Error (a step that cannot be completed too: test_step_failures.py), logs a message naming the
 function and the cause, and leaves the instance usable."""
 import math

@@ -22,7 +22,7 @@ def test_default_scene_gives_every_output_finite(fmu_path, variant):
     assert len(r) == 201
     for name in OUTPUTS:
         assert np.all(np.isfinite(r[name])), name
-    assert r["energy"][0] == pytest.approx(0.1875, rel=1e-12)  # SPEC §4: E(0)
+    assert r["energy"][0] == pytest.approx(0.1875, rel=1e-12)  # E(0) of the paper's initial state
     assert r["friction_work"][0] == 0
     np.testing.assert_allclose(r["energy"], r["kinetic_energy"] + r["strain_energy"], rtol=1e-12)
     np.testing.assert_allclose(r["energy_minus_friction_work"], r["energy"] - r["friction_work"],

@@ -1,5 +1,5 @@
 // Assembly of the P1 plane-strain stiffness A, the consistent mass M and the redistributed
-// mass M_r (SPEC §2), and the contact operators B_N, B_T.
+// mass M_r (paper section 3), and the contact operators B_N, B_T.
 #pragma once
 
 #include <Eigen/Sparse>

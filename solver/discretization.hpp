@@ -1,4 +1,4 @@
-// Scene parameters (SPEC §1-§4) and the space discretization they define: mesh, A, the
+// Scene parameters (docs/contract.md) and the space discretization they define: mesh, A, the
 // variant's mass matrix, and the split of the dofs into free and clamped (top edge) ones.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 namespace contactbody {
 
-// SPEC §2: the four situations of the paper's Fig. 7, and (4) redistributed_implicit_contact:
+// The four situations of the paper's Fig. 7, and (4) redistributed_implicit_contact:
 // the redistributed normal mass with contact at the end of the step, which cannot gain energy
 // at contact (the paper's midpoint contact can, for near-incompressible materials).
 enum class MassVariant : int {
@@ -61,7 +61,7 @@ constexpr long max_nodes = 4'000'000;
 // contact step stiffer (and F x ratio must stay finite).
 constexpr double max_static_friction_ratio = 10;
 
-// Throws std::invalid_argument naming the first offending parameter (SPEC names).
+// Throws std::invalid_argument naming the first offending parameter (the FMU's variable names).
 void check_parameters(const SceneParameters& p);
 
 struct Discretization {

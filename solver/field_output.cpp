@@ -114,7 +114,7 @@ void FieldWriter::write(const State& s) {
     if (s.lambda.size() >= nc) {
         for (Eigen::Index i = 0; i < nc; ++i) {
             const size_t n = static_cast<size_t>(mesh_.contact_nodes[static_cast<size_t>(i)]);
-            const double share = (i == 0 || i == nc - 1 ? 0.5 : 1.0) * mesh_.hx();
+            const double share = mesh_.edge_share(static_cast<size_t>(i));
             force[3 * n] = friction ? s.lambda[nc + i] : 0.0;
             force[3 * n + 1] = -s.lambda[i];
             pressure[n] = -s.lambda[i] / share;

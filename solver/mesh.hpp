@@ -1,7 +1,8 @@
-// Structured P1 mesh of the rectangle (0, W) x (0, H) (SPEC §1).
+// Structured P1 mesh of the rectangle (0, W) x (0, H) (docs/contract.md, "The model").
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace contactbody {
@@ -24,6 +25,11 @@ struct Mesh {
         return {(n % (nx + 1)) * width / nx, (n / (nx + 1)) * height / ny};
     }
     double hx() const { return width / nx; }
+    // Length of the bottom edge carried by contact node i (half a cell at the corners): nodal
+    // contact forces divided by it are pressures.
+    double edge_share(size_t i) const {
+        return (i == 0 || i + 1 == contact_nodes.size() ? 0.5 : 1.0) * hx();
+    }
 };
 
 // dof numbering: 2*node + component (0 = x, 1 = y)

@@ -107,7 +107,7 @@ void Simulation::initial_reactions() {
         const int node = d.mesh.contact_nodes[i];
         const double up = product_[dof_y(node)];
         const Eigen::Index k = static_cast<Eigen::Index>(i);
-        const double share = (i == 0 || i + 1 == d.mesh.contact_nodes.size() ? 0.5 : 1.0) * d.mesh.hx();
+        const double share = d.mesh.edge_share(i);
         edge_.pressure[k] = up > 0 ? up / share : 0.0;
         edge_.gap[k] = p.initial_gap + state_.u[dof_y(node)];
         edge_.state[k] = up > 0 ? 1 : 0;  // pressed at rest: sticking
@@ -159,7 +159,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
         state_.time = t0 + h;  // no drift from summing substeps
 
-        const double share = 0.5 * mesh.hx();  // boundary length carried by the corner node
+        const double share = mesh.edge_share(0);  // boundary length carried by the corner node
         avg.normal_force /= n;
         avg.friction_force /= n;
         avg.corner_pressure /= n * share;
@@ -191,7 +191,7 @@ void Simulation::update_edge(int substeps) {
     const ContactSnapshot& c = stepper_.last_contact();
     const Eigen::Index nc = edge_.x.size();
     for (Eigen::Index i = 0; i < nc; ++i) {
-        const double share = (i == 0 || i == nc - 1 ? 0.5 : 1.0) * mesh.hx() * substeps;
+        const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
         edge_.gap[i] = stepper_.parameters().initial_gap +

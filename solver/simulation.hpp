@@ -1,4 +1,4 @@
-// Communication steps of the body (SPEC §3) and the observables of SPEC §4.
+// Communication steps of the body and its observables (docs/contract.md).
 #pragma once
 
 #include <utility>

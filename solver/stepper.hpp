@@ -1,4 +1,4 @@
-// One midpoint substep with frictional contact (SPEC §3, paper eq. 20-22), with Rayleigh
+// One midpoint substep with frictional contact (paper eq. 20-22), with Rayleigh
 // damping C v̄ (v̄ = (u^{k+1} - u^k)/dt) when C is not empty.
 //
 // The unknown is u^{k+1/2}. On the free dofs it solves

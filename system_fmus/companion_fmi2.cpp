@@ -36,11 +36,18 @@ struct Snapshot {
     Phase phase = Phase::instantiated;
 };
 
+// RK4 buffers and the state a failed step goes back to: sized by the first step, reused.
+struct Workspace {
+    std::vector<double> v, start, k1, k2, k3, k4, y;
+    Snapshot saved;
+};
+
 struct Instance {
     std::string name;
     fmi2CallbackFunctions callbacks;
     bool logging = false;
     Snapshot s;
+    Workspace work;
 };
 
 constexpr uint32_t state_version = 1;
@@ -93,12 +100,15 @@ void update_outputs(Snapshot& s) {
 
 // Classic RK4 over [t, t + h] in substeps of at most internal_step, with the inputs moving
 // along their rates; the inputs end at their values at t + h.
-bool integrate(Snapshot& s, double h) {
+bool integrate(Snapshot& s, double h, Workspace& w) {
     const auto& m = model();
     const size_t n = m.variables.size(), k = static_cast<size_t>(m.num_states);
     const int steps = std::max(1, static_cast<int>(std::ceil(h / m.internal_step * (1 - 1e-9))));
     const double dt = h / steps, t0 = s.time;
-    std::vector<double> v(s.values), start(s.values), k1(k), k2(k), k3(k), k4(k), y(k);
+    w.v = s.values;
+    w.start = s.values;
+    for (auto* buffer : {&w.k1, &w.k2, &w.k3, &w.k4, &w.y}) buffer->resize(k);
+    auto &v = w.v, &start = w.start, &k1 = w.k1, &k2 = w.k2, &k3 = w.k3, &k4 = w.k4, &y = w.y;
     auto at = [&](double t) {
         for (size_t i = 0; i < n; ++i)
             if (m.variables[i].causality == Causality::input)
@@ -429,8 +439,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean) {
                                             " does not match the FMU's time " +
                                             std::to_string(inst->s.time));
     if (h / model().internal_step > 1e9) return fail(inst, "fmi2DoStep", "step too large");
-    const Snapshot saved = inst->s;
-    if (!integrate(inst->s, h)) {
+    Snapshot& saved = inst->work.saved;
+    saved = inst->s;
+    if (!integrate(inst->s, h, inst->work)) {
         inst->s = saved;
         inst->s.phase = Phase::error;
         return fail(inst, "fmi2DoStep", "the state became non-finite; state restored to t = " +

@@ -41,28 +41,28 @@ def belt_study(m):
     (doStep calls, wall time) for the fixed and adaptive masters."""
     ref = m.run_fixed(STOP, REFERENCE)
     rows = []
+
+    def row(master, setting, r, tic, **extra):
+        return {"master": master, "setting": setting, "error": error(r, ref),
+                "bond_mismatch": float(abs(r["belt.load_work"][-1] -
+                                           S.WIDTH * r["body.foundation_work"][-1])),
+                "do_steps": m.do_steps, **extra, "seconds": time.perf_counter() - tic}
+
     for extrapolate in (False, True):
         for h in LADDER:
             tic = time.perf_counter()
             r = m.run_fixed(STOP, h, extrapolate=extrapolate)
-            rows.append({"master": "fixed" + (", extrapolated" if extrapolate else ""),
-                         "setting": f"h = {h:g}", "error": error(r, ref),
-                         "bond_mismatch": float(abs(r["belt.load_work"][-1] -
-                                                    S.WIDTH * r["body.foundation_work"][-1])),
-                         "do_steps": m.do_steps, "seconds": time.perf_counter() - tic})
+            rows.append(row("fixed" + (", extrapolated" if extrapolate else ""), f"h = {h:g}",
+                            r, tic))
     for estimator in ("doubling", "input"):
         for extrapolate in (False, True):
             for tol in (1e-2, 3e-3, 1e-3, 3e-4):
                 tic = time.perf_counter()
                 r = m.run_adaptive(STOP, rtol=tol, atol=tol, h0=1e-5, h_min=REFERENCE,
                                    h_max=1e-3, extrapolate=extrapolate, estimator=estimator)
-                rows.append({"master": f"adaptive ({estimator}"
-                                       f"{', extrapolated' if extrapolate else ''})",
-                             "setting": f"tol = {tol:g}", "error": error(r, ref),
-                             "bond_mismatch": float(abs(r["belt.load_work"][-1] -
-                                                        S.WIDTH * r["body.foundation_work"][-1])),
-                             "do_steps": m.do_steps, "accepted": m.accepted,
-                             "rejected": m.rejected, "seconds": time.perf_counter() - tic})
+                rows.append(row(f"adaptive ({estimator}"
+                                f"{', extrapolated' if extrapolate else ''})", f"tol = {tol:g}",
+                                r, tic, accepted=m.accepted, rejected=m.rejected))
     return ref, rows
 
 

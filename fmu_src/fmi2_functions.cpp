@@ -185,6 +185,9 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     return guarded(instance, "fmi2ExitInitializationMode", [&] {
         instance->model.initialize();
         instance->state = StepComplete;
+        // Factorizations are counted over the discretization's life (it outlives fmi2Reset):
+        // the steps log the ones they make.
+        instance->factorizations_logged = instance->model.simulation()->stepper().factorizations();
         instance->log(fmi2OK, LogCategory::events, "initialized");
         return fmi2OK;
     });

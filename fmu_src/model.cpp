@@ -31,8 +31,7 @@ void as_model_error(F&& f) {
 void ContactBodyModel::reset() {
     values_ = start_values();
     fields_.reset();
-    sim_.reset();
-    rebuild_ = true;
+    rebuild_ = true;  // sim_ stays: the next initialization may reuse its discretization
     start_time_ = 0;
 }
 
@@ -112,14 +111,25 @@ void ContactBodyModel::set_input_derivative(const Variable& v, int order, double
     input_rates_[input_index(v)] = value;
 }
 
+// Reuses the last simulation's discretization and factors when the parameters allow (studies
+// reset and rerun with other inputs or contact parameters), with the same results as a new one.
 void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
+    const SceneParameters scene = values.scene();
     try {
-        sim_ = std::make_unique<Simulation>(values.scene(), values.top_displacement, start_time_,
-                                            values.top_force);
+        if (sim_ && same_discretization(sim_->stepper().parameters(), scene)) {
+            sim_->restart(scene, values.top_displacement, start_time_, values.top_force);
+        } else {
+            sim_.reset();  // before the new one: never two discretizations in memory
+            sim_ = std::make_unique<Simulation>(scene, values.top_displacement, start_time_,
+                                                values.top_force);
+        }
     } catch (const std::invalid_argument& e) {
         sim_.reset();
         throw ModelError(e.what());
+    } catch (...) {
+        sim_.reset();
+        throw;
     }
 }
 
@@ -257,7 +267,7 @@ void ContactBodyModel::refresh_outputs() {
     values_.out = o;
 }
 
-double ContactBodyModel::time() const { return sim_ ? sim_->time() : start_time_; }
+double ContactBodyModel::time() const { return sim_ && !rebuild_ ? sim_->time() : start_time_; }
 
 void ContactBodyModel::do_step(double current_time, double h) {
     if (!sim_ || rebuild_) throw ModelError("the model is not initialized");

@@ -58,7 +58,7 @@ public:
     void initialize();
     void do_step(double current_time, double step_size);
     double time() const;
-    Simulation* simulation() { return sim_.get(); }
+    Simulation* simulation() { return rebuild_ ? nullptr : sim_.get(); }
 
 private:
     void check_writable(const Variable& v, bool initialized) const;

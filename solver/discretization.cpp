@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace contactbody {
 
@@ -144,6 +145,14 @@ Discretization discretize(const SceneParameters& p) {
         d.contact_y.push_back(d.free_index[dof_y(node)]);
     }
     return d;
+}
+
+bool same_discretization(const SceneParameters& a, const SceneParameters& b) {
+    const auto read = [](const SceneParameters& p) {
+        return std::tie(p.width, p.height, p.nx, p.ny, p.density, p.lambda, p.mu, p.mass_matrix,
+                        p.force_control, p.top_mass, p.damping_mass, p.damping_stiffness);
+    };
+    return read(a) == read(b);
 }
 
 std::vector<int> Discretization::contact_unknowns() const {

@@ -100,4 +100,8 @@ struct Discretization {
 
 Discretization discretize(const SceneParameters& p);
 
+// Whether a and b define the same Discretization (and so the same factors): they agree on
+// every parameter discretize reads.
+bool same_discretization(const SceneParameters& a, const SceneParameters& b);
+
 }  // namespace contactbody

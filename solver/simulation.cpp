@@ -11,11 +11,24 @@ namespace contactbody {
 
 Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
                        double start_time, double initial_top_force)
-    : stepper_(params), state_(stepper_.initial_state(initial_top_displacement)) {
+    : Simulation(std::make_unique<Stepper>(params), initial_top_displacement, start_time,
+                 initial_top_force) {}
+
+void Simulation::restart(const SceneParameters& params, double initial_top_displacement,
+                         double start_time, double initial_top_force) {
+    stepper_->restart(params);
+    *this = Simulation(std::move(stepper_), initial_top_displacement, start_time,
+                       initial_top_force);
+}
+
+Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
+                       double start_time, double initial_top_force)
+    : stepper_(std::move(stepper)), state_(stepper_->initial_state(initial_top_displacement)) {
+    const SceneParameters& params = stepper_->parameters();
     state_.time = start_time;
     product_.resize(state_.u.size());
-    const Mesh& mesh = stepper_.discretization().mesh;
-    const Eigen::Index nc = stepper_.num_contact_nodes();
+    const Mesh& mesh = stepper_->discretization().mesh;
+    const Eigen::Index nc = stepper_->num_contact_nodes();
     edge_sum_N_.setZero(nc);
     edge_sum_T_.setZero(nc);
     edge_.x.resize(nc);
@@ -62,10 +75,10 @@ static State quasi_static_path(Stepper& stepper, double top) {
 // clamp's displacement, and the scale that makes the reaction equal the force is one
 // division. An initial gap is then closed by a rigid shift, which strains nothing.
 void Simulation::static_initial_state(double top, double force) {
-    const SceneParameters& p = stepper_.parameters();
+    const SceneParameters& p = stepper_->parameters();
     if (!p.force_control) {
         const double time = state_.time;
-        state_ = quasi_static_path(stepper_, top);
+        state_ = quasi_static_path(*stepper_, top);
         state_.time = time;
         return;
     }
@@ -99,8 +112,8 @@ void Simulation::static_initial_state(double top, double force) {
 // balance with its displacement, A u = f, on the contact nodes' y rows (where they push the
 // body up, i.e. compress it) and on the clamped rows. Friction is 0 until the first step.
 void Simulation::initial_reactions() {
-    const Discretization& d = stepper_.discretization();
-    const SceneParameters& p = stepper_.parameters();
+    const Discretization& d = stepper_->discretization();
+    const SceneParameters& p = stepper_->parameters();
     product_.noalias() = d.A * state_.u;
     Observables o;
     for (size_t i = 0; i < d.mesh.contact_nodes.size(); ++i) {
@@ -126,7 +139,7 @@ void Simulation::initial_reactions() {
 int Simulation::substeps_for(double h) const {
     // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off, and
     // despite masters that add up time and send steps a few 1e-12 too long.
-    const double ratio = h / stepper_.parameters().internal_step;
+    const double ratio = h / stepper_->parameters().internal_step;
     if (!(ratio <= 1e9)) throw std::invalid_argument("step needs more than 1e9 substeps");
     return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-9))));
 }
@@ -149,13 +162,13 @@ void Simulation::do_step(double h, const StepInputs& in) {
     stats.substeps = n;
     stats.smallest_substep = dt;
     nominal_substep_ = dt;
-    const Mesh& mesh = stepper_.discretization().mesh;
+    const Mesh& mesh = stepper_->discretization().mesh;
     const Observables saved_observables = observables_;
     edge_sum_N_.setZero();
     edge_sum_T_.setZero();
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
-        if (!stepper_.parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
+        if (!stepper_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
         for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
         state_.time = t0 + h;  // no drift from summing substeps
 
@@ -187,14 +200,14 @@ void Simulation::do_step(double h, const StepInputs& in) {
 // The edge after a successful step of n nominal substeps: the averaged densities, and the
 // last substep's slip velocities and states.
 void Simulation::update_edge(int substeps) {
-    const Mesh& mesh = stepper_.discretization().mesh;
-    const ContactSnapshot& c = stepper_.last_contact();
+    const Mesh& mesh = stepper_->discretization().mesh;
+    const ContactSnapshot& c = stepper_->last_contact();
     const Eigen::Index nc = edge_.x.size();
     for (Eigen::Index i = 0; i < nc; ++i) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
-        edge_.gap[i] = stepper_.parameters().initial_gap +
+        edge_.gap[i] = stepper_->parameters().initial_gap +
                        state_.u[dof_y(mesh.contact_nodes[static_cast<size_t>(i)])];
     }
     edge_.slip_velocity = c.slip_velocity;
@@ -202,7 +215,7 @@ void Simulation::update_edge(int substeps) {
 }
 
 double Simulation::plate_kinetic_energy(const State& s) const {
-    const Discretization& d = stepper_.discretization();
+    const Discretization& d = stepper_->discretization();
     if (d.plate_index < 0) return 0;
     const double v = s.v[d.top_y_dof()];
     return 0.5 * d.plate_mass * v * v;
@@ -230,7 +243,7 @@ void Simulation::check_finite(const Observables& o) const {
 // that jump puts in (the clamped dofs move at once, the free ones not at all) is the clamp's
 // work, so that the balance closes across held steps too.
 void Simulation::move_clamp(double top, double rate) {
-    const Discretization& d = stepper_.discretization();
+    const Discretization& d = stepper_->discretization();
     const bool moves = std::any_of(d.mesh.top_nodes.begin(), d.mesh.top_nodes.end(), [&](int n) {
         return state_.u[dof_y(n)] != top || state_.v[dof_y(n)] != rate;
     });
@@ -245,7 +258,7 @@ void Simulation::move_clamp(double top, double rate) {
 }
 
 std::pair<double, double> Simulation::kinetic_and_strain_energy(const State& s) {
-    const Discretization& d = stepper_.discretization();
+    const Discretization& d = stepper_->discretization();
     product_.noalias() = d.M * s.v;
     const double kinetic = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
     product_.noalias() = d.A * s.u;
@@ -269,12 +282,12 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     lambda_before_ = state_.lambda;
     SubstepReport r;
     try {
-        r = stepper_.substep(state_, dt, load);
+        r = stepper_->substep(state_, dt, load);
     } catch (const ContactSolveError& e) {
         state_.lambda = lambda_before_;  // the substep changed nothing else
         const double half = 0.5 * dt;
         // At most 20 halvings (a millionth of the substep), whatever min_internal_step says.
-        if (half < stepper_.parameters().min_internal_step || weight < 0x1p-19)
+        if (half < stepper_->parameters().min_internal_step || weight < 0x1p-19)
             fail_contact(e, s0, dt, sums);
         StepStatistics& stats = sums.stats;
         ++stats.refinements;
@@ -284,7 +297,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
         return;
     }
     works_ += r.work;
-    const ContactSnapshot& c = stepper_.last_contact();
+    const ContactSnapshot& c = stepper_->last_contact();
     edge_sum_N_ += weight * c.lambda_N;
     edge_sum_T_ += weight * c.lambda_T;
     Observables& avg = sums.avg;
@@ -305,7 +318,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
 }
 
 std::string Simulation::growth_advice() const {
-    const SceneParameters& p = stepper_.parameters();
+    const SceneParameters& p = stepper_->parameters();
     std::ostringstream msg;
     msg << ". What to change:";
     if (p.friction_coefficient > 0)
@@ -326,7 +339,7 @@ std::string Simulation::growth_advice() const {
 // the tangential mass removed too (redistributed_both) it can have several solutions.
 void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
                               const StepSums& sums) const {
-    const SceneParameters& p = stepper_.parameters();
+    const SceneParameters& p = stepper_->parameters();
     const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
     std::ostringstream msg;
     msg << "contact solve failed at t = " << state_.time << " (" << s0
@@ -335,7 +348,7 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
     for (double size = 0.5 * nominal_substep_; size >= dt; size *= 0.5) msg << ", " << size;
     msg << " s (min_internal_step = " << p.min_internal_step << " s); at the last solved "
         << "substep of this step " << sums.avg.active_contact_nodes << " of "
-        << stepper_.num_contact_nodes() << " contact nodes were in contact, "
+        << stepper_->num_contact_nodes() << " contact nodes were in contact, "
         << sums.avg.slipping_contact_nodes << " slipping. " << e.what() << ". ";
     if (p.friction_coefficient > c_over_b) {
         msg << "F exceeds c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b
@@ -353,15 +366,15 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
 
 void Simulation::restore(const SimulationSnapshot& snapshot) {
     const State& s = snapshot.state;
-    const Eigen::Index dofs = stepper_.discretization().mesh.num_dofs();
-    const Eigen::Index nc = stepper_.num_contact_nodes();
+    const Eigen::Index dofs = stepper_->discretization().mesh.num_dofs();
+    const Eigen::Index nc = stepper_->num_contact_nodes();
     if (s.u.size() != dofs || s.v.size() != dofs ||
         (s.lambda.size() != nc && s.lambda.size() != 2 * nc) || s.sticking.size() != nc)
         throw std::invalid_argument("state does not fit this mesh");
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
             throw std::invalid_argument("cached substep sizes must be finite and > 0");
-    stepper_.set_cached_substeps(snapshot.factor_substeps);
+    stepper_->set_cached_substeps(snapshot.factor_substeps);
     state_ = s;
     works_ = snapshot.works;
     observables_ = snapshot.observables;
@@ -380,7 +393,7 @@ const Observables& Simulation::observables() {
         observables_.normal_contact_work = works_.normal_contact;
         observables_.friction_dissipation = works_.friction_dissipation;
         observables_.foundation_work = works_.foundation;
-        const int top_y = stepper_.discretization().top_y_dof();
+        const int top_y = stepper_->discretization().top_y_dof();
         observables_.top_position = state_.u[top_y];
         observables_.top_velocity = state_.v[top_y];
         energies_current_ = true;

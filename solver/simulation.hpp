@@ -1,6 +1,7 @@
 // Communication steps of the body and its observables (docs/contract.md).
 #pragma once
 
+#include <memory>
 #include <utility>
 
 #include "stepper.hpp"
@@ -75,6 +76,12 @@ public:
     // plate (force), which initial_state = static puts the body in balance with.
     Simulation(const SceneParameters& params, double initial_top_displacement,
                double start_time = 0, double initial_top_force = 0);
+    // Starts over from t0 with new parameters of the same discretization
+    // (same_discretization): the same bits as a new Simulation, without rebuilding the
+    // discretization or the factors it already made (Stepper::restart). If it throws, the
+    // simulation is unusable and must be discarded.
+    void restart(const SceneParameters& params, double initial_top_displacement,
+                 double start_time = 0, double initial_top_force = 0);
 
     // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
     // fails is redone from its start as two halves, recursively down to min_internal_step
@@ -87,13 +94,13 @@ public:
     const Observables& observables();  // energies computed here: once per step (checked finite)
     double time() const { return state_.time; }
     const State& state() const { return state_; }
-    Stepper& stepper() { return stepper_; }
-    void set_friction_coefficient(double friction) { stepper_.set_friction_coefficient(friction); }
+    Stepper& stepper() { return *stepper_; }
+    void set_friction_coefficient(double friction) { stepper_->set_friction_coefficient(friction); }
     // Substeps per step for a step of size h.
     int substeps_for(double h) const;
 
     SimulationSnapshot snapshot() const {
-        return {state_, works_, observables_, stepper_.cached_substeps()};
+        return {state_, works_, observables_, stepper_->cached_substeps()};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -102,6 +109,8 @@ public:
     const EdgeSnapshot& edge() const { return edge_; }
 
 private:
+    Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
+               double start_time, double initial_top_force);
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static
@@ -117,7 +126,7 @@ private:
     std::pair<double, double> kinetic_and_strain_energy(const State& s);  // (uses product_)
     double plate_kinetic_energy(const State& s) const;  // force control: 1/2 m_p v_top^2
 
-    Stepper stepper_;
+    std::unique_ptr<Stepper> stepper_;  // owned by pointer: restart hands it on
     State state_, saved_;
     Works works_;  // since t0
     Observables observables_;

@@ -44,7 +44,18 @@ struct Stepper::Factor {
 };
 
 Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discretize(params)) {
-    options_.tolerance = params.contact_tolerance;
+    start_run();
+}
+
+void Stepper::start_run() {
+    options_ = ContactSolverOptions{};
+    options_.tolerance = params_.contact_tolerance;
+    solver_ = ContactSolver{};
+    problem_ = ContactProblem{};
+    snapshot_ = ContactSnapshot{};
+    timing_ = false;
+    timings_ = SubstepTimings{};
+    problem_factor_ = 0;
     const Eigen::Index nf = disc_.expand.cols();
     const Eigen::Index nc = num_contact_nodes();
     z_.resize(disc_.mesh.num_dofs());
@@ -57,6 +68,17 @@ Stepper::Stepper(const SceneParameters& params) : params_(params), disc_(discret
     problem_.a.resize(2 * nc);
     problem_.gap_limit.resize(nc);
     problem_.slip_origin.resize(nc);
+}
+
+void Stepper::restart(const SceneParameters& params) {
+    if (!same_discretization(params_, params))
+        throw std::logic_error("Stepper::restart: the parameters define another discretization");
+    check_parameters(params);
+    params_ = params;
+    spare_.clear();
+    for (auto& f : cache_)
+        if (f) spare_.push_back(std::move(f));
+    start_run();
 }
 
 Stepper::~Stepper() = default;
@@ -115,6 +137,13 @@ void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
 }
 
 std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
+    for (auto& spare : spare_) {
+        if (spare && spare->dt == dt) {
+            auto f = std::move(spare);
+            f->id = ++factor_ids_;
+            return f;
+        }
+    }
     auto f = std::make_unique<Factor>();
     f->dt = dt;
     const int nc = num_contact_nodes(), m = 2 * nc;
@@ -126,7 +155,8 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
         f->K_free_clamped += (2.0 / dt) * disc_.C_free_clamped;
     }
     f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
-    f->id = ++factorizations_;
+    ++factorizations_;
+    f->id = ++factor_ids_;
 
     // B rows: N_i = -e_y(i), T_i = +e_x(i).
     const Eigen::Index first = f->cholesky->size() - m;

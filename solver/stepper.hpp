@@ -101,6 +101,13 @@ public:
     explicit Stepper(const SceneParameters& params);
     ~Stepper();
 
+    // Starts over with new parameters of the same discretization (same_discretization): the
+    // stepper is then as if constructed from them, but keeps its discretization and its
+    // factors, which a substep of exactly the same size takes instead of refactoring. The
+    // results are the same bits as a new stepper's (a factor depends only on the
+    // discretization and its size). Throws std::invalid_argument for invalid parameters.
+    void restart(const SceneParameters& params);
+
     const Discretization& discretization() const { return disc_; }
     const SceneParameters& parameters() const { return params_; }
     int num_contact_nodes() const { return static_cast<int>(disc_.contact_x.size()); }
@@ -122,7 +129,7 @@ public:
     std::vector<double> cached_substeps() const;
     void set_cached_substeps(const std::vector<double>& sizes);
     static constexpr size_t factor_cache_size = 2;
-    int factorizations() const { return factorizations_; }
+    int factorizations() const { return factorizations_; }  // over the stepper's life
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() { return options_; }
@@ -142,7 +149,11 @@ private:
     // factor a substep reuses decides its last bits, and the paper's figures are kept bit for
     // bit (a refined substep refactors its sizes; refinement is the rare path).
     std::array<std::unique_ptr<Factor>, factor_cache_size> cache_;
+    // Factors kept by restart, most recent first: make_factor takes one of exactly its size.
+    std::vector<std::unique_ptr<Factor>> spare_;
     std::unique_ptr<Factor> make_factor(double dt);
+    void start_run();  // the state of a new stepper, but for the discretization and factors
+    int factor_ids_ = 0;  // factors built or taken from spare_: problem_factor_ names one
     int problem_factor_ = 0;  // id of the factor problem_.W was built from
     int factorizations_ = 0;
     bool timing_ = false;

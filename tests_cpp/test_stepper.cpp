@@ -126,3 +126,36 @@ TEST(Simulation, SubstepCountIsCeilOfStepOverInternalStep) {
     EXPECT_EQ(sim.substeps_for(1.01e-4), 26);
     EXPECT_EQ(sim.substeps_for(1e-7), 1);
 }
+
+// A restarted simulation takes its kept factor instead of refactoring, and gives the bits of a
+// new one; a restart onto another discretization is refused.
+TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
+    SceneParameters p;
+    p.friction_coefficient = 0.5;
+    Simulation sim(p, -2.5e-5);
+    StepInputs in;
+    in.foundation_velocity = 20;
+    in.top_displacement = -2.5e-5;
+    for (int k = 0; k < 3; ++k) sim.do_step(1e-4, in);
+    EXPECT_EQ(sim.stepper().factorizations(), 1);
+
+    SceneParameters q = p;
+    q.friction_coefficient = 0.3;
+    q.static_friction_ratio = 2;
+    in.foundation_velocity = 10;
+    sim.restart(q, -3e-5);
+    Simulation fresh(q, -3e-5);
+    for (int k = 0; k < 3; ++k) {
+        sim.do_step(1e-4, in);
+        fresh.do_step(1e-4, in);
+    }
+    EXPECT_EQ(sim.stepper().factorizations(), 1);  // the kept one
+    EXPECT_EQ(sim.state().u, fresh.state().u);
+    EXPECT_EQ(sim.state().v, fresh.state().v);
+    EXPECT_EQ(sim.state().lambda, fresh.state().lambda);
+    EXPECT_EQ(sim.observables().energy, fresh.observables().energy);
+
+    SceneParameters other = q;
+    other.nx = 10;
+    EXPECT_THROW(sim.stepper().restart(other), std::logic_error);
+}

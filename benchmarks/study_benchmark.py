@@ -12,8 +12,10 @@ Per-point overhead: what each point costs its worker beyond its doSteps, in stea
 (dask's task stream, on a running 1-worker cluster); the whole study's overhead
 (study wall - bare doSteps) / bare doSteps, which adds the one-time costs (cluster start,
 the worker loading the FMU, the table), is reported beside it. Speed-up = 1 worker / 2.
-The machine is noisy (identical bare loops differ by up to 20 %): each of the three is run
-three times, interleaved, and the best time is kept. Writes benchmarks/results/study.{md,json}.
+The machine is noisy (identical bare loops differ by up to 20 % between runs, and its speed
+drifts over minutes): the runs are repeated in rounds, every ratio is taken within one round,
+and the median over the rounds is reported with their range. Writes
+benchmarks/results/study.{md,json}.
 
     .venv/bin/python benchmarks/study_benchmark.py [--points 64]
 """
@@ -33,7 +35,7 @@ from contactbody.fmu import Model, find_fmu  # noqa: E402
 from contactbody.study import Study, run_study  # noqa: E402
 
 RESULTS = pathlib.Path(__file__).resolve().parent / "results"
-ROUNDS = 3
+ROUNDS = 5
 
 
 def study_of(points):
@@ -99,91 +101,107 @@ def per_point_overhead(tasks, df):
     return (runs[-1][1] - runs[0][1] - later) / later
 
 
+def round_metrics(bare_run, own1, own2, running1, running2, start1, start2):
+    """The ratios of one round, each from runs made minutes apart at most."""
+    dostep, _ = bare_run
+    return {
+        "per_point_overhead": running1[3],
+        "worker_side_overhead": (own1[2] - own1[1]) / own1[1],
+        # the whole study against the same points' doSteps in the same run
+        "overhead_same_run_running_cluster": (running1[0] - running1[1]) / running1[1],
+        "overhead_same_run_with_start": (own1[0] - own1[1]) / own1[1],
+        # against the bare loop of the same round (noisier: another process, another moment)
+        "overhead_vs_bare_running_cluster": (running1[0] - dostep) / dostep,
+        "overhead_vs_bare_with_start": (own1[0] - dostep) / dostep,
+        "speedup_2_workers": own1[0] / own2[0],
+        "speedup_2_workers_without_start": (own1[0] - start1) / (own2[0] - start2),
+        "speedup_2_workers_running_cluster": running1[0] / running2[0],
+        # the same doSteps, two at a time: how much the two cores slow each other down
+        "dostep_slowdown_2_workers": own2[1] / own1[1],
+    }
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--points", type=int, default=64)
+    parser.add_argument("--rounds", type=int, default=ROUNDS)
     args = parser.parse_args()
     study = study_of(args.points)
     n = args.points
     from distributed import Client, LocalCluster
-    runs = {"bare": [], 1: [], 2: [], "running 1": [], "running 2": []}
+    start1, start2 = min(cluster_start(1) for _ in range(2)), min(cluster_start(2) for _ in range(2))
+    rounds, seconds = [], {k: [] for k in ["bare doSteps", "bare loop", "own 1", "own 2",
+                                           "running 1", "running 2"]}
     with LocalCluster(n_workers=1, threads_per_worker=1, dashboard_address=None) as c1, \
             Client(c1) as one, \
             LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as c2, \
             Client(c2) as two:
-        for _ in range(ROUNDS):
-            runs["bare"].append(bare(study))
-            runs[1].append(study_run(study, 1))
-            runs[2].append(study_run(study, 2))
-            runs["running 1"].append(study_run(study, 1, one))
-            runs["running 2"].append(study_run(study, 2, two))
-    dostep, loop = min(runs["bare"])
-    wall1, dostep1, point1, _ = min(runs[1])
-    wall2, dostep2, _, _ = min(runs[2])
-    running1, running_dostep1, _, per_point = min(runs["running 1"])
-    running2 = min(runs["running 2"])[0]
-    start1, start2 = min(cluster_start(1) for _ in range(2)), min(cluster_start(2) for _ in range(2))
-    r = {
-        "points": n, "cpu_count": os.cpu_count(),
-        "per_point_overhead": per_point,
-        "bare_dostep_s": dostep, "bare_loop_s": loop,
-        "cluster_start_1_s": start1, "cluster_start_2_s": start2,
-        "study_1_worker_s": wall1, "study_2_workers_s": wall2,
-        "study_1_worker_dostep_s": dostep1, "study_1_worker_points_s": point1,
-        "overhead_per_point": (wall1 - dostep) / dostep,
-        "overhead_per_point_without_start": (wall1 - start1 - dostep) / dostep,
-        "study_1_worker_running_cluster_s": running1,
-        "study_2_workers_running_cluster_s": running2,
-        "overhead_per_point_running_cluster": (running1 - dostep) / dostep,
-        # against the same points' doSteps in the same run: immune to run-to-run noise
-        "overhead_same_run_running_cluster": (running1 - running_dostep1) / running_dostep1,
-        "overhead_same_run_with_start": (wall1 - dostep1) / dostep1,
-        "speedup_2_workers_running_cluster": running1 / running2,
-        "worker_side_overhead": (point1 - dostep1) / dostep1,
-        "speedup_2_workers": wall1 / wall2,
-        # the same doSteps, two at a time: how much the two cores slow each other down
-        "dostep_slowdown_2_workers": dostep2 / dostep1,
-        "speedup_2_workers_without_start": (wall1 - start1) / (wall2 - start2),
-    }
+        study_run(study, 1, one)  # the running clusters' workers load the FMU once, before
+        study_run(study, 2, two)
+        for _ in range(args.rounds):
+            runs = (bare(study), study_run(study, 1), study_run(study, 2),
+                    study_run(study, 1, one), study_run(study, 2, two))
+            rounds.append(round_metrics(*runs, start1, start2))
+            for key, value in zip(seconds, [runs[0][0], runs[0][1]] + [x[0] for x in runs[1:]]):
+                seconds[key].append(value)
+    median = {k: float(np.median([r[k] for r in rounds])) for k in rounds[0]}
+    spread = {k: (min(r[k] for r in rounds), max(r[k] for r in rounds)) for k in rounds[0]}
+    r = {"points": n, "cpu_count": os.cpu_count(), "rounds": args.rounds,
+         "cluster_start_1_s": start1, "cluster_start_2_s": start2,
+         "median": median, "per_round": rounds,
+         "seconds": {k: v for k, v in seconds.items()}}
+
+    def pct(key):
+        lo, hi = spread[key]
+        return f"**{100 * median[key]:.1f} %** ({100 * lo:.1f} to {100 * hi:.1f})"
+
+    def times(key):
+        lo, hi = spread[key]
+        return f"**{median[key]:.2f}×** ({lo:.2f} to {hi:.2f})"
+
+    sec = {k: float(np.median(v)) for k, v in seconds.items()}
     md = [
         f"# Study benchmark ({n} points of the default scene, {os.cpu_count()} cores)",
         "",
         "Command: `.venv/bin/python benchmarks/study_benchmark.py`",
         "",
-        f"Best of {ROUNDS} interleaved runs each.",
+        f"{args.rounds} rounds; each round runs the six below one after the other, and each "
+        "ratio is taken within a round. Medians, with the rounds' range in parentheses.",
         "",
-        "| what | seconds | per point (ms) |",
+        "| what (median over the rounds) | seconds | per point (ms) |",
         "|---|---|---|",
-        f"| bare: doSteps only | {dostep:.2f} | {1e3 * dostep / n:.1f} |",
-        f"| bare: whole loop (reset, initialization, doSteps, reading outputs) | {loop:.2f} "
-        f"| {1e3 * loop / n:.1f} |",
-        f"| LocalCluster start + stop, 1 worker / 2 workers | {start1:.2f} / {start2:.2f} | |",
-        f"| study, 1 worker (run_study wall) | {wall1:.2f} | {1e3 * wall1 / n:.1f} |",
-        f"| study, 2 workers (run_study wall) | {wall2:.2f} | {1e3 * wall2 / n:.1f} |",
-        f"| study on a running cluster (client=), 1 worker | {running1:.2f} | {1e3 * running1 / n:.1f} |",
-        f"| study on a running cluster (client=), 2 workers | {running2:.2f} | {1e3 * running2 / n:.1f} |",
+        f"| bare: doSteps only | {sec['bare doSteps']:.2f} | {1e3 * sec['bare doSteps'] / n:.1f} |",
+        f"| bare: whole loop (reset, initialization, doSteps, reading outputs) | "
+        f"{sec['bare loop']:.2f} | {1e3 * sec['bare loop'] / n:.1f} |",
+        f"| study, 1 worker (run_study wall, its own LocalCluster) | {sec['own 1']:.2f} | "
+        f"{1e3 * sec['own 1'] / n:.1f} |",
+        f"| study, 2 workers (run_study wall, its own LocalCluster) | {sec['own 2']:.2f} | "
+        f"{1e3 * sec['own 2'] / n:.1f} |",
+        f"| study on a running cluster (client=), 1 worker | {sec['running 1']:.2f} | "
+        f"{1e3 * sec['running 1'] / n:.1f} |",
+        f"| study on a running cluster (client=), 2 workers | {sec['running 2']:.2f} | "
+        f"{1e3 * sec['running 2'] / n:.1f} |",
+        f"| LocalCluster start + stop, 1 worker / 2 workers (best of 2) | {start1:.2f} / "
+        f"{start2:.2f} | |",
         "",
-        f"- **per-point overhead: {100 * per_point:.1f} %** (target 5 %): what a point costs "
-        f"its worker beyond its doSteps (reset, initialization, output reads, metrics, and "
-        f"dask's hand-off to the next point), over those doSteps, from the end of the first "
-        f"point to the end of the last, on a running 1-worker cluster (dask's task stream)",
-        f"- the runner's own cost (1-worker study wall minus the points' wall times on the "
-        f"worker): {1e3 * (wall1 - point1) / n:.1f} ms per point",
-        f"- per-point overhead of the 1-worker study against the bare doSteps: "
-        f"**{100 * r['overhead_per_point']:.1f} %** "
-        f"({100 * r['overhead_per_point_without_start']:.1f} % without the cluster start-up; "
-        f"on the worker, point wall vs its doSteps: {100 * r['worker_side_overhead']:.1f} %)",
-        f"- on a running cluster: **{100 * r['overhead_per_point_running_cluster']:.1f} %** per "
-        f"point against the bare doSteps; 2 workers against 1 "
-        f"{r['speedup_2_workers_running_cluster']:.2f}×",
-        f"- against the doSteps of the same points in the same run (the study's wall time "
-        f"minus the time the worker spent in doStep, over that time): "
-        f"**{100 * r['overhead_same_run_running_cluster']:.1f} %** on a running cluster, "
-        f"{100 * r['overhead_same_run_with_start']:.1f} % with the cluster's start and stop",
-        f"- 2 workers against 1: **{r['speedup_2_workers']:.2f}×** "
-        f"({r['speedup_2_workers_without_start']:.2f}× without the cluster start-up); the "
-        f"same doSteps took {r['dostep_slowdown_2_workers']:.2f}× as long in all, two at a "
-        f"time, as one at a time",
+        f"- per-point overhead (target 5 %): {pct('per_point_overhead')}. What a point costs "
+        "its worker beyond its doSteps (reset, initialization, output reads, metrics, and "
+        "dask's hand-off to the next point), over those doSteps, in steady state: dask's task "
+        "stream on a running 1-worker cluster, from the end of the first point to the end of "
+        f"the last. Inside the points alone (their wall time against their doSteps): "
+        f"{pct('worker_side_overhead')}",
+        f"- the whole study, one-time costs included, against the doSteps of the same points "
+        f"in the same run: {pct('overhead_same_run_running_cluster')} on a running cluster "
+        f"(`client=`), {pct('overhead_same_run_with_start')} with run_study's own "
+        "LocalCluster",
+        f"- the same against the round's bare loop: {pct('overhead_vs_bare_running_cluster')} "
+        f"on a running cluster, {pct('overhead_vs_bare_with_start')} with the LocalCluster "
+        "(another process at another moment: the noisy comparison on this machine)",
+        f"- 2 workers against 1 (target 1.7×): {times('speedup_2_workers')} with the "
+        f"LocalCluster, {times('speedup_2_workers_without_start')} without its start-up, "
+        f"{times('speedup_2_workers_running_cluster')} on a running cluster. The same "
+        f"doSteps took {times('dostep_slowdown_2_workers')} as long in all two at a time as "
+        "one at a time",
     ]
     RESULTS.mkdir(exist_ok=True)
     (RESULTS / "study.json").write_text(json.dumps(r, indent=1))

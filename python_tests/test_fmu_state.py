@@ -310,6 +310,17 @@ def test_reset_reuses_the_discretization_with_the_same_bits(model_description, u
     start_with(reused, vr, model_description, {})
     assert run(reused, vr, 0, 3) == defaults
     assert not [m for m in reused.messages if "factorized" in m[2]]
+    # A state saved before a reset restores onto the kept discretization (restored in the
+    # Instantiated state, it restarts it from the state's parameters).
+    saved = reused.getFMUstate()
+    later = run(reused, vr, 3, 6)
+    for values in ({}, {"friction_coefficient": 0.3, "foundation_velocity": 5.0}):
+        reused.reset()
+        if values:
+            start_with(reused, vr, model_description, values)
+        reused.setFMUstate(saved)
+        assert run(reused, vr, 3, 6) == later, values
+    reused.freeFMUstate(saved)
     reused.close()
 
 

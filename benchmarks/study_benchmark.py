@@ -32,7 +32,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")  # as dask's nanny sets it for its
 import numpy as np  # noqa: E402
 
 from contactbody.fmu import Model, find_fmu  # noqa: E402
-from contactbody.study import Study, run_study  # noqa: E402
+from contactbody.study import Study, point_of_key, run_study  # noqa: E402
 
 RESULTS = pathlib.Path(__file__).resolve().parent / "results"
 ROUNDS = 5
@@ -97,7 +97,7 @@ def per_point_overhead(tasks, df):
                   if s["action"] == "compute")
     assert len(runs) == len(df)
     dostep = dict(zip(df["point_id"], df["dostep_time"]))
-    later = sum(dostep[key.split("-")[1]] for _, _, key in runs[1:])
+    later = sum(dostep[point_of_key(key)] for _, _, key in runs[1:])
     return (runs[-1][1] - runs[0][1] - later) / later
 
 

@@ -313,6 +313,11 @@ def _key(pid: str) -> str:
     return f"point-{pid}-{time.monotonic_ns()}"
 
 
+def point_of_key(key: str) -> str:
+    """The point_id of a task key made by run_study (as dask's task stream shows it)."""
+    return key.split("-")[1]
+
+
 def run_study(study: Study, out, fmu=None, workers: int | None = None,
               scheduler: str | None = None, retry_failed: bool = False, progress: bool = True,
               dashboard: bool = True, log=print, task=None, client=None):

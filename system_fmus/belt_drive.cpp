@@ -7,8 +7,6 @@
 // force T is the belt's force on the body (+x drags it along), so the body pulls the belt
 // back with T w. load_work = int T w v dt is the work the belt does on the body; with v fed
 // to foundation_velocity it matches ContactBody's foundation_work x width up to the coupling.
-#include <algorithm>
-
 #include "companion.hpp"
 
 namespace companion {
@@ -24,33 +22,35 @@ enum : unsigned {
 enum { phi_m, w_m, phi_p, w_p, x_load_work, x_drive_work };
 
 double torque(const double* v, double t) {
-    const double ramp = v[torque_ramp_time] > 0 ? std::min(1.0, t / v[torque_ramp_time]) : 1.0;
-    return v[motor_torque] + v[torque_amplitude] * ramp;
+    return v[motor_torque] + v[torque_amplitude] * ramp(t, v[torque_ramp_time]);
 }
+
+double shaft(const double* v, const double* x) {  // N m, from the motor to the pulley
+    return v[shaft_stiffness] * (x[phi_m] - x[phi_p]) + v[shaft_damping] * (x[w_m] - x[w_p]);
+}
+
+// N: the body pulls the belt back with it
+double load(const double* v) { return v[friction_force] * v[contact_width]; }
 
 void initial_states(const double*, double* x) {
     for (int i = 0; i < 6; ++i) x[i] = 0;
 }
 
 void derivatives(const double* v, const double* x, double t, double* dx) {
-    const double shaft = v[shaft_stiffness] * (x[phi_m] - x[phi_p]) +
-                         v[shaft_damping] * (x[w_m] - x[w_p]);
-    const double load = v[friction_force] * v[contact_width];  // N, pulling the belt back
-    const double speed = v[pulley_radius] * x[w_p];
+    const double torque_in_shaft = shaft(v, x);
     dx[phi_m] = x[w_m];
-    dx[w_m] = (torque(v, t) - shaft) / v[motor_inertia];
+    dx[w_m] = (torque(v, t) - torque_in_shaft) / v[motor_inertia];
     dx[phi_p] = x[w_p];
-    dx[w_p] = (shaft - v[pulley_radius] * load) / v[pulley_inertia];
-    dx[x_load_work] = load * speed;
+    dx[w_p] = (torque_in_shaft - v[pulley_radius] * load(v)) / v[pulley_inertia];
+    dx[x_load_work] = load(v) * (v[pulley_radius] * x[w_p]);  // force x belt velocity
     dx[x_drive_work] = torque(v, t) * x[w_m];
 }
 
 void outputs(double* v, const double* x, double t) {
     v[belt_velocity] = v[pulley_radius] * x[w_p];
     v[motor_speed] = x[w_m];
-    v[shaft_torque] = v[shaft_stiffness] * (x[phi_m] - x[phi_p]) +
-                      v[shaft_damping] * (x[w_m] - x[w_p]);
-    v[load_force] = v[friction_force] * v[contact_width];
+    v[shaft_torque] = shaft(v, x);
+    v[load_force] = load(v);
     v[load_work] = x[x_load_work];
     v[drive_work] = x[x_drive_work];
     (void)t;

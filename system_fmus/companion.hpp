@@ -4,6 +4,7 @@
 // at a fixed internal step and does the rest (state machine, checks, FMU state).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 namespace companion {
@@ -36,5 +37,10 @@ struct Model {
 };
 
 const Model& model();  // defined by each model's file
+
+// A load ramped linearly from 0 at t = 0 to 1 at ramp_time, then held (ramp_time 0: a step).
+inline double ramp(double t, double ramp_time) {
+    return ramp_time > 0 ? std::min(1.0, t / ramp_time) : 1.0;
+}
 
 }  // namespace companion

@@ -4,8 +4,6 @@
 // of thickness, the force of the top edge on the body, negative when it presses.
 //   m x'' = -F(t) - c x' - top_reaction_y w,   F(t) = force_amplitude min(1, t / force_ramp_time)
 // x is up-positive like top_displacement; position starts at initial_position.
-#include <algorithm>
-
 #include "companion.hpp"
 
 namespace companion {
@@ -21,8 +19,7 @@ enum : unsigned {
 enum { x_pos, x_vel };
 
 double force(const double* v, double t) {
-    const double ramp = v[force_ramp_time] > 0 ? std::min(1.0, t / v[force_ramp_time]) : 1.0;
-    return v[force_amplitude] * ramp;
+    return v[force_amplitude] * ramp(t, v[force_ramp_time]);
 }
 
 void initial_states(const double* v, double* x) {

@@ -15,12 +15,33 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 # CONTACTBODY_FMU points the suite at another build (the sanitizer job's).
 FMU = pathlib.Path(os.environ.get("CONTACTBODY_FMU", ROOT / "build" / "ContactBody.fmu"))
 SANITIZED = os.environ.get("CONTACTBODY_SANITIZED") == "1"
+# CONTACTBODY_PLATFORM=win64 (scripts/test.sh's Windows job): the fixtures below give a copy of
+# the FMU that holds only binaries/win64, run under wine through fmpy's remoting.
+PLATFORM = os.environ.get("CONTACTBODY_PLATFORM", "linux64")
+assert PLATFORM in ("linux64", "win64"), PLATFORM
+if PLATFORM == "win64":
+    # fmpy starts `wine64` from PATH; ours (scripts/wine/wine64 says why) keeps the server up.
+    os.environ["PATH"] = f"{ROOT / 'scripts' / 'wine'}{os.pathsep}{os.environ['PATH']}"
+    os.environ.setdefault("WINEDEBUG", "-all")
+
+
+def extract_for(platform, fmu=FMU):
+    """The FMU extracted to a new folder; for win64 with binaries/linux64 replaced by fmpy's
+    remoting client, which runs binaries/win64 in a wine process."""
+    assert fmu.exists(), "build the FMU first (scripts/setup.sh)"
+    directory = tempfile.mkdtemp(prefix=f"{fmu.stem}_{platform}_")
+    fmpy.extract(str(fmu), directory)
+    if platform == "win64":
+        from fmpy.util import add_remoting
+        shutil.rmtree(pathlib.Path(directory) / "binaries" / "linux64")
+        add_remoting(directory, host_platform="linux64", remote_platform="win64")
+    return directory
 
 
 @pytest.fixture(scope="session")
-def fmu_path():
-    assert FMU.exists(), "build the FMU first (scripts/setup.sh)"
-    return str(FMU)
+def fmu_path(unzipped):
+    """What fmpy.simulate_fmu runs: the .fmu, or in the Windows job its win64 folder."""
+    return str(FMU) if PLATFORM == "linux64" else unzipped
 
 
 @pytest.fixture(scope="session")
@@ -29,9 +50,8 @@ def model_description(fmu_path):
 
 
 @pytest.fixture(scope="session")
-def unzipped(fmu_path):
-    directory = tempfile.mkdtemp(prefix="ContactBody_")
-    fmpy.extract(fmu_path, directory)
+def unzipped():
+    directory = extract_for(PLATFORM)
     yield directory
     shutil.rmtree(directory, ignore_errors=True)
 

@@ -3,30 +3,9 @@
 import pathlib
 import subprocess
 
-import fmpy
-from elftools.elf.dynamic import DynamicSection
-from elftools.elf.elffile import ELFFile
 from fmpy.validation import validate_fmu
 
-from conftest import ROOT, SANITIZED
-
-# glibc's own libraries: present on every Linux machine the FMU targets.
-GLIBC = {"libc.so.6", "libm.so.6", "libpthread.so.0", "libdl.so.2", "librt.so.1",
-         "libresolv.so.2", "ld-linux-x86-64.so.2"}
-
-
-def needed_and_runpath(path):
-    with open(path, "rb") as f:
-        elf = ELFFile(f)
-        needed, runpath = [], None
-        for section in elf.iter_sections():
-            if isinstance(section, DynamicSection):
-                for tag in section.iter_tags():
-                    if tag.entry.d_tag == "DT_NEEDED":
-                        needed.append(tag.needed)
-                    elif tag.entry.d_tag in ("DT_RUNPATH", "DT_RPATH"):
-                        runpath = tag.runpath if tag.entry.d_tag == "DT_RUNPATH" else tag.rpath
-        return needed, runpath
+from conftest import ROOT
 
 
 def test_fmpy_validate_reports_no_problem(fmu_path):
@@ -34,26 +13,6 @@ def test_fmpy_validate_reports_no_problem(fmu_path):
     out = subprocess.run([str(ROOT / ".venv" / "bin" / "fmpy"), "validate", fmu_path],
                          capture_output=True, text=True)
     assert out.returncode == 0 and "No problems found" in out.stdout, out.stdout + out.stderr
-
-
-def test_every_needed_library_is_bundled_or_glibc(unzipped):
-    binaries = pathlib.Path(unzipped) / "binaries" / "linux64"
-    todo, seen = ["ContactBody.so"], set()
-    while todo:
-        name = todo.pop()
-        if name in seen:
-            continue
-        seen.add(name)
-        needed, runpath = needed_and_runpath(binaries / name)
-        assert runpath == "$ORIGIN", f"{name} has RUNPATH {runpath!r}, not $ORIGIN"
-        for lib in needed:
-            if not SANITIZED:  # the sanitizer build needs the shared runtimes
-                assert lib != "libstdc++.so.6", f"{name} needs {lib}: must be linked statically"
-            if lib in GLIBC:
-                continue
-            assert (binaries / lib).is_file(), f"{name} needs {lib}, which is not bundled"
-            todo.append(lib)
-    assert "libcholmod.so.3" in seen  # the walk really followed the dependencies
 
 
 def test_committed_model_description_is_the_generated_one(unzipped):

@@ -4,8 +4,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(build-essential cmake ninja-build libeigen3-dev libsuitesparse-dev patchelf
-          libgtest-dev valgrind python3 python3-venv python3-dev
+packages=(build-essential cmake ninja-build gfortran libeigen3-dev libgtest-dev valgrind
+          python3 python3-venv python3-dev
+          # the win64 binaries, and wine to test them through fmpy's remoting
+          g++-mingw-w64-x86-64-posix gfortran-mingw-w64-x86-64-posix wine64
+          libsuitesparse-dev  # only the benchmarks' reference build of the old FMU
           python3-getfem)  # the work-precision benchmark's GetFEM series and its test
 missing=()
 for p in "${packages[@]}"; do
@@ -26,7 +29,13 @@ fi
 # The contactbody package (examples, tests, contactbody-study), editable from this checkout.
 .venv/bin/pip install -q --disable-pip-version-check --no-deps --no-build-isolation -e .
 
-# fmpy's wheel also ships a cmake: use Debian's.
+# wine's prefix, made once here rather than inside the first Windows test.
+if [ ! -f "${WINEPREFIX:-$HOME/.wine}/system.reg" ]; then
+    WINEDEBUG=-all /usr/lib/wine/wine64 wineboot --init >/dev/null 2>&1 || true
+fi
+
+# fmpy's wheel also ships a cmake: use Debian's. The build makes the portable FMUs: their
+# linux64 binaries with zig (from .venv), their win64 ones with MinGW-w64 (CMakeLists.txt).
 /usr/bin/cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
 /usr/bin/cmake --build build

@@ -1,0 +1,40 @@
+# The FMU binaries: ContactBody (the FMI 2.0 layer over the solver) and the companion FMUs of
+# examples/system (BeltDrive, Press), each one shared library with nothing inside it that the
+# platform's C library does not provide, exporting only the fmi2 functions.
+
+function(make_self_contained target)
+  set_target_properties(${target} PROPERTIES PREFIX "" C_VISIBILITY_PRESET hidden
+                        CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  if(WIN32)
+    # The C and C++ runtimes and winpthreads linked in: imports only Windows' own DLLs.
+    target_link_options(${target} PRIVATE -static -s)
+  elseif(CONTACTBODY_ZIG)
+    # zig links its libc++ in; glibc symbols no newer than the target's 2.17.
+    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/fmu_src/zig_static_destructors.cpp)
+    target_link_options(${target} PRIVATE -s
+                        -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/fmi_exports.map)
+  elseif(NOT CONTACTBODY_SANITIZE)
+    # The native build (not what users get): libstdc++ and libgcc inside, symbols hidden.
+    # (The sanitizer build links them dynamically: the sanitizer runtimes need the shared ones.)
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc -Wl,--exclude-libs,ALL
+                        -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/fmi_exports.map)
+  endif()
+  if(NOT WIN32)
+    target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  endif()
+endfunction()
+
+add_library(ContactBody SHARED fmu_src/fmi2_functions.cpp fmu_src/instance.cpp fmu_src/model.cpp
+            fmu_src/variables.cpp fmu_src/fmu_state.cpp)
+target_include_directories(ContactBody PRIVATE fmu_src ${FMI_HEADERS_DIR})
+target_link_libraries(ContactBody PRIVATE contactbody_solver)
+make_self_contained(ContactBody)
+
+foreach(companion IN LISTS COMPANIONS)
+  add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model})
+  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR})
+  target_compile_definitions(${companion} PRIVATE FMI2_FUNCTION_PREFIX=)
+  make_self_contained(${companion})
+  # fmi2Functions.h declares the entry points with default visibility (dllexport on Windows).
+  set_target_properties(${companion} PROPERTIES CXX_VISIBILITY_PRESET default)
+endforeach()

@@ -1,0 +1,118 @@
+# Packages ContactBody.fmu, BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
+# default: what users get) their binaries come from this project built again for each platform
+# with a toolchain from cmake/: linux64 by zig (glibc 2.17), win64 by MinGW-w64. Without it
+# (the sanitizer job) the FMU holds the native build's linux64 binary only.
+# The modelDescriptions are written by native tools from the variable tables.
+
+add_executable(generate_model_description fmu_src/generate_model_description.cpp fmu_src/variables.cpp)
+target_include_directories(generate_model_description PRIVATE fmu_src)
+target_link_libraries(generate_model_description PRIVATE contactbody_solver)
+foreach(companion IN LISTS COMPANIONS)
+  add_executable(${companion}_model_description system_fmus/generate_model_description.cpp
+                 ${${companion}_model})
+endforeach()
+
+set(fmus ContactBody ${COMPANIONS})
+set(licenses ${PROJECT_SOURCE_DIR}/LICENSE)
+if(CONTACTBODY_PORTABLE)
+  include(ExternalProject)
+  execute_process(
+    COMMAND ${Python3_EXECUTABLE} -c "import ziglang, os; print(os.path.join(os.path.dirname(ziglang.__file__), 'zig'))"
+    OUTPUT_VARIABLE ZIG OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE zig_missing)
+  if(zig_missing OR NOT EXISTS "${ZIG}")
+    message(FATAL_ERROR "zig not found: install ziglang for ${Python3_EXECUTABLE} (scripts/setup.sh does)")
+  endif()
+  get_filename_component(zig_lib ${ZIG} DIRECTORY)
+  foreach(platform linux64 win64)
+    if(platform STREQUAL "linux64")
+      set(toolchain zig-x86_64-linux-gnu.2.17)
+      set(suffix .so)
+    else()
+      set(toolchain mingw-w64-x86_64)
+      set(suffix .dll)
+    endif()
+    set(dir ${CMAKE_BINARY_DIR}/${platform})
+    set(products)
+    foreach(fmu IN LISTS fmus)
+      list(APPEND products ${dir}/${fmu}${suffix})
+      set(${fmu}_binaries ${${fmu}_binaries} ${platform} ${dir}/${fmu}${suffix})
+    endforeach()
+    ExternalProject_Add(binaries_${platform}
+      SOURCE_DIR ${PROJECT_SOURCE_DIR} BINARY_DIR ${dir}
+      CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/${toolchain}.cmake
+                 -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCONTACTBODY_FMU_BINARIES_ONLY=ON
+                 -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
+                 -DFMI_HEADERS_DIR=${FMI_HEADERS_DIR}
+      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
+    list(APPEND binary_targets binaries_${platform})
+  endforeach()
+  # The runtimes linked into the binaries: libc++ (zig, linux64), MinGW-w64's (win64).
+  list(APPEND licenses ${zig_lib}/lib/libcxx/LICENSE.TXT ${zig_lib}/lib/libcxxabi/LICENSE.TXT
+       ${zig_lib}/lib/libunwind/LICENSE.TXT /usr/share/doc/mingw-w64-common/copyright)
+  set(license_names LICENSE libcxx-LICENSE.txt libcxxabi-LICENSE.txt libunwind-LICENSE.txt
+      mingw-w64-copyright.txt)
+else()
+  include(cmake/fmu_binaries.cmake)
+  foreach(fmu IN LISTS fmus)
+    set(${fmu}_binaries linux64 $<TARGET_FILE:${fmu}>)
+    list(APPEND binary_targets ${fmu})
+  endforeach()
+  set(license_names LICENSE)
+endif()
+
+# add_fmu(NAME GENERATOR target BINARIES platform file ... SOURCES files LICENSES files
+#         LICENSE_NAMES names): one .fmu in the build folder.
+function(add_fmu name)
+  cmake_parse_arguments(FMU "" "GENERATOR" "BINARIES;SOURCES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
+  set(dir ${CMAKE_BINARY_DIR}/fmu/${name})
+  set(file ${CMAKE_BINARY_DIR}/${name}.fmu)
+  set(commands)
+  while(FMU_BINARIES)
+    list(POP_FRONT FMU_BINARIES platform binary)
+    list(APPEND commands COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/binaries/${platform}
+                         COMMAND ${CMAKE_COMMAND} -E copy ${binary} ${dir}/binaries/${platform}/)
+  endwhile()
+  foreach(license IN ZIP_LISTS FMU_LICENSES FMU_LICENSE_NAMES)
+    list(APPEND commands COMMAND ${CMAKE_COMMAND} -E copy ${license_0}
+                         ${dir}/documentation/licenses/${license_1})
+  endforeach()
+  add_custom_command(OUTPUT ${file}
+    COMMAND ${CMAKE_COMMAND} -E rm -rf ${dir}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/sources ${dir}/documentation/licenses
+    COMMAND ${FMU_GENERATOR} ${dir}/modelDescription.xml
+    ${commands}
+    COMMAND ${CMAKE_COMMAND} -E copy ${FMU_SOURCES} ${dir}/sources/
+    COMMAND ${CMAKE_COMMAND} -E rm -f ${file}
+    COMMAND ${CMAKE_COMMAND} -E chdir ${dir}
+            ${CMAKE_COMMAND} -E tar cf ${file} --format=zip modelDescription.xml binaries sources
+            documentation
+    DEPENDS ${FMU_GENERATOR} ${FMU_DEPENDS} ${FMU_SOURCES} ${FMU_LICENSES}
+    COMMENT "Packaging ${name}.fmu")
+  add_custom_target(${name}_fmu ALL DEPENDS ${file})
+endfunction()
+
+# ContactBody links SuiteSparse, METIS, reference LAPACK and Eigen in: their licences too.
+set(SS ${PROJECT_SOURCE_DIR}/third_party/SuiteSparse-5.12.0)
+set(contactbody_licenses ${licenses}
+    ${SS}/CHOLMOD/Doc/License.txt ${SS}/CHOLMOD/Core/lesser.txt ${SS}/AMD/Doc/License.txt
+    ${SS}/CAMD/Doc/License.txt ${SS}/COLAMD/Doc/License.txt ${SS}/CCOLAMD/Doc/License.txt
+    ${SS}/LICENSE.txt ${SS}/metis-5.1.0/LICENSE.txt
+    ${PROJECT_SOURCE_DIR}/third_party/lapack-3.11.0/LICENSE /usr/share/common-licenses/MPL-2.0
+    ${PROJECT_SOURCE_DIR}/third_party/README.md)
+set(contactbody_license_names ${license_names}
+    CHOLMOD-License.txt CHOLMOD-LGPL-2.1.txt AMD-License.txt CAMD-License.txt COLAMD-License.txt
+    CCOLAMD-License.txt SuiteSparse-LICENSE.txt METIS-LICENSE.txt LAPACK-LICENSE.txt
+    Eigen-MPL-2.0.txt README.md)
+file(GLOB contactbody_sources CONFIGURE_DEPENDS
+  ${PROJECT_SOURCE_DIR}/fmu_src/*.cpp ${PROJECT_SOURCE_DIR}/fmu_src/*.hpp
+  ${PROJECT_SOURCE_DIR}/solver/*.cpp ${PROJECT_SOURCE_DIR}/solver/*.hpp)
+add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_binaries}
+        SOURCES ${contactbody_sources} LICENSES ${contactbody_licenses}
+        LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
+foreach(companion IN LISTS COMPANIONS)
+  add_fmu(${companion} GENERATOR ${companion}_model_description BINARIES ${${companion}_binaries}
+          SOURCES ${PROJECT_SOURCE_DIR}/system_fmus/companion.hpp
+                  ${PROJECT_SOURCE_DIR}/system_fmus/companion_fmi2.cpp
+                  ${PROJECT_SOURCE_DIR}/${${companion}_model}
+          LICENSES ${licenses} LICENSE_NAMES ${license_names} DEPENDS ${binary_targets})
+endforeach()

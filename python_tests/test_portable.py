@@ -1,0 +1,175 @@
+"""Issue 20: the FMUs users get are portable. Each platform folder holds one binary; the
+linux64 one needs nothing beyond glibc 2.17 (checked here and by PyPA's auditwheel), the win64
+one only Windows' own DLLs; both export the fmi2 functions and nothing else."""
+import base64
+import hashlib
+import json
+import pathlib
+import re
+import subprocess
+import zipfile
+
+import fmpy
+import pytest
+from elftools.elf.dynamic import DynamicSection
+from elftools.elf.elffile import ELFFile
+from elftools.elf.gnuversions import GNUVerNeedSection
+
+from conftest import FMU, ROOT, SANITIZED
+
+# The sanitizer job packs its native instrumented binary instead: nothing here applies.
+pytestmark = pytest.mark.skipif(SANITIZED, reason="the sanitizer build is not the portable one")
+
+FMUS = [FMU, FMU.with_name("BeltDrive.fmu"), FMU.with_name("Press.fmu")]
+GLIBC_LIBRARIES = {"libc.so.6", "libm.so.6", "libpthread.so.0", "libdl.so.2", "librt.so.1",
+                   "ld-linux-x86-64.so.2"}
+WINDOWS_SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll", "ws2_32.dll",
+                       "shell32.dll", "ole32.dll", "bcrypt.dll", "ntdll.dll"}
+
+
+def binaries(fmu, platform):
+    with zipfile.ZipFile(fmu) as z:
+        return {n: z.read(n) for n in z.namelist()
+                if n.startswith(f"binaries/{platform}/") and not n.endswith("/")}
+
+
+def only_binary(fmu, platform, tmp_path):
+    files = binaries(fmu, platform)
+    identifier = fmpy.read_model_description(str(fmu)).coSimulation.modelIdentifier
+    suffix = ".so" if platform == "linux64" else ".dll"
+    assert list(files) == [f"binaries/{platform}/{identifier}{suffix}"], files.keys()
+    path = tmp_path / f"{identifier}{suffix}"
+    path.write_bytes(next(iter(files.values())))
+    return path
+
+
+def glibc_version(name):
+    return tuple(int(x) for x in name[len("GLIBC_"):].split("."))
+
+
+@pytest.mark.parametrize("fmu", FMUS, ids=lambda p: p.stem)
+def test_linux_binary_needs_only_glibc_2_17(fmu, tmp_path):
+    path = only_binary(fmu, "linux64", tmp_path)
+    with open(path, "rb") as f:
+        elf = ELFFile(f)
+        dynamic = elf.get_section_by_name(".dynamic")
+        assert isinstance(dynamic, DynamicSection)
+        needed = {t.needed for t in dynamic.iter_tags() if t.entry.d_tag == "DT_NEEDED"}
+        assert needed <= GLIBC_LIBRARIES, needed - GLIBC_LIBRARIES
+        assert "libc.so.6" in needed  # the section was really read
+        versions = set()
+        for section in elf.iter_sections():
+            if isinstance(section, GNUVerNeedSection):
+                for _, auxiliaries in section.iter_versions():
+                    versions |= {a.name for a in auxiliaries}
+        glibc = sorted((glibc_version(v) for v in versions if v.startswith("GLIBC_2")))
+        assert glibc and glibc[-1] <= (2, 17), f"needs GLIBC_{'.'.join(map(str, glibc[-1]))}"
+        assert not any(v.startswith(("GLIBCXX", "CXXABI", "GCC_")) for v in versions), versions
+        exported = {s.name for s in elf.get_section_by_name(".dynsym").iter_symbols()
+                    if s["st_shndx"] != "SHN_UNDEF" and s.name}
+        assert exported and all(n.startswith("fmi2") for n in exported), sorted(exported)[:10]
+
+
+def test_auditwheel_calls_the_linux_binary_manylinux_2_17(tmp_path):
+    """An outside judge: PyPA's auditwheel on a throwaway wheel that holds the binary."""
+    data = only_binary(FMU, "linux64", tmp_path).read_bytes()
+    files = {"probe/ContactBody.so": data,
+             "probe-0.0.0.dist-info/METADATA": b"Metadata-Version: 2.1\nName: probe\nVersion: 0.0.0\n",
+             "probe-0.0.0.dist-info/WHEEL": b"Wheel-Version: 1.0\nGenerator: test\n"
+                                            b"Root-Is-Purelib: false\nTag: py3-none-linux_x86_64\n"}
+    wheel = tmp_path / "probe-0.0.0-py3-none-linux_x86_64.whl"
+    record = []
+    with zipfile.ZipFile(wheel, "w") as z:
+        for name, content in files.items():
+            z.writestr(name, content)
+            digest = base64.urlsafe_b64encode(hashlib.sha256(content).digest()).rstrip(b"=")
+            record.append(f"{name},sha256={digest.decode()},{len(content)}")
+        record.append("probe-0.0.0.dist-info/RECORD,,")
+        z.writestr("probe-0.0.0.dist-info/RECORD", "\n".join(record) + "\n")
+    out = subprocess.run([str(ROOT / ".venv" / "bin" / "auditwheel"), "show", str(wheel)],
+                         capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    text = " ".join(out.stdout.split())
+    assert 'consistent with the following platform tag: "manylinux_2_17_x86_64"' in text, text
+
+
+@pytest.mark.parametrize("fmu", FMUS, ids=lambda p: p.stem)
+def test_windows_binary_imports_only_system_dlls(fmu, tmp_path):
+    path = only_binary(fmu, "win64", tmp_path)
+    out = subprocess.run(["x86_64-w64-mingw32-objdump", "-p", str(path)], capture_output=True,
+                         text=True, check=True).stdout
+    imports = {m.lower() for m in re.findall(r"DLL Name: (\S+)", out)}
+    assert "kernel32.dll" in imports and imports <= WINDOWS_SYSTEM_DLLS, imports
+    table = out.split("[Ordinal/Name Pointer] Table", 1)[1].split("\n\n", 1)[0]
+    exported = re.findall(r"\]\s+(\S+)", table)
+    assert exported and all(n.startswith("fmi2") for n in exported), exported
+
+
+def test_fmu_is_small_and_carries_the_licences():
+    assert FMU.stat().st_size <= 3 * 1024 * 1024, FMU.stat().st_size
+    with zipfile.ZipFile(FMU) as z:
+        licences = {pathlib.PurePosixPath(n).name for n in z.namelist()
+                    if n.startswith("documentation/licenses/")}
+    for name in ("LICENSE", "CHOLMOD-License.txt", "CHOLMOD-LGPL-2.1.txt", "METIS-LICENSE.txt",
+                 "LAPACK-LICENSE.txt", "Eigen-MPL-2.0.txt", "libcxx-LICENSE.txt",
+                 "mingw-w64-copyright.txt", "AMD-License.txt", "CAMD-License.txt",
+                 "COLAMD-License.txt", "CCOLAMD-License.txt"):
+        assert name in licences, name
+
+
+# Scenes recorded with the FMU before the portable build (commit 406a316: gcc 12 with Debian's
+# SuiteSparse 5.12, METIS and reference LAPACK 3.11 as shared libraries), by running this file:
+# `.venv/bin/python python_tests/test_portable.py OLD.fmu`. "metis": a mesh whose factor takes
+# the METIS ordering (it has less fill than CAMD's from 120 x 120 on; 80 x 80 takes CAMD's) and
+# whose contact systems exceed LAPACK's block size 64 (blocked dgetrf; 81 unknowns at 80 x 80).
+SCENES = {"default": dict(stop_time=0.02, output_interval=1e-4, start_values={}),
+          "metis": dict(stop_time=3e-4, output_interval=1e-4,
+                        start_values={"nx": 120, "ny": 120, "friction_coefficient": 0.3})}
+REFERENCE = ROOT / "python_tests" / "data" / "outputs_before_portable_build.json"
+
+
+def scene_outputs(fmu, scene):
+    """Every output of the scene, each value a hex float."""
+    r = fmpy.simulate_fmu(str(fmu), **SCENES[scene], output=OUTPUTS)
+    return {name: [float(x).hex() for x in r[name]] for name in OUTPUTS}
+
+
+def outputs_of(fmu):
+    return [v.name for v in fmpy.read_model_description(str(fmu)).modelVariables
+            if v.causality == "output"]
+
+
+OUTPUTS = outputs_of(ROOT / "modelDescription" / "modelDescription.xml")
+
+
+def test_paper_scene_equals_the_fmu_before_the_portable_build_bit_for_bit(fmu_path):
+    expected = json.loads(REFERENCE.read_text())["default"]
+    got = scene_outputs(fmu_path, "default")
+    for name in expected:
+        assert got[name] == expected[name], name
+
+
+def test_metis_scene_differs_from_before_only_by_round_off(fmu_path):
+    """Not bit for bit: METIS now draws GKlib's random numbers, not glibc's rand() (the same on
+    every platform: test_windows.py), so its ordering, and the factor's round-off, changed.
+    Each output stays within 1e-12 of the largest value of its unit (energies of energies,
+    lengths of lengths); at least one differs, or this scene would not show the ordering."""
+    expected = json.loads(REFERENCE.read_text())["metis"]
+    got = scene_outputs(fmu_path, "metis")
+    units = {v.name: v.unit for v in fmpy.read_model_description(fmu_path).modelVariables}
+    values = {n: [float.fromhex(x) for x in expected[n]] for n in expected}
+    scale = {}
+    for name, v in values.items():
+        scale[units[name]] = max(scale.get(units[name], 0.0), max(abs(x) for x in v))
+    differ = 0
+    for name, v in values.items():
+        new = [float.fromhex(x) for x in got[name]]
+        worst = max(abs(a - b) for a, b in zip(v, new))
+        assert worst <= 1e-12 * scale[units[name]], (name, worst, scale[units[name]])
+        differ += worst > 0
+    assert differ > 0
+
+
+if __name__ == "__main__":
+    import sys
+    REFERENCE.write_text(json.dumps({s: scene_outputs(sys.argv[1], s) for s in SCENES}) + "\n")

@@ -25,6 +25,11 @@ if PLATFORM == "win64":
     os.environ.setdefault("WINEDEBUG", "-all")
 
 
+def not_through_remoting(why):
+    """Skips a test in the Windows job where fmpy's remoting, not the FMU, cannot carry it."""
+    return pytest.mark.skipif(PLATFORM == "win64", reason=f"fmpy's remoting {why}")
+
+
 def extract_for(platform, fmu=FMU):
     """The FMU extracted to a new folder; for win64 with binaries/linux64 replaced by fmpy's
     remoting client, which runs binaries/win64 in a wine process."""

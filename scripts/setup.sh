@@ -8,7 +8,8 @@ packages=(build-essential cmake ninja-build gfortran libeigen3-dev libgtest-dev 
           python3 python3-venv python3-dev
           # the win64 binaries, and wine to test them through fmpy's remoting
           g++-mingw-w64-x86-64-posix gfortran-mingw-w64-x86-64-posix wine64
-          libsuitesparse-dev  # only the benchmarks' reference build of the old FMU
+          # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
+          libsuitesparse-dev patchelf
           python3-getfem)  # the work-precision benchmark's GetFEM series and its test
 missing=()
 for p in "${packages[@]}"; do

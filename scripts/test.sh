@@ -1,17 +1,27 @@
 #!/usr/bin/env bash
-# Sets everything up (scripts/setup.sh), then runs the C++ solver tests and the pytest suite,
-# then the same two against a build with AddressSanitizer and UndefinedBehaviorSanitizer.
-# SKIP_SANITIZERS=1 skips that second job (for a quick local run).
+# Sets everything up (scripts/setup.sh), then runs the C++ solver tests and the pytest suite on
+# the FMU users get (build/ContactBody.fmu: its linux64 binary), then the Windows job (its win64
+# binary under wine, through fmpy's remoting), then the C++ tests and the pytest suite against
+# a native build with AddressSanitizer and UndefinedBehaviorSanitizer.
+# SKIP_WINDOWS=1 and SKIP_SANITIZERS=1 skip those jobs (for a quick local run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 (cd build && /usr/bin/ctest --output-on-failure)
 .venv/bin/python -m pytest python_tests "$@"
 
+if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
+    echo "== Windows job: the win64 binary under wine, through fmpy's remoting =="
+    CONTACTBODY_PLATFORM=win64 .venv/bin/python -m pytest python_tests/test_windows.py \
+        python_tests/test_bad_input.py python_tests/test_energy_balance.py \
+        -k "test_windows or test_bad_input or (test_energy_balance_closes and held)" "$@"
+fi
+
 if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then
     echo "== sanitizer job: ASan + UBSan build, same tests =="
+    # Native (gcc), not the portable binaries: the sanitizer runtimes are gcc's.
     /usr/bin/cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DCONTACTBODY_SANITIZE=ON -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
+        -DCONTACTBODY_SANITIZE=ON -DCONTACTBODY_PORTABLE=OFF -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
     /usr/bin/cmake --build build-sanitize
     export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     (cd build-sanitize && /usr/bin/ctest --output-on-failure)
@@ -21,4 +31,11 @@ if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then
         CONTACTBODY_SANITIZED=1 \
         CONTACTBODY_FMU="$PWD/build-sanitize/ContactBody.fmu" \
         .venv/bin/python -m pytest python_tests "$@"
+
+if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
+    echo "== Windows job: the win64 binary under wine, through fmpy's remoting =="
+    CONTACTBODY_PLATFORM=win64 .venv/bin/python -m pytest python_tests/test_windows.py \
+        python_tests/test_bad_input.py python_tests/test_energy_balance.py \
+        -k "test_windows or test_bad_input or (test_energy_balance_closes and held)" "$@"
+fi
 fi

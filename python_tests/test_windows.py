@@ -1,0 +1,143 @@
+"""Issue 20: the win64 binary, run under wine. scripts/test.sh's Windows job runs this file with
+CONTACTBODY_PLATFORM=win64 (conftest: the fixtures are then a copy of the FMU that holds only
+binaries/win64, driven through fmpy's remoting), together with the state-machine and argument
+tests of test_bad_input.py and the energy balance of test_energy_balance.py."""
+import pathlib
+import subprocess
+
+import fmpy
+import pytest
+from fmpy.fmi2 import FMU2Slave
+
+from conftest import FMU, PLATFORM, ROOT, extract_for
+from test_portable import REFERENCE, SCENES, scene_outputs
+
+pytestmark = pytest.mark.skipif(PLATFORM != "win64", reason="the Windows job's (scripts/test.sh)")
+STATE_HOST = ROOT / "build" / "win64" / "state_host.exe"
+
+
+@pytest.fixture(scope="module")
+def linux_copy():
+    return extract_for("linux64")
+
+
+def test_the_windows_copy_holds_only_the_win64_binary(unzipped):
+    binaries = pathlib.Path(unzipped) / "binaries"
+    assert (binaries / "win64" / "ContactBody.dll").is_file()
+    # fmpy's remoting client, which starts wine, stands where a linux64 binary would
+    client = (binaries / "linux64" / "ContactBody.so").read_bytes()
+    assert client == (pathlib.Path(fmpy.__file__).parent / "remoting" / "linux64" /
+                      "client_tcp.so").read_bytes()
+
+
+def test_paper_scene_is_bit_identical_to_the_fmu_before_the_portable_build(unzipped):
+    import json
+    expected = json.loads(REFERENCE.read_text())["default"]
+    got = scene_outputs(unzipped, "default")
+    for name in expected:
+        assert got[name] == expected[name], name
+
+
+@pytest.mark.parametrize("scene", SCENES)
+def test_scenes_are_bit_identical_to_linux(unzipped, linux_copy, scene):
+    """The paper's scene and the METIS scene (its ordering draws GKlib's random numbers,
+    which do not depend on the C library)."""
+    assert scene_outputs(unzipped, scene) == scene_outputs(linux_copy, scene)
+
+
+@pytest.mark.parametrize("variant", [0, 1, 2, 3, 4])
+def test_every_variant_is_bit_identical_to_linux(unzipped, linux_copy, variant):
+    run = dict(stop_time=2e-3, output_interval=1e-4,
+               start_values={"mass_matrix": variant, "friction_coefficient": 0.3,
+                             "damping_stiffness": 4e-6, "top_control": variant % 2})
+    linux = fmpy.simulate_fmu(linux_copy, **run)
+    windows = fmpy.simulate_fmu(unzipped, **run)
+    for name in linux.dtype.names:
+        assert [float(x).hex() for x in windows[name]] == [float(x).hex() for x in linux[name]], name
+
+
+def linux_instance(directory, model_description):
+    inst = FMU2Slave(guid=model_description.guid, unzipDirectory=directory,
+                     modelIdentifier="ContactBody", instanceName="linux")
+    inst.instantiate()
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.exitInitializationMode()
+    return inst
+
+
+def serialized(inst):
+    state = inst.getFMUState()
+    data = inst.serializeFMUState(state)
+    inst.freeFMUState(state)
+    return bytes(data)
+
+
+def run_on_windows(directory, guid, state, t0, steps, h, refs, tmp_path):
+    """state_host.exe under wine: restore `state`, step, return the outputs and the new state."""
+    state_in, outputs, state_out = (tmp_path / n for n in ("in.bin", "out.txt", "out.bin"))
+    state_in.write_bytes(state)
+    dll = pathlib.Path(directory) / "binaries" / "win64" / "ContactBody.dll"
+    windows = lambda p: "Z:" + str(p)  # wine's drive for /
+    out = subprocess.run(["wine64", str(STATE_HOST), windows(dll), guid, windows(state_in),
+                          repr(t0), str(steps), repr(h), windows(outputs), windows(state_out),
+                          *map(str, refs)], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr[-3000:]
+    rows = [[float.fromhex(x) for x in line.split()] for line in outputs.read_text().splitlines()]
+    return rows, state_out.read_bytes()
+
+
+def test_state_serialized_on_linux_replays_on_windows_and_back(unzipped, linux_copy, tmp_path):
+    """Linux steps to t1 and serializes; Windows restores that state and steps to t2; Linux
+    restores Windows' state at t2 and steps to t3. Every output on the way equals the run
+    that stayed on Linux, bit for bit, and so do the serialized states."""
+    assert STATE_HOST.is_file(), "the win64 build makes state_host.exe (CMakeLists.txt)"
+    md = fmpy.read_model_description(linux_copy)
+    refs = [v.valueReference for v in md.modelVariables
+            if v.causality == "output" and v.type == "Real"]
+    h, steps = 1e-4, 10
+    reference = linux_instance(linux_copy, md)
+    rows = []
+    for k in range(3 * steps):
+        reference.doStep(k * h, h)
+        rows.append(reference.getReal(refs))
+        if k + 1 == steps:
+            at_t1 = serialized(reference)
+        if k + 1 == 2 * steps:
+            at_t2 = serialized(reference)
+    reference.terminate()
+    reference.freeInstance()
+
+    windows_rows, windows_t2 = run_on_windows(unzipped, md.guid, at_t1, steps * h, steps, h,
+                                              refs, tmp_path)
+    assert windows_rows == rows[steps:2 * steps]
+    assert windows_t2 == at_t2
+
+    back = linux_instance(linux_copy, md)
+    state = back.deserializeFMUState(windows_t2)
+    back.setFMUState(state)
+    back.freeFMUState(state)
+    for k in range(2 * steps, 3 * steps):
+        back.doStep(k * h, h)
+        assert back.getReal(refs) == rows[k]
+    back.terminate()
+    back.freeInstance()
+
+
+def test_a_state_from_linux_is_refused_on_windows_when_truncated(unzipped, linux_copy, tmp_path):
+    """The bytes are checked there too: a cut state is an error, not a crash."""
+    md = fmpy.read_model_description(linux_copy)
+    inst = linux_instance(linux_copy, md)
+    inst.doStep(0, 1e-4)
+    state = serialized(inst)
+    inst.terminate()
+    inst.freeInstance()
+    state_in = tmp_path / "cut.bin"
+    state_in.write_bytes(state[: len(state) // 2])
+    dll = pathlib.Path(unzipped) / "binaries" / "win64" / "ContactBody.dll"
+    out = subprocess.run(["wine64", str(STATE_HOST), "Z:" + str(dll), md.guid,
+                          "Z:" + str(state_in), "0.0001", "1", "0.0001", "Z:" + str(tmp_path / "o"),
+                          "Z:" + str(tmp_path / "s"), "100"], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 1 and "fmi2DeSerializeFMUstate failed" in out.stderr, out.stderr
+    assert "fmi2DeSerializeFMUstate" in out.stderr.split("state_host:")[0]  # the FMU logged why

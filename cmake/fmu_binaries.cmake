@@ -7,11 +7,11 @@ function(make_self_contained target)
                         CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
   if(WIN32)
     # The C and C++ runtimes and winpthreads linked in: imports only Windows' own DLLs.
-    target_link_options(${target} PRIVATE -static -s)
+    target_link_options(${target} PRIVATE -static -s -Wl,--gc-sections)
   elseif(CONTACTBODY_ZIG)
     # zig links its libc++ in; glibc symbols no newer than the target's 2.17.
     target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/fmu_src/zig_static_destructors.cpp)
-    target_link_options(${target} PRIVATE -s
+    target_link_options(${target} PRIVATE -s -Wl,--gc-sections
                         -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/fmi_exports.map)
   elseif(NOT CONTACTBODY_SANITIZE)
     # The native build (not what users get): libstdc++ and libgcc inside, symbols hidden.

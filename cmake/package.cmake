@@ -67,8 +67,10 @@ function(add_fmu name)
   set(dir ${CMAKE_BINARY_DIR}/fmu/${name})
   set(file ${CMAKE_BINARY_DIR}/${name}.fmu)
   set(commands)
+  set(binary_files)
   while(FMU_BINARIES)
     list(POP_FRONT FMU_BINARIES platform binary)
+    list(APPEND binary_files ${binary})
     list(APPEND commands COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/binaries/${platform}
                          COMMAND ${CMAKE_COMMAND} -E copy ${binary} ${dir}/binaries/${platform}/)
   endwhile()
@@ -82,11 +84,8 @@ function(add_fmu name)
     COMMAND ${FMU_GENERATOR} ${dir}/modelDescription.xml
     ${commands}
     COMMAND ${CMAKE_COMMAND} -E copy ${FMU_SOURCES} ${dir}/sources/
-    COMMAND ${CMAKE_COMMAND} -E rm -f ${file}
-    COMMAND ${CMAKE_COMMAND} -E chdir ${dir}
-            ${CMAKE_COMMAND} -E tar cf ${file} --format=zip modelDescription.xml binaries sources
-            documentation
-    DEPENDS ${FMU_GENERATOR} ${FMU_DEPENDS} ${FMU_SOURCES} ${FMU_LICENSES}
+    COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${dir} ${file}
+    DEPENDS ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${FMU_GENERATOR} ${FMU_DEPENDS} ${binary_files} ${FMU_SOURCES} ${FMU_LICENSES}
     COMMENT "Packaging ${name}.fmu")
   add_custom_target(${name}_fmu ALL DEPENDS ${file})
 endfunction()

@@ -141,3 +141,16 @@ def test_a_state_from_linux_is_refused_on_windows_when_truncated(unzipped, linux
                          timeout=300)
     assert out.returncode == 1 and "fmi2DeSerializeFMUstate failed" in out.stderr, out.stderr
     assert "fmi2DeSerializeFMUstate" in out.stderr.split("state_host:")[0]  # the FMU logged why
+
+
+@pytest.mark.parametrize("name", ["BeltDrive", "Press"])
+def test_companion_fmus_are_bit_identical_to_linux(name):
+    """The companions of the system models are built the same way, so the SSP and the
+    container FMU can run on Windows too."""
+    fmu = FMU.with_name(f"{name}.fmu")
+    run = dict(stop_time=0.01, output_interval=1e-4)
+    linux = fmpy.simulate_fmu(extract_for("linux64", fmu), **run)
+    windows = fmpy.simulate_fmu(extract_for("win64", fmu), **run)
+    assert len(linux) == 101
+    for column in linux.dtype.names:
+        assert [float(x).hex() for x in windows[column]] == [float(x).hex() for x in linux[column]]

@@ -16,12 +16,7 @@ set(fmus ContactBody ${COMPANIONS})
 set(licenses ${PROJECT_SOURCE_DIR}/LICENSE)
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
-  execute_process(
-    COMMAND ${Python3_EXECUTABLE} -c "import ziglang, os; print(os.path.join(os.path.dirname(ziglang.__file__), 'zig'))"
-    OUTPUT_VARIABLE ZIG OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE zig_missing)
-  if(zig_missing OR NOT EXISTS "${ZIG}")
-    message(FATAL_ERROR "zig not found: install ziglang for ${Python3_EXECUTABLE} (scripts/setup.sh does)")
-  endif()
+  python_package_file(ZIG ziglang zig)
   get_filename_component(zig_lib ${ZIG} DIRECTORY)
   foreach(platform linux64 win64)
     if(platform STREQUAL "linux64")

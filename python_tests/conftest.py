@@ -1,5 +1,6 @@
 """Shared fixtures: the built FMU, its extracted copy, and low-level instances that record
 every log message."""
+import ctypes
 import os
 import pathlib
 import shutil
@@ -30,6 +31,12 @@ def not_through_remoting(why):
     return pytest.mark.skipif(PLATFORM == "win64", reason=f"fmpy's remoting {why}")
 
 
+# fmpy's remoting client does not survive being unloaded: after two simulate_fmu runs of
+# BeltDrive's win64 copy the Python process crashed in its own allocations (a client thread or
+# handler outlives dlclose; under valgrind the timing hides it). Held here, it stays loaded.
+_REMOTING_CLIENTS = []
+
+
 def extract_for(platform, fmu=FMU):
     """The FMU extracted to a new folder; for win64 with binaries/linux64 replaced by fmpy's
     remoting client, which runs binaries/win64 in a wine process."""
@@ -40,6 +47,8 @@ def extract_for(platform, fmu=FMU):
         from fmpy.util import add_remoting
         shutil.rmtree(pathlib.Path(directory) / "binaries" / "linux64")
         add_remoting(directory, host_platform="linux64", remote_platform="win64")
+        _REMOTING_CLIENTS.append(ctypes.CDLL(str(pathlib.Path(directory) / "binaries" /
+                                                 "linux64" / f"{fmu.stem}.so")))
     return directory
 
 

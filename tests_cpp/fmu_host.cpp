@@ -1,28 +1,15 @@
 // A minimal FMI 2.0 host, run under valgrind by python_tests/test_valgrind.py: it loads
 // ContactBody.so, simulates, saves, serializes and restores a state, makes a bad call, and
 // frees everything. Exit status 0 when every call returned what it should.
-#include <dlfcn.h>
-
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <vector>
 
-extern "C" {
-#include "fmi2Functions.h"
-}
+#include "fmi_host.hpp"
 
 namespace {
 
-void logger(fmi2ComponentEnvironment, fmi2String instance, fmi2Status status, fmi2String category,
-            fmi2String message, ...) {
-    va_list args;
-    va_start(args, message);
-    std::fprintf(stderr, "[%s %d %s] ", instance, static_cast<int>(status), category);
-    std::vfprintf(stderr, message, args);
-    std::fprintf(stderr, "\n");
-    va_end(args);
-}
+using host::logger;
 
 int failures = 0;
 void expect(bool ok, const char* what) {
@@ -39,12 +26,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: fmu_host ContactBody.so GUID\n");
         return 2;
     }
-    void* lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-    if (!lib) {
-        std::fprintf(stderr, "%s\n", dlerror());
-        return 2;
-    }
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(dlsym(lib, #f)); expect(f != nullptr, #f)
+    void* lib = host::load_library(argv[1]);
+    if (!lib) return 2;
+#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(lib, #f)); expect(f != nullptr, #f)
     LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
     LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal); LOAD(fmi2SetReal);
     LOAD(fmi2GetFMUstate); LOAD(fmi2SetFMUstate); LOAD(fmi2FreeFMUstate);

@@ -3,13 +3,6 @@
 // binary, initializes with the default parameters, restores the state from STATE_IN (unless
 // "-"), takes STEPS steps of H from T0, writes the value references' reals after each step
 // as hex floats (one line a step) to OUTPUTS, and the final state, serialized, to STATE_OUT.
-#ifdef _WIN32
-#include <windows.h>
-#else
-#include <dlfcn.h>
-#endif
-
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -17,37 +10,11 @@
 #include <string>
 #include <vector>
 
-extern "C" {
-#include "fmi2Functions.h"
-}
+#include "fmi_host.hpp"
 
 namespace {
 
-void logger(fmi2ComponentEnvironment, fmi2String instance, fmi2Status status, fmi2String category,
-            fmi2String message, ...) {
-    va_list args;
-    va_start(args, message);
-    std::fprintf(stderr, "[%s %d %s] ", instance, static_cast<int>(status), category);
-    std::vfprintf(stderr, message, args);
-    std::fprintf(stderr, "\n");
-    va_end(args);
-}
-
-void* load_library(const char* path) {
-#ifdef _WIN32
-    return reinterpret_cast<void*>(LoadLibraryA(path));
-#else
-    return dlopen(path, RTLD_NOW | RTLD_LOCAL);
-#endif
-}
-
-void* symbol(void* library, const char* name) {
-#ifdef _WIN32
-    return reinterpret_cast<void*>(GetProcAddress(static_cast<HMODULE>(library), name));
-#else
-    return dlsym(library, name);
-#endif
-}
+using host::logger;
 
 [[noreturn]] void fail(const char* what) {
     std::fprintf(stderr, "state_host: %s failed\n", what);
@@ -65,9 +32,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: state_host LIBRARY GUID STATE_IN|- T0 STEPS H OUTPUTS STATE_OUT VR...\n");
         return 2;
     }
-    void* library = load_library(argv[1]);
+    void* library = host::load_library(argv[1]);
     if (!library) fail("loading the library");
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(symbol(library, #f)); if (!f) fail(#f)
+#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); if (!f) fail(#f)
     LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
     LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal);
     LOAD(fmi2GetFMUstate); LOAD(fmi2SetFMUstate); LOAD(fmi2FreeFMUstate);

@@ -5,6 +5,7 @@ import os
 import pathlib
 import shutil
 import tempfile
+import time
 
 import fmpy
 import pytest
@@ -35,6 +36,34 @@ def not_through_remoting(why):
 # BeltDrive's win64 copy the Python process crashed in its own allocations (a client thread or
 # handler outlives dlclose; under valgrind the timing hides it). Held here, it stays loaded.
 _REMOTING_CLIENTS = []
+
+
+def _remoting_port_listens():
+    """Whether anything listens on fmpy's remoting port (rpclib's 8080), read from /proc."""
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        for line in pathlib.Path(table).read_text().splitlines()[1:]:
+            fields = line.split()
+            if fields[1].endswith(":1F90") and fields[3] == "0A":  # 0A: LISTEN
+                return True
+    return False
+
+
+if PLATFORM == "win64":
+    # fmpy's client kills its wine server when the instance is freed, but wineserver closes
+    # the server's listening socket a moment later: a next instance's client that connects in
+    # between reaches the dead server and waits forever (seen in CI). Wait for the port.
+    import fmpy.fmi2
+
+    _free_instance = fmpy.fmi2._FMU2.freeInstance
+
+    def _free_instance_and_wait(self):
+        _free_instance(self)
+        deadline = time.monotonic() + 30
+        while _remoting_port_listens():
+            assert time.monotonic() < deadline, "fmpy's remoting server did not stop"
+            time.sleep(0.02)
+
+    fmpy.fmi2._FMU2.freeInstance = _free_instance_and_wait
 
 
 def extract_for(platform, fmu=FMU):

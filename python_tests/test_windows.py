@@ -1,7 +1,8 @@
 """Issue 20: the win64 binary, run under wine. scripts/test.sh's Windows job runs this file with
 CONTACTBODY_PLATFORM=win64 (conftest: the fixtures are then a copy of the FMU that holds only
 binaries/win64, driven through fmpy's remoting), together with the state-machine and argument
-tests of test_bad_input.py and the energy balance of test_energy_balance.py."""
+tests of test_bad_input.py, the energy balance of test_energy_balance.py and the paper scene
+against the FMU before the portable build of test_portable.py."""
 import pathlib
 import subprocess
 
@@ -10,7 +11,7 @@ import pytest
 from fmpy.fmi2 import FMU2Slave
 
 from conftest import FMU, PLATFORM, ROOT, extract_for
-from test_portable import REFERENCE, SCENES, scene_outputs
+from test_portable import SCENES, scene_outputs
 
 pytestmark = pytest.mark.skipif(PLATFORM != "win64", reason="the Windows job's (scripts/test.sh)")
 STATE_HOST = ROOT / "build" / "win64" / "state_host.exe"
@@ -30,14 +31,6 @@ def test_the_windows_copy_holds_only_the_win64_binary(unzipped):
                       "client_tcp.so").read_bytes()
 
 
-def test_paper_scene_is_bit_identical_to_the_fmu_before_the_portable_build(unzipped):
-    import json
-    expected = json.loads(REFERENCE.read_text())["default"]
-    got = scene_outputs(unzipped, "default")
-    for name in expected:
-        assert got[name] == expected[name], name
-
-
 @pytest.mark.parametrize("scene", SCENES)
 def test_scenes_are_bit_identical_to_linux(unzipped, linux_copy, scene):
     """The paper's scene and the METIS scene (its ordering draws GKlib's random numbers,
@@ -50,8 +43,10 @@ def test_every_variant_is_bit_identical_to_linux(unzipped, linux_copy, variant):
     run = dict(stop_time=2e-3, output_interval=1e-4,
                start_values={"mass_matrix": variant, "friction_coefficient": 0.3,
                              "damping_stiffness": 4e-6, "top_control": variant % 2})
-    linux = fmpy.simulate_fmu(linux_copy, **run)
-    windows = fmpy.simulate_fmu(unzipped, **run)
+    assert_same_bits(fmpy.simulate_fmu(unzipped, **run), fmpy.simulate_fmu(linux_copy, **run))
+
+
+def assert_same_bits(windows, linux):
     for name in linux.dtype.names:
         assert [float(x).hex() for x in windows[name]] == [float(x).hex() for x in linux[name]], name
 
@@ -73,8 +68,9 @@ def serialized(inst):
     return bytes(data)
 
 
-def run_on_windows(directory, guid, state, t0, steps, h, refs, tmp_path):
-    """state_host.exe under wine: restore `state`, step, return the outputs and the new state."""
+def state_host(directory, guid, state, t0, steps, h, refs, tmp_path):
+    """state_host.exe under wine: restore `state`, take the steps; the finished process and
+    the paths of its outputs and of its new state."""
     state_in, outputs, state_out = (tmp_path / n for n in ("in.bin", "out.txt", "out.bin"))
     state_in.write_bytes(state)
     dll = pathlib.Path(directory) / "binaries" / "win64" / "ContactBody.dll"
@@ -82,6 +78,12 @@ def run_on_windows(directory, guid, state, t0, steps, h, refs, tmp_path):
     out = subprocess.run(["wine64", str(STATE_HOST), windows(dll), guid, windows(state_in),
                           repr(t0), str(steps), repr(h), windows(outputs), windows(state_out),
                           *map(str, refs)], capture_output=True, text=True, timeout=300)
+    return out, outputs, state_out
+
+
+def run_on_windows(directory, guid, state, t0, steps, h, refs, tmp_path):
+    """The outputs after each step and the new state, serialized."""
+    out, outputs, state_out = state_host(directory, guid, state, t0, steps, h, refs, tmp_path)
     assert out.returncode == 0, out.stderr[-3000:]
     rows = [[float.fromhex(x) for x in line.split()] for line in outputs.read_text().splitlines()]
     return rows, state_out.read_bytes()
@@ -132,13 +134,8 @@ def test_a_state_from_linux_is_refused_on_windows_when_truncated(unzipped, linux
     state = serialized(inst)
     inst.terminate()
     inst.freeInstance()
-    state_in = tmp_path / "cut.bin"
-    state_in.write_bytes(state[: len(state) // 2])
-    dll = pathlib.Path(unzipped) / "binaries" / "win64" / "ContactBody.dll"
-    out = subprocess.run(["wine64", str(STATE_HOST), "Z:" + str(dll), md.guid,
-                          "Z:" + str(state_in), "0.0001", "1", "0.0001", "Z:" + str(tmp_path / "o"),
-                          "Z:" + str(tmp_path / "s"), "100"], capture_output=True, text=True,
-                         timeout=300)
+    out, _, _ = state_host(unzipped, md.guid, state[: len(state) // 2], 1e-4, 1, 1e-4, [100],
+                           tmp_path)
     assert out.returncode == 1 and "fmi2DeSerializeFMUstate failed" in out.stderr, out.stderr
     assert "fmi2DeSerializeFMUstate" in out.stderr.split("state_host:")[0]  # the FMU logged why
 
@@ -152,5 +149,4 @@ def test_companion_fmus_are_bit_identical_to_linux(name):
     linux = fmpy.simulate_fmu(extract_for("linux64", fmu), **run)
     windows = fmpy.simulate_fmu(extract_for("win64", fmu), **run)
     assert len(linux) == 101
-    for column in linux.dtype.names:
-        assert [float(x).hex() for x in windows[column]] == [float(x).hex() for x in linux[column]]
+    assert_same_bits(windows, linux)

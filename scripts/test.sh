@@ -14,7 +14,8 @@ if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
     echo "== Windows job: the win64 binary under wine, through fmpy's remoting =="
     CONTACTBODY_PLATFORM=win64 .venv/bin/python -m pytest python_tests/test_windows.py \
         python_tests/test_bad_input.py python_tests/test_energy_balance.py \
-        -k "test_windows or test_bad_input or (test_energy_balance_closes and held)" "$@"
+        python_tests/test_portable.py -k "test_windows or test_bad_input or \
+        (test_energy_balance_closes and held) or paper_scene_equals_the_fmu_before" "$@"
 fi
 
 if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then

@@ -3,7 +3,7 @@ start-up share and where it goes, and the cost per substep against its floor at 
 
 "Before" is commit 406a316 built as it was (gcc 12, Debian's SuiteSparse, METIS and LAPACK as
 13 shared libraries beside the .so): the script checks it out as a git worktree in
-build-before/ and builds it there once (needs the Debian packages libsuitesparse-dev and
+build-before/406a316/ and builds it there once (needs the Debian packages libsuitesparse-dev and
 patchelf, which scripts/setup.sh installs). "After" is build/ (scripts/setup.sh).
 
 Writes benchmarks/results/portable.md and portable.json.
@@ -22,28 +22,19 @@ import time
 import zipfile
 
 import fmpy
+from build_commit import build_commit
 from fmpy import simulate_fmu
 from fmpy.fmi2 import FMU2Slave
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 BEFORE_COMMIT = "406a316"
-BEFORE = ROOT / "build-before"
 OUT = ROOT / "benchmarks" / "results"
 SIZES = [20, 40, 80, 160]
 
 
 def build_before():
     """The FMU and bench_substep of BEFORE_COMMIT, built once."""
-    src, build = BEFORE / "src", BEFORE / "build"
-    if not (build / "ContactBody.fmu").exists():
-        if not src.exists():
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(src),
-                            BEFORE_COMMIT], check=True)
-        subprocess.run(["/usr/bin/cmake", "-S", str(src), "-B", str(build), "-G", "Ninja",
-                        "-DCMAKE_BUILD_TYPE=Release", f"-DPython3_EXECUTABLE={sys.executable}"],
-                       check=True, stdout=subprocess.DEVNULL)
-        subprocess.run(["/usr/bin/cmake", "--build", str(build), "--target", "fmu",
-                        "bench_substep"], check=True, stdout=subprocess.DEVNULL)
+    build = build_commit(BEFORE_COMMIT, ["fmu", "bench_substep"])
     return {"fmu": build / "ContactBody.fmu", "bench": build / "bench_substep"}
 
 

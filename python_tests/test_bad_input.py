@@ -87,6 +87,19 @@ def test_inconsistent_parameters_fail_initialization_and_can_be_fixed(instance, 
     assert np.isfinite(step_and_read(instance, vr))
 
 
+def test_settings_that_cannot_take_effect_together_are_an_error_naming_both(instance, vr):
+    """initial_state = static starts at rest: an initial velocity would be dropped silently."""
+    instance.setupExperiment(startTime=0)
+    instance.enterInitializationMode()
+    instance.setInteger([vr["initial_state"]], [1])
+    instance.setReal([vr["initial_velocity_y"]], [0.5])
+    expect_error(instance, instance.exitInitializationMode, "initial_state", "initial_velocity_y",
+                 "initial_velocity_x")
+    instance.setReal([vr["initial_velocity_y"]], [0.0])
+    instance.exitInitializationMode()
+    assert np.isfinite(step_and_read(instance, vr))
+
+
 def test_fixed_parameters_cannot_change_after_initialization(instance, vr):
     initialize(instance)
     for name in ["density", "width", "internal_step", "contact_tolerance"]:

@@ -1,6 +1,6 @@
 """Rayleigh damping and the energy bookkeeping (issue 10, items 1-2): every force's exact
 discrete work, a balance that closes to round-off for every variant and input mode, and the
-undamped defaults unchanged bit for bit."""
+undamped scheme unchanged bit for bit."""
 import hashlib
 import json
 import pathlib
@@ -16,15 +16,15 @@ WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work",
          "friction_dissipation", "foundation_work", "energy"]
 
 
-# Before the first step the force outputs now describe the initial state (they were 0).
-INITIAL_REACTIONS = {"normal_force", "corner_pressure", "top_reaction_x", "top_reaction_y",
-                     "active_contact_nodes", "max_penetration"}
+# The scheme's outputs, recorded (hex floats, SHA-256 of hex floats) with the increment form
+# (issue 23): with them, later changes must leave the undamped scheme unchanged bit for bit.
+# The increment form itself changed the last bits of the builds before it (cd498db .. 3f3fd08);
+# how far, and why that is round-off: benchmarks/results/increment_form.md.
 
 
-def test_undamped_outputs_are_those_before_damping_was_added(fmu_path):
-    """Outputs of the build before damping existed (hex floats): every variant, F = 0 and 1.2;
-    at t = 0 all but the initial reactions."""
-    ref = json.loads((DATA / "reference_outputs_before_damping.json").read_text())
+def test_undamped_outputs_are_unchanged(fmu_path):
+    """Every variant, F = 0 and 1.2, 10 x 10, 1 ms: every output, bit for bit."""
+    ref = json.loads((DATA / "reference_outputs_undamped.json").read_text())
     for key, expected in ref["runs"].items():
         variant, friction = key.split("/")
         r = fmpy.simulate_fmu(fmu_path, stop_time=0.001, output_interval=1e-4,
@@ -32,17 +32,15 @@ def test_undamped_outputs_are_those_before_damping_was_added(fmu_path):
                                             "friction_coefficient": float(friction)},
                               output=ref["outputs"])
         for name, values in expected.items():
-            first = 1 if name in INITIAL_REACTIONS else 0
-            assert [float(x).hex() for x in r[name]][first:] == values[first:], (key, name)
+            assert [float(x).hex() for x in r[name]] == values, (key, name)
 
 
 @pytest.mark.skipif(SANITIZED, reason="34 s instrumented; the same runs are checked by the "
                     "normal build, and their code paths run under the sanitizers elsewhere")
-def test_figures_7_8_runs_are_bit_identical_to_before(fmu_path):
-    """The paper's scheme is unchanged by damping, the works, variant 4, refinement and the
-    state fixes: every run of Figs. 7-8 (4 variants x 5 dt, F = 1.2, 0.02 s) gives the
-    SHA-256 of its E and E - xi hex values computed with the build before them (cd498db)."""
-    expected = json.loads((DATA / "figures_7_8_before_damping.sha256.json").read_text())
+def test_figures_7_8_runs_are_unchanged(fmu_path):
+    """Every run of Figs. 7-8 (4 variants x 5 dt, F = 1.2, 0.02 s) gives the SHA-256 of its
+    E and E - xi hex values recorded with the increment form."""
+    expected = json.loads((DATA / "figures_7_8.sha256.json").read_text())
     for key, digest in expected.items():
         variant, dt = key.split("/")
         r = fmpy.simulate_fmu(fmu_path, stop_time=0.02, output_interval=8e-5,

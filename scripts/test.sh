@@ -15,7 +15,7 @@ if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
     CONTACTBODY_PLATFORM=win64 .venv/bin/python -m pytest python_tests/test_windows.py \
         python_tests/test_bad_input.py python_tests/test_energy_balance.py \
         python_tests/test_portable.py -k "test_windows or test_bad_input or \
-        (test_energy_balance_closes and held) or paper_scene_equals_the_fmu_before" "$@"
+        (test_energy_balance_closes and held) or paper_scene_equals_the_native_build" "$@"
 fi
 
 if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then

@@ -72,6 +72,32 @@ SparseMatrix stiffness_matrix(const Mesh& mesh, double lambda, double mu) {
     return from_triplets(mesh.num_dofs(), t);
 }
 
+StrainEnergy::StrainEnergy(const Mesh& mesh, double lambda, double mu) : lambda_(lambda), mu_(mu) {
+    elements_.reserve(mesh.triangles.size());
+    for (const auto& tri : mesh.triangles) {
+        const Point p[3] = {mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2])};
+        const double area = signed_area(p[0], p[1], p[2]);
+        // dN_a/dx = (y_{a+1} - y_{a+2}) / 2 area, dN_a/dy = (x_{a+2} - x_{a+1}) / 2 area
+        elements_.push_back({tri, (p[2].y - p[0].y) / (2 * area), (p[0].x - p[2].x) / (2 * area),
+                             (p[0].y - p[1].y) / (2 * area), (p[1].x - p[0].x) / (2 * area), area});
+    }
+}
+
+double StrainEnergy::operator()(const Eigen::VectorXd& u) const {
+    double energy = 0;
+    for (const Element& e : elements_) {
+        const int n0 = e.nodes[0], n1 = e.nodes[1], n2 = e.nodes[2];
+        const double ux1 = u[dof_x(n1)] - u[dof_x(n0)], uy1 = u[dof_y(n1)] - u[dof_y(n0)];
+        const double ux2 = u[dof_x(n2)] - u[dof_x(n0)], uy2 = u[dof_y(n2)] - u[dof_y(n0)];
+        const double exx = e.dx1 * ux1 + e.dx2 * ux2, eyy = e.dy1 * uy1 + e.dy2 * uy2;
+        const double gamma = e.dy1 * ux1 + e.dy2 * ux2 + e.dx1 * uy1 + e.dx2 * uy2;
+        const double trace = exx + eyy, shear = exx - eyy;
+        energy += e.area * (0.5 * (lambda_ + mu_) * trace * trace +
+                            0.5 * mu_ * (shear * shear + gamma * gamma));
+    }
+    return energy;
+}
+
 SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho) {
     Triplets t;
     t.reserve(mesh.triangles.size() * 9);

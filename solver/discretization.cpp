@@ -69,6 +69,13 @@ void check_parameters(const SceneParameters& p) {
     if (p.force_control) require_positive("top_mass", p.top_mass);
     if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
     if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
+    if (p.static_initial_state && (p.initial_velocity_x != 0 || p.initial_velocity_y != 0)) {
+        std::ostringstream msg;
+        msg << "initial_state = static starts the body at rest, so initial_velocity_x and "
+               "initial_velocity_y must be 0 (got " << p.initial_velocity_x << ", "
+            << p.initial_velocity_y << " m/s): set them to 0, or use initial_state = paper";
+        throw std::invalid_argument(msg.str());
+    }
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
         reject("initial_gap", "finite and >= 0", p.initial_gap);
     if (!(std::isfinite(p.damping_mass) && p.damping_mass >= 0))
@@ -82,6 +89,7 @@ Discretization discretize(const SceneParameters& p) {
     Discretization d;
     d.mesh = make_structured_mesh(p.width, p.height, p.nx, p.ny);
     d.A = stiffness_matrix(d.mesh, p.lambda, p.mu);
+    d.strain_energy = StrainEnergy(d.mesh, p.lambda, p.mu);
 
     const SparseMatrix scalar = scalar_mass_matrix(d.mesh, p.density);
     SparseMatrix redistributed;
@@ -128,6 +136,7 @@ Discretization discretize(const SceneParameters& p) {
     const SparseMatrix R = d.expand.transpose(), Pc = selector(d.clamped_dofs, n);
     const SparseMatrix PcT = Pc.transpose(), Pt = selector(d.top_dofs, n);
     d.M_free_rows = R * d.M;
+    d.A_free_rows = R * d.A;
     d.M_top_rows = Pt * d.M;
     d.A_top_rows = Pt * d.A;
     d.A_free_clamped = R * d.A * PcT;
@@ -153,6 +162,15 @@ bool same_discretization(const SceneParameters& a, const SceneParameters& b) {
                         p.force_control, p.top_mass, p.damping_mass, p.damping_stiffness);
     };
     return read(a) == read(b);
+}
+
+void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    const double tx = u[dof_x(0)], ty = u[dof_y(0)];
+    out.resize(u.size());
+    for (Eigen::Index dof = 0; dof < u.size(); dof += 2) {
+        out[dof] = u[dof] - tx;
+        out[dof + 1] = u[dof + 1] - ty;
+    }
 }
 
 std::vector<int> Discretization::contact_unknowns() const {

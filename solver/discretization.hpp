@@ -68,6 +68,7 @@ struct Discretization {
     Mesh mesh;
     bool contact_at_end_of_step = false;  // else on u^{k+1/2} (the paper's midpoint)
     SparseMatrix A;                 // all dofs
+    StrainEnergy strain_energy;     // 1/2 u^T A u, >= 0 and exact for translations
     SparseMatrix M;                 // the variant's mass matrix, all dofs
     // The unknowns ("free", n_f of them): every dof that is neither clamped nor tied to the
     // top plate, then, under force control, the plate's vertical displacement w (plate_index).
@@ -81,7 +82,7 @@ struct Discretization {
     double plate_mass = 0;          // kg/m, force control
     SparseMatrix expand;
     // Blocks used by the stepper: rows free / top, columns all / clamped.
-    RowMajorSparseMatrix M_free_rows;  // row-major: the substep multiplies by it every time
+    RowMajorSparseMatrix M_free_rows, A_free_rows;  // row-major: every substep multiplies by them
     SparseMatrix A_free_clamped, M_free_clamped;
     RowMajorSparseMatrix M_top_rows, A_top_rows;  // few rows, read row by row
     SparseMatrix A_free, M_free;    // free x free (M_free with the plate's mass)
@@ -96,6 +97,10 @@ struct Discretization {
     std::vector<int> contact_unknowns() const;
     // A top node's y dof: all of them move together (the clamp's value, or the plate's w).
     int top_y_dof() const { return dof_y(mesh.top_nodes.front()); }
+    // out = u minus the translation of node 0. A annihilates translations, but the product
+    // A u rounds |A| |u|: a body far from where it started would feel forces of that size
+    // from nowhere. A (u - t) is the same force without them.
+    void remove_translation(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
 };
 
 Discretization discretize(const SceneParameters& p);

@@ -108,27 +108,45 @@ void Simulation::static_initial_state(double top, double force) {
     state_.sticking = s.sticking;
 }
 
-// Before the first step the force outputs describe the initial state: the forces in static
-// balance with its displacement, A u = f, on the contact nodes' y rows (where they push the
-// body up, i.e. compress it) and on the clamped rows. Friction is 0 until the first step.
+// Before the first step the outputs describe the initial state. A bottom node touches the
+// foundation where its gap is closed (g + u_y <= 0). The contact forces at t0: for the static
+// state, the multipliers of its load path (normal and friction: they hold it in balance);
+// for the paper's state, which is no equilibrium and has no slip history, the normal force
+// that would hold a touching node where it is, max(0, (A u)_y), and no friction. Nodes with a
+// normal force are active, and at rest none slips. The top reactions are A u on the top rows.
 void Simulation::initial_reactions() {
     const Discretization& d = stepper_->discretization();
     const SceneParameters& p = stepper_->parameters();
-    product_.noalias() = d.A * state_.u;
+    d.remove_translation(state_.u, relative_);
+    product_.noalias() = d.A * relative_;
+    const Eigen::Index nc = stepper_->num_contact_nodes();
+    const bool multipliers = p.static_initial_state;
     Observables o;
-    for (size_t i = 0; i < d.mesh.contact_nodes.size(); ++i) {
+    for (Eigen::Index k = 0; k < nc; ++k) {
+        const size_t i = static_cast<size_t>(k);
         const int node = d.mesh.contact_nodes[i];
-        const double up = product_[dof_y(node)];
-        const Eigen::Index k = static_cast<Eigen::Index>(i);
         const double share = d.mesh.edge_share(i);
-        edge_.pressure[k] = up > 0 ? up / share : 0.0;
-        edge_.gap[k] = p.initial_gap + state_.u[dof_y(node)];
-        edge_.state[k] = up > 0 ? 1 : 0;  // pressed at rest: sticking
-        o.max_penetration = std::max(o.max_penetration, -state_.u[dof_y(node)] - p.initial_gap);
-        if (!(up > 0)) continue;
-        o.normal_force += up;
-        ++o.active_contact_nodes;
-        if (i == 0) o.corner_pressure = up / (0.5 * d.mesh.hx());
+        const double gap = p.initial_gap + state_.u[dof_y(node)];
+        const bool touching = gap <= 0;
+        double normal = 0, friction = 0;
+        if (multipliers) {
+            normal = -state_.lambda[k];
+            if (state_.lambda.size() == 2 * nc) friction = state_.lambda[nc + k];
+        } else if (touching) {
+            normal = std::max(0.0, product_[dof_y(node)]);
+        }
+        edge_.pressure[k] = normal / share;
+        edge_.friction[k] = friction / share;
+        edge_.gap[k] = gap;
+        edge_.state[k] = normal > 0 ? 1 : 0;  // pressed at rest: sticking
+        o.max_penetration = std::max(o.max_penetration, -gap);
+        o.normal_force += normal;
+        o.friction_force += friction;
+        if (normal > 0) ++o.active_contact_nodes;
+        if (k == 0) {
+            o.corner_pressure = normal / share;
+            o.corner_friction = friction / share;
+        }
     }
     for (int dof : d.top_dofs)
         (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product_[dof];
@@ -261,8 +279,7 @@ std::pair<double, double> Simulation::kinetic_and_strain_energy(const State& s) 
     const Discretization& d = stepper_->discretization();
     product_.noalias() = d.M * s.v;
     const double kinetic = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
-    product_.noalias() = d.A * s.u;
-    return {kinetic, 0.5 * s.u.dot(product_)};
+    return {kinetic, d.strain_energy(s.u)};
 }
 
 double Simulation::energy(const State& s) {

@@ -132,7 +132,7 @@ private:
     Observables observables_;
     StepStatistics statistics_;
     bool energies_current_ = false;
-    Eigen::VectorXd product_;
+    Eigen::VectorXd product_, relative_;
     Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
     Eigen::VectorXd edge_sum_N_, edge_sum_T_;  // multipliers summed over the step's substeps
     EdgeSnapshot edge_;

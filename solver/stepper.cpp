@@ -58,12 +58,12 @@ void Stepper::start_run() {
     problem_factor_ = 0;
     const Eigen::Index nf = disc_.expand.cols();
     const Eigen::Index nc = num_contact_nodes();
-    z_.resize(disc_.mesh.num_dofs());
-    u_half_.resize(disc_.mesh.num_dofs());
+    relative_.resize(disc_.mesh.num_dofs());
+    w_.resize(disc_.mesh.num_dofs());
     du_.resize(disc_.mesh.num_dofs());
     C_du_.resize(disc_.mesh.num_dofs());
     rhs_.resize(nf);
-    u_half_free_.resize(nf);
+    w_free_.resize(nf);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
     problem_.a.resize(2 * nc);
     problem_.gap_limit.resize(nc);
@@ -190,24 +190,32 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
     if (s.lambda.size() != problem_.W.rows()) s.lambda.setZero(problem_.W.rows());
 
+    // The unknown is the increment w = u^{k+1/2} - u^k (docs/contract.md, "Precision"): with
+    // u^{k+1/2} itself the right-hand side carries 4/dt^2 M u^k, and the velocity
+    // 4/dt (u^{k+1/2} - u^k) - v^k loses the digits of |u| / (v dt) to the subtraction, as
+    // much more the farther the body is from where it started and the smaller dt. Here
+    //   K w = 2/dt M v^k - A u^k - K_fc w_c + B^T lambda
+    // has no term of the size of u^k but the force A u^k (taken without translations).
     // Clamped dofs at the midpoint: u_x = 0, u_y = mean top displacement.
     const double top_half = 0.5 * (load.top_start + load.top_end);
-    for (Eigen::Index k = 0; k < clamped_half_.size(); ++k)
-        clamped_half_[k] = d.clamped_dofs[k] % 2 == 1 ? top_half : 0.0;
+    for (Eigen::Index k = 0; k < clamped_half_.size(); ++k) {
+        const int dof = d.clamped_dofs[static_cast<size_t>(k)];
+        clamped_half_[k] = (dof % 2 == 1 ? top_half : 0.0) - s.u[dof];
+    }
 
-    z_ = c1 * s.u + c2 * s.v;
-    rhs_.noalias() = d.M_free_rows * z_;
+    d.remove_translation(s.u, relative_);
+    rhs_.noalias() = c2 * (d.M_free_rows * s.v);
+    rhs_.noalias() -= d.A_free_rows * relative_;
     rhs_.noalias() -= f.K_free_clamped * clamped_half_;
-    if (params_.damped()) rhs_.noalias() += c2 * (d.C_free_rows * s.u);
     if (d.plate_index >= 0) {  // the plate's own inertia and the force pressing it down
-        rhs_[d.plate_index] += d.plate_mass * z_[d.top_y_dof()] - load.top_force;
+        rhs_[d.plate_index] += d.plate_mass * c2 * s.v[d.top_y_dof()] - load.top_force;
     }
     laps.lap(timings_.update);
     Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
     laps.lap(timings_.solve);
 
-    // Condensed contact problem on u^{k+1/2}; the implicit-contact variants impose the
-    // conditions at the end of the step, an affine map of u^{k+1/2}.
+    // Condensed contact problem on B w; the conditions on u^{k+1/2} (or, for the
+    // implicit-contact variants, on u^{k+1}, an affine map of it) shifted by B u^k.
     const int unknowns = static_cast<int>(problem_.W.rows());
     const auto G = f.G.leftCols(unknowns);
     auto y_contact = y.tail(f.G.rows());
@@ -216,16 +224,12 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     bool touching = false;
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
-        const double uN_old = -s.u[dof_y(node)];
-        problem_.gap_limit[i] = implicit ? 0.5 * (params_.initial_gap + uN_old)
-                                         : params_.initial_gap;
+        const double gap_old = params_.initial_gap + s.u[dof_y(node)];  // g - u_N^k
+        problem_.gap_limit[i] = implicit ? 0.5 * gap_old : gap_old;
         touching = touching || problem_.a[i] > problem_.gap_limit[i];
-        if (friction) {
-            const double ux_old = s.u[dof_x(node)], vx_old = s.v[dof_x(node)];
-            problem_.slip_origin[i] =
-                implicit ? ux_old + 0.25 * dt * (vx_old + load.foundation_velocity)
-                         : ux_old + 0.5 * dt * load.foundation_velocity;
-        }
+        if (friction)
+            problem_.slip_origin[i] = implicit ? 0.25 * dt * (s.v[dof_x(node)] + load.foundation_velocity)
+                                               : 0.5 * dt * load.foundation_velocity;
     }
     const bool static_friction = friction && params_.static_friction_ratio != 1;
     if (static_friction)  // the nodes that stuck in the last substep hold with F_s
@@ -243,13 +247,14 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         s.lambda.setZero();  // no node can touch: the contact solve is skipped
     }
     laps.lap(timings_.contact);
-    f.cholesky->backward(u_half_free_);
+    f.cholesky->backward(w_free_);
     laps.lap(timings_.solve);
 
-    u_half_.noalias() = d.expand * u_half_free_;  // (the plate's w on every top y dof)
-    for (size_t k = 0; k < d.clamped_dofs.size(); ++k) u_half_[d.clamped_dofs[k]] = clamped_half_[k];
+    w_.noalias() = d.expand * w_free_;  // (the plate's w on every top y dof)
+    for (size_t k = 0; k < d.clamped_dofs.size(); ++k) w_[d.clamped_dofs[k]] = clamped_half_[k];
+    relative_ += w_;  // u^{k+1/2} without the translation of node 0
     if (params_.damped()) {
-        du_ = 2 * (u_half_ - s.u);  // u^{k+1} - u^k on all dofs
+        du_ = 2 * w_;  // u^{k+1} - u^k on all dofs
         C_du_.noalias() = d.C * du_;
         report.work.damping = du_.dot(C_du_) / dt;
     }
@@ -261,16 +266,14 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const int dof = d.top_dofs[k];
         double r = 0;
         for (RowMajorSparseMatrix::InnerIterator it(d.M_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
-            r += it.value() * (c1 * u_half_[it.col()] - z_[it.col()]);
+            r += it.value() * (c1 * w_[it.col()] - c2 * s.v[it.col()]);
         for (RowMajorSparseMatrix::InnerIterator it(d.A_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
-            r += it.value() * u_half_[it.col()];
+            r += it.value() * relative_[it.col()];
         if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
         (dof % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
-        if (d.free_index[dof] < 0) report.work.clamp += r * 2 * (u_half_[dof] - s.u[dof]);
+        if (d.free_index[dof] < 0) report.work.clamp += r * 2 * w_[dof];
     }
-    if (d.plate_index >= 0)
-        report.work.clamp -= load.top_force * 2 * (u_half_free_[d.plate_index] -
-                                                   s.u[d.top_y_dof()]);
+    if (d.plate_index >= 0) report.work.clamp -= load.top_force * 2 * w_free_[d.plate_index];
 
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
@@ -283,23 +286,23 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     else snapshot_.lambda_T.setZero();
     for (int i = 0; i < nc; ++i) {
         const int node = d.mesh.contact_nodes[i];
-        snapshot_.normal_displacement[i] = -u_half_[dof_y(node)];
-        if (friction) snapshot_.slip[i] = u_half_[dof_x(node)] - problem_.slip_origin[i];
+        const double uN_old = -s.u[dof_y(node)], duN = -2 * w_[dof_y(node)];
+        const double dux = 2 * w_[dof_x(node)];
+        snapshot_.normal_displacement[i] = uN_old + 0.5 * duN;
+        snapshot_.gap_limit[i] += uN_old;
+        if (friction) snapshot_.slip[i] = 0.5 * dux - problem_.slip_origin[i];
         const double lN = snapshot_.lambda_N[i], lT = snapshot_.lambda_T[i];
-        const double ux_new = 2 * u_half_[dof_x(node)] - s.u[dof_x(node)];
-        const double uN_new = -(2 * u_half_[dof_y(node)] - s.u[dof_y(node)]);
         report.normal_force -= lN;
         report.friction_force += lT;
-        const double dux = ux_new - s.u[dof_x(node)], uN_old = -s.u[dof_y(node)];
         const double foundation_step = load.foundation_velocity * dt;
         snapshot_.slip_velocity[i] = (dux - foundation_step) / dt;
         snapshot_.state[i] = touching ? static_cast<signed char>(solver_.status()[i]) : 0;
         report.work.friction += lT * dux;
-        report.work.normal_contact += lN * (uN_new - uN_old);
+        report.work.normal_contact += lN * duN;
         report.work.foundation += lT * foundation_step;
         report.work.friction_dissipation += lT * (foundation_step - dux);
         report.max_penetration =
-            std::max(report.max_penetration, uN_new - params_.initial_gap);
+            std::max(report.max_penetration, duN - (params_.initial_gap - uN_old));
         s.sticking[i] = friction && touching && solver_.status()[i] == NodeStatus::stick ? 1.0 : 0.0;
         if (touching && solver_.status()[i] != NodeStatus::open) {
             ++report.active_nodes;
@@ -312,9 +315,8 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.
     for (int dof : d.moving_dofs) {
-        const double du = u_half_[dof] - s.u[dof];
-        s.v[dof] = 2 * c2 * du - s.v[dof];
-        s.u[dof] += 2 * du;
+        s.v[dof] = 2 * c2 * w_[dof] - s.v[dof];
+        s.u[dof] += 2 * w_[dof];
     }
     for (int dof : d.clamped_dofs) {
         const bool y = dof % 2 == 1;

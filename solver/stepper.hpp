@@ -1,11 +1,11 @@
 // One midpoint substep with frictional contact (paper eq. 20-22), with Rayleigh
 // damping C v̄ (v̄ = (u^{k+1} - u^k)/dt) when C is not empty.
 //
-// The unknown is u^{k+1/2}. On the free dofs it solves
-//   K u = M (4/dt^2 u^k + 2/dt v^k) + 2/dt C u^k - K_fc u_c^{k+1/2} + B^T lambda,
-//   K = 4/dt^2 M + 2/dt C + A,
-// condensed to the contact unknowns: u = u0 + K^-1 B^T lambda with u0 = K^-1 rhs, so that
-// B u = B u0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square),
+// The unknown is the increment w = u^{k+1/2} - u^k. On the free dofs it solves
+//   K w = 2/dt M v^k - A u^k - K_fc w_c + B^T lambda,   K = 4/dt^2 M + 2/dt C + A,
+// (the midpoint equation K u^{k+1/2} = M (4/dt^2 u^k + 2/dt v^k) + 2/dt C u^k + ... less K u^k),
+// condensed to the contact unknowns: w = w0 + K^-1 B^T lambda with w0 = K^-1 rhs, so that
+// B w = B w0 + W lambda with the Delassus operator W = B K^-1 B^T (dense, 2 n_c square),
 // evaluated on the trailing block of a factor with the contact dofs ordered last.
 #pragma once
 
@@ -160,7 +160,9 @@ private:
     SubstepTimings timings_;
     ContactSnapshot snapshot_;
     // Workspace, sized once.
-    Eigen::VectorXd z_, rhs_, u_half_free_, u_half_, clamped_half_, du_, C_du_;
+    // w: u^{k+1/2} - u^k (w_free_ the unknowns'), relative_: u minus node 0's translation,
+    // clamped_half_: the clamped dofs' w.
+    Eigen::VectorXd relative_, rhs_, w_free_, w_, clamped_half_, du_, C_du_;
 };
 
 }  // namespace contactbody

@@ -49,8 +49,15 @@ bool initialized(const Instance* instance) {
     return instance->state & (StepComplete | StepFailed | Terminated | Error);
 }
 
+// The simulation's warnings (docs/contract.md, "Warnings"), each once, as logStatusWarning.
+void log_warnings(Instance* instance, const char* function, Simulation& sim) {
+    for (const std::string& warning : sim.take_warnings())
+        instance->log(fmi2Warning, LogCategory::warning, std::string(function) + ": " + warning);
+}
+
 // Events (a new factorization) and the contact solver's statistics of the last step.
 void log_step(Instance* instance, Simulation& sim) {
+    log_warnings(instance, "fmi2DoStep", sim);
     const int factorizations = sim.stepper().factorizations();
     if (factorizations != instance->factorizations_logged) {
         instance->factorizations_logged = factorizations;
@@ -189,6 +196,7 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
         // the steps log the ones they make.
         instance->factorizations_logged = instance->model.simulation()->stepper().factorizations();
         instance->log(fmi2OK, LogCategory::events, "initialized");
+        log_warnings(instance, "fmi2ExitInitializationMode", *instance->model.simulation());
         return fmi2OK;
     });
 }

@@ -26,7 +26,9 @@ Instance::Instance(std::string n, const fmi2CallbackFunctions* cb, bool on)
 void Instance::log(fmi2Status status, LogCategory category, const std::string& message) const {
     if (!callbacks.logger) return;
     const auto index = static_cast<size_t>(category);
-    const bool always = status == fmi2Error || status == fmi2Fatal || status == fmi2Discard;
+    // Errors and warnings reach the user whatever the logging settings: a warning nobody sees
+    // would be a silent one.
+    const bool always = status != fmi2OK;
     if (!always && !(logging_on && category_on[index])) return;
     // The message goes through "%s": the host formats the logger's message printf-style.
     callbacks.logger(callbacks.componentEnvironment, name.c_str(), status,

@@ -23,6 +23,7 @@ struct Values {
     int initial_state;        // InitialState
     double top_mass, initial_velocity_x, initial_velocity_y;
     double static_friction_ratio;
+    double max_energy, max_energy_ratio;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;  // 0: no edge history
@@ -46,7 +47,6 @@ struct Variable {
     const char* description;
     double start;      // for parameters and inputs (String variables start empty)
     double min, max;   // inclusive limits written to the XML; NaN for none
-    bool min_exclusive;  // the value must be > min (not expressible in the XML)
     double& (*real)(Values&);  // exactly one of real / integer / string is set, by type
     int& (*integer)(Values&);
     std::string& (*string)(Values&) = nullptr;

@@ -19,7 +19,7 @@ def test_committed_model_description_is_the_generated_one(unzipped):
     generated = (pathlib.Path(unzipped) / "modelDescription.xml").read_text()
     committed = (ROOT / "modelDescription" / "modelDescription.xml").read_text()
     assert generated == committed, (
-        "modelDescription/modelDescription.xml is stale: copy build/fmu/modelDescription.xml")
+        "modelDescription/modelDescription.xml is stale: copy build/fmu/ContactBody/modelDescription.xml")
 
 
 def test_variables_follow_spec(model_description):

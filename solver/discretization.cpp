@@ -53,8 +53,13 @@ void check_parameters(const SceneParameters& p) {
     require_positive("mu", p.mu);
     if (!(std::isfinite(p.lambda) && p.lambda + p.mu > 0))
         reject("lambda", "finite with lambda + mu > 0", p.lambda);
-    if (!(std::isfinite(p.friction_coefficient) && p.friction_coefficient >= 0))
-        reject("friction_coefficient", "finite and >= 0", p.friction_coefficient);
+    if (!(p.friction_coefficient >= 0 && p.friction_coefficient <= max_friction_coefficient))
+        reject("friction_coefficient", "in [0, 100] (a hundred means a bond, not friction)",
+               p.friction_coefficient);
+    if (!(std::isfinite(p.max_energy) && p.max_energy >= 0))
+        reject("max_energy", "finite and >= 0 (0: no limit)", p.max_energy);
+    if (!(std::isfinite(p.max_energy_ratio) && p.max_energy_ratio >= 0))
+        reject("max_energy_ratio", "finite and >= 0 (0: no limit)", p.max_energy_ratio);
     if (!(p.static_friction_ratio >= 1 && p.static_friction_ratio <= max_static_friction_ratio))
         reject("static_friction_ratio", "in [1, 10]", p.static_friction_ratio);
     const int variant = static_cast<int>(p.mass_matrix);

@@ -51,6 +51,8 @@ struct SceneParameters {
     // Initial displacement: the paper's linear profile, or the static equilibrium under the
     // initial top displacement with the foundation at rest (displacement control only).
     bool static_initial_state = false;
+    // The blow-up guard (J/m, and a multiple of E(0) + the work put in); 0 turns each off.
+    double max_energy = 0, max_energy_ratio = 1e6;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 };
 
@@ -60,6 +62,10 @@ constexpr long max_nodes = 4'000'000;
 // Measured static/kinetic ratios of dry friction stay below 3; larger ones only make the
 // contact step stiffer (and F x ratio must stay finite).
 constexpr double max_static_friction_ratio = 10;
+// Measured dry friction coefficients stay below about 3 (clean metals in vacuum excepted); a
+// hundred means a bond, not friction, and only stiffens the contact step.
+constexpr double max_friction_coefficient = 100;
+
 
 // Throws std::invalid_argument naming the first offending parameter (the FMU's variable names).
 void check_parameters(const SceneParameters& p);

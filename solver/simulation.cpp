@@ -1,5 +1,7 @@
 #include "simulation.hpp"
 
+#include "scheme_warnings.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -40,6 +42,7 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
     edge_.state.setZero(nc);
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
+    if (std::string why = scheme_warning(params); !why.empty()) warnings_.push_back(std::move(why));
 }
 
 // A quasi-static load path: the top displacement goes from 0 to `top` in 10 substeps so long
@@ -205,6 +208,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         update_edge(n);
         energies_current_ = false;
         check_finite(observables());  // no NaN under fmi2OK: every output, every step
+        check_plausible();
     } catch (...) {
         state_ = saved_;
         works_ = saved_works;
@@ -254,6 +258,70 @@ void Simulation::check_finite(const Observables& o) const {
         msg << "output " << name << " = " << value << " at t = " << state_.time
             << ": the solution grows without bound" << growth_advice();
         throw NumericalFailure(msg.str());
+    }
+}
+
+void Simulation::check_plausible() {
+    const SceneParameters& p = stepper_->parameters();
+    const Discretization& d = stepper_->discretization();
+    const double energy = observables().energy;
+    const Works& w = works_;
+    // E(0) from the balance (to its round-off), so that a restored state needs nothing more.
+    const double initial = energy - (w.clamp + w.normal_contact + w.friction - w.damping);
+    const double put_in = initial + std::abs(w.clamp) + std::abs(w.foundation);
+    const bool over_ratio = p.max_energy_ratio > 0 && energy > 0 && energy > p.max_energy_ratio * put_in;
+    if (over_ratio || (p.max_energy > 0 && energy > p.max_energy)) {
+        std::ostringstream msg;
+        msg << "energy E = " << energy << " J/m at t = " << state_.time << " exceeds ";
+        if (over_ratio)
+            msg << "max_energy_ratio x (E(0) + work put in) = " << p.max_energy_ratio << " x "
+                << put_in << " J/m";
+        else
+            msg << "max_energy = " << p.max_energy << " J/m";
+        msg << " (E(0) = " << initial << ", clamp_work = " << w.clamp << ", foundation_work = "
+            << w.foundation << ", normal_contact_work = " << w.normal_contact
+            << ", friction_work = " << w.friction << ", damping_work = " << w.damping
+            << " J/m): the solution grows without bound";
+        // The likely cause: what the run itself shows (the contact creating energy), else the
+        // measured map's region.
+        if (w.normal_contact > contact_work_warning * put_in)
+            msg << "; likely cause: the contact created normal_contact_work = " << w.normal_contact
+                << " J/m of it (the midpoint contact of mass_matrix = "
+                << static_cast<int>(p.mass_matrix) << ")";
+        else if (const std::string why = scheme_warning(p); !why.empty())
+            msg << "; likely cause: " << why;
+        msg << growth_advice();
+        throw NumericalFailure(msg.str());
+    }
+    // The top edge's travel: below the foundation the body would be compressed to nothing
+    // (nothing sensible follows); beyond the body's height either way, a warning.
+    const double top = state_.u[d.top_y_dof()];
+    if (!(top > -(p.height + p.initial_gap))) {
+        std::ostringstream msg;
+        msg << "at t = " << state_.time << " the top edge is at top_position = " << top
+            << " m, at or below the foundation (the body is " << p.height << " m high, "
+            << p.initial_gap << " m above it): the body would be compressed to nothing, where "
+            << "linear elasticity means nothing; check top_displacement (or top_force) and its "
+            << "coupling";
+        throw NumericalFailure(msg.str());
+    }
+    if (std::abs(top) > p.height && !travel_warned_) {
+        travel_warned_ = true;
+        std::ostringstream msg;
+        msg << "at t = " << state_.time << " the top edge has moved by top_position = " << top
+            << " m, more than the body's height " << p.height << " m: check top_displacement "
+            << "(or top_force) and its coupling";
+        warnings_.push_back(msg.str());
+    }
+    if (w.normal_contact > contact_work_warning * put_in && !contact_work_warned_) {
+        contact_work_warned_ = true;
+        std::ostringstream msg;
+        msg << "at t = " << state_.time << " the contact has created normal_contact_work = "
+            << w.normal_contact << " J/m, more than " << contact_work_warning
+            << " of E(0) + the work put in (" << put_in << " J/m): energy the scheme makes, not "
+            << "physics. mass_matrix = 4 (redistributed_implicit_contact) cannot create it";
+        if (p.friction_coefficient > 0) msg << "; with friction, also see damping_stiffness";
+        warnings_.push_back(msg.str());
     }
 }
 
@@ -342,11 +410,13 @@ std::string Simulation::growth_advice() const {
         msg << " with friction (F = " << p.friction_coefficient << ") steady sliding is "
             << "unstable unless damped: set damping_stiffness (4e-6 s stabilizes F <= 0.3 on "
                "the paper's scene);";
-    if (p.lambda >= 5 * p.mu && (p.mass_matrix == MassVariant::redistributed_normal ||
-                                 p.mass_matrix == MassVariant::redistributed_both ||
-                                 p.mass_matrix == MassVariant::standard))
-        msg << " with lambda/mu = " << p.lambda / p.mu << " >= 5 the midpoint contact gains "
-            << "energy: mass_matrix = 4 (redistributed_implicit_contact) cannot;";
+    const bool midpoint_contact = p.mass_matrix == MassVariant::redistributed_normal ||
+                                  p.mass_matrix == MassVariant::redistributed_both ||
+                                  p.mass_matrix == MassVariant::standard;
+    if (midpoint_contact && (p.lambda >= 5 * p.mu || works_.normal_contact > 0))
+        msg << " the midpoint contact gains energy (lambda/mu = " << p.lambda / p.mu
+            << "; normal_contact_work = " << works_.normal_contact << " J/m): mass_matrix = 4 "
+            << "(redistributed_implicit_contact) cannot;";
     msg << " or reduce internal_step (now " << p.internal_step << " s)";
     return msg.str();
 }

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 #include <utility>
 
 #include "stepper.hpp"
@@ -65,6 +67,10 @@ struct StepStatistics {
     int gauss_seidel_sweeps = 0;     // of the contact solver's fallback, summed
 };
 
+// The share of E(0) + the work put in that the contact may create before a warning: sound
+// scenes stay below 5e-4 (recommended settings 4e-5), unsound ones pass 0.05 (docs/contract.md).
+constexpr double contact_work_warning = 0.01;
+
 class NumericalFailure : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
@@ -107,6 +113,9 @@ public:
     const StepStatistics& statistics() const { return statistics_; }
     // The bottom edge after the last step (before the first: the initial static reactions).
     const EdgeSnapshot& edge() const { return edge_; }
+    // Warnings since the last call (each kind once per run): a scene in a measured unstable
+    // region (at construction), the contact creating energy, the top moved beyond the height.
+    std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
 
 private:
     Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
@@ -120,6 +129,9 @@ private:
     [[noreturn]] void fail_contact(const ContactSolveError& e, double s0, double dt,
                                    const StepSums& sums) const;
     void check_finite(const Observables& o) const;  // throws NumericalFailure
+    // After a step: the blow-up guard and a top below the foundation throw NumericalFailure;
+    // the contact's created energy and a top moved beyond the height warn.
+    void check_plausible();
     std::string growth_advice() const;              // what to change when E runs away
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state (uses product_)
@@ -138,6 +150,8 @@ private:
     EdgeSnapshot edge_;
     void update_edge(int substeps);
     double nominal_substep_ = 0;
+    std::vector<std::string> warnings_;
+    bool contact_work_warned_ = false, travel_warned_ = false;
 };
 
 }  // namespace contactbody

@@ -1,0 +1,27 @@
+// What the project has measured about where the scheme is unstable, as advice at
+// initialization (docs/contract.md, "Warnings"): the maps are generated from
+// examples/results (cmake/stability_map.py), so the FMU warns exactly where they say.
+#pragma once
+
+#include <string>
+
+#include "discretization.hpp"
+
+namespace contactbody {
+
+// One message naming the settings to change, or "" where the measured maps see no growth:
+// - with friction: steady sliding is unstable below the smallest stabilizing damping_stiffness
+//   of the damped stability map (examples/damped_stability.py; interpolated linearly in F
+//   between measured rows of the nearest measured mesh), and for every measured one from
+//   F = 0.8 on;
+// - without friction, variants 0-2: the frictionless map's max E / E(0) over 20 ms above
+//   frictionless_growth_limit (examples/frictionless_stability.py).
+// The maps are measured on the paper's square body (lambda/mu = 2 for the damped one); other
+// bodies are placed on them by the dimensionless numbers that decide the scheme: cells across
+// the height, lambda/mu, the Courant number c_p dt / h, and beta in units of H / c_p.
+std::string scheme_warning(const SceneParameters& p);
+
+// "Gains energy": more than 10 % in 20 ms without friction and with the top held.
+constexpr double frictionless_growth_limit = 1.1;
+
+}  // namespace contactbody

@@ -137,3 +137,16 @@ def test_top_travel_beyond_the_height_warns_and_below_the_foundation_fails(
         assert "compressed to nothing" in inst.text()
     finally:
         inst.close()
+
+
+@pytest.mark.parametrize("variant, ratio, courant", [(1, 100, 0.61), (2, 16.7, 47)])
+def test_the_sweeps_frictionless_findings_are_warned_about(model_description, unzipped, vr,
+                                                          variant, ratio, courant):
+    """Issue 23's sweep: variant 1 gained below Courant 1 (lambda/mu = 100, Courant 0.61), and
+    redistributed_both gained without friction (lambda/mu = 16.7, Courant 47)."""
+    mu, rho, h = 150e6, 1000.0, 0.005
+    dt = courant * h / np.sqrt((ratio + 2) * mu / rho)
+    warnings = run(model_description, unzipped, vr,
+                   {**FRICTIONLESS, "lambda": ratio * mu, "internal_step": dt},
+                   {"mass_matrix": variant})
+    assert len(warnings) == 1 and f"mass_matrix = {variant} gains energy" in warnings[0]

@@ -109,6 +109,7 @@ def main():
                               "--directory", str(ref_dir)],
                              capture_output=True, text=True, check=True)
         wall_process = time.perf_counter() - start
+        reference_wall = json.loads(out.stdout.strip().splitlines()[-1])["wall"]  # after the log
         peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
         rows = []
         reference = reference_fields(ref_dir)
@@ -121,10 +122,10 @@ def main():
             print(f"F = {friction:g}  h = {h * 100:g} cm  dt = {dt:g}: max L2 = {l2:.3e} m^2, "
                   f"max H1 = {h1:.3e} m, run {wall:.2f} s", flush=True)
         report[f"{friction:g}"] = {
-            "reference": {"wall_simulate": json.loads(out.stdout)["wall"],
+            "reference": {"wall_simulate": reference_wall,
                           "wall_process": wall_process, "peak_rss_mb_children": peak_mb},
             "rows": rows}
-        print(f"F = {friction:g}: reference run {json.loads(out.stdout)['wall']:.1f} s "
+        print(f"F = {friction:g}: reference run {reference_wall:.1f} s "
               f"(process {wall_process:.1f} s), peak RSS of the runs so far {peak_mb:.0f} MB",
               flush=True)
         if not args.keep_fields:

@@ -198,15 +198,17 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // has no term of the size of u^k but the force A u^k (taken without translations).
     // Clamped dofs at the midpoint: u_x = 0, u_y = mean top displacement.
     const double top_half = 0.5 * (load.top_start + load.top_end);
+    bool clamp_moves = false;
     for (Eigen::Index k = 0; k < clamped_half_.size(); ++k) {
         const int dof = d.clamped_dofs[static_cast<size_t>(k)];
         clamped_half_[k] = (dof % 2 == 1 ? top_half : 0.0) - s.u[dof];
+        clamp_moves = clamp_moves || clamped_half_[k] != 0;
     }
 
     d.remove_translation(s.u, relative_);
     rhs_.noalias() = c2 * (d.M_free_rows * s.v);
     rhs_.noalias() -= d.A_free_rows * relative_;
-    rhs_.noalias() -= f.K_free_clamped * clamped_half_;
+    if (clamp_moves) rhs_.noalias() -= f.K_free_clamped * clamped_half_;  // else 0
     if (d.plate_index >= 0) {  // the plate's own inertia and the force pressing it down
         rhs_[d.plate_index] += d.plate_mass * c2 * s.v[d.top_y_dof()] - load.top_force;
     }
@@ -252,7 +254,6 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
 
     w_.noalias() = d.expand * w_free_;  // (the plate's w on every top y dof)
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) w_[d.clamped_dofs[k]] = clamped_half_[k];
-    relative_ += w_;  // u^{k+1/2} without the translation of node 0
     if (params_.damped()) {
         du_ = 2 * w_;  // u^{k+1} - u^k on all dofs
         C_du_.noalias() = d.C * du_;
@@ -268,7 +269,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         for (RowMajorSparseMatrix::InnerIterator it(d.M_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
             r += it.value() * (c1 * w_[it.col()] - c2 * s.v[it.col()]);
         for (RowMajorSparseMatrix::InnerIterator it(d.A_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
-            r += it.value() * relative_[it.col()];
+            r += it.value() * (relative_[it.col()] + w_[it.col()]);  // u^{k+1/2} - t
         if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
         (dof % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
         if (d.free_index[dof] < 0) report.work.clamp += r * 2 * w_[dof];

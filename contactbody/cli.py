@@ -5,6 +5,8 @@
       --set damping_stiffness=4e-6 --grid friction_coefficient=0.1,0.3 --out DIR
   contactbody-study plot DIR --heatmap foundation_velocity friction_coefficient apparent_friction_ratio
   contactbody-study plot DIR --lines foundation_velocity friction_power --hue friction_coefficient
+  contactbody-study plot DIR --heatmap ... --where damping_stiffness=4e-6   (or --facet NAME)
+  contactbody-study series DIR energy,friction_force --where friction_coefficient=0.3
 """
 from __future__ import annotations
 
@@ -33,8 +35,25 @@ def _assignments(items, split):
 
 
 def main(argv=None):
+    """Runs the command; a user's mistake (a study file, a name, a value, a scheduler that
+    cannot be reached) ends in one line on stderr and exit status 2, without a traceback
+    unless --debug."""
+    argv = sys.argv[1:] if argv is None else list(argv)
+    debug = "--debug" in argv
+    try:
+        return _main([a for a in argv if a != "--debug"])
+    except Exception as e:  # noqa: BLE001 (sorted below: a mistake, or a bug to show)
+        from .study import StudyError
+        if debug or not isinstance(e, (StudyError, OSError)):
+            raise
+        print(f"contactbody-study: error: {e}", file=sys.stderr)
+        return 2
+
+
+def _main(argv):
     parser = argparse.ArgumentParser(prog="contactbody-study", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+                                     formatter_class=argparse.RawDescriptionHelpFormatter,
+                                     epilog="--debug (anywhere): show the traceback of an error")
     sub = parser.add_subparsers(dest="command", required=True)
     run = sub.add_parser("run", help="run the points not yet in DIR's table")
     run.add_argument("study", nargs="?", help="study file (TOML); or give --stop-time etc.")
@@ -58,7 +77,16 @@ def main(argv=None):
     plot.add_argument("--heatmap", nargs=3, metavar=("X", "Y", "VALUE"))
     plot.add_argument("--lines", nargs=2, metavar=("X", "VALUE"))
     plot.add_argument("--hue", help="one line per value of this column (--lines)")
+    plot.add_argument("--facet", help="one heat map panel per value of this column")
+    plot.add_argument("--where", action="append", metavar="NAME=VALUE",
+                      help="keep the rows with this value (fixes a parameter the plot does not show)")
     plot.add_argument("--output", help="PNG path (default: DIR/<value>_<x>[_<y>].png)")
+    series = sub.add_parser("series", help="plot outputs' time series of chosen points")
+    series.add_argument("directory")
+    series.add_argument("outputs", help="outputs kept by the study's `series`, comma separated")
+    series.add_argument("--where", action="append", metavar="NAME=VALUE",
+                        help="keep the points with this value (repeatable)")
+    series.add_argument("--output", help="PNG path (default: DIR/series_<outputs>.png)")
     args = parser.parse_args(argv)
 
     if args.command == "run":
@@ -79,26 +107,41 @@ def main(argv=None):
         study.grid.update(_assignments(args.grid, split=True))
         if args.series:
             study.series = args.series.split(",")
-        df = run_study(study, args.out, fmu=args.fmu, workers=args.workers,
-                       scheduler=args.scheduler, retry_failed=args.retry_failed,
-                       progress=not args.no_progress)
+        try:
+            df = run_study(study, args.out, fmu=args.fmu, workers=args.workers,
+                           scheduler=args.scheduler, retry_failed=args.retry_failed,
+                           progress=not args.no_progress)
+        except OSError as e:
+            if args.scheduler:
+                raise OSError(f"cannot reach the dask scheduler {args.scheduler} ({e})") from e
+            raise
         counts = df["status"].value_counts().to_dict()
         print(f"{len(df)} points in {pathlib.Path(args.out) / 'results.parquet'} "
               f"({df.attrs['ran']} run now): {counts}")
+        from .study import parameter_columns
+        for _, row in df[df["status"] == "failed"].iterrows():
+            values = ", ".join(f"{c} = {row[c]}" for c in parameter_columns(df))
+            print(f"  failed: {row['point_id']} ({values}): {row['message']}")
         return 0 if counts.get("failed", 0) == 0 else 1
 
     import pandas as pd
     from . import plots
     directory = pathlib.Path(args.directory)
     df = pd.read_parquet(directory / "results.parquet")
-    if args.heatmap:
+    df = plots.select(df, _assignments(args.where, split=False))
+    units = plots.units_of(directory)
+    if args.command == "series":
+        outputs = args.outputs.split(",")
+        path = args.output or directory / f"series_{'_'.join(outputs)}.png"
+        plots.series(directory, df, outputs, path, units=units)
+    elif args.heatmap:
         x, y, value = args.heatmap
         path = args.output or directory / f"{value}_{x}_{y}.png"
-        plots.heatmap(df, x, y, value, path)
+        plots.heatmap(df, x, y, value, path, facet=args.facet, units=units)
     elif args.lines:
         x, value = args.lines
         path = args.output or directory / f"{value}_{x}.png"
-        plots.lines(df, x, value, path, hue=args.hue)
+        plots.lines(df, x, value, path, hue=args.hue, units=units)
     else:
         parser.error("give --heatmap X Y VALUE or --lines X VALUE")
     print(path)

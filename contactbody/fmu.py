@@ -9,7 +9,9 @@ FMU (fmpy 0.3.32 allocates derivative slots for exactly 9 inputs).
 from __future__ import annotations
 
 import ctypes
+import difflib
 import itertools
+import math
 import os
 import pathlib
 import shutil
@@ -153,7 +155,9 @@ class Interface:
         try:
             return self.variables[name]
         except KeyError:
-            raise KeyError(f"the FMU has no variable {name!r}") from None
+            close = difflib.get_close_matches(name, self.variables, n=3)
+            hint = f"; did you mean {' or '.join(close)}?" if close else ""
+            raise ValueError(f"the FMU has no variable {name!r}{hint}") from None
 
     def coerce(self, name, value):
         """A value as the FMU takes it: enumeration names (mass_matrix = 'redistributed_both')
@@ -162,19 +166,38 @@ class Interface:
         if v.causality not in ("parameter", "input"):
             raise ValueError(f"{name} is an {v.causality}, not a parameter or an input")
         if v.type == "Enumeration":
+            items = self.enumerations[v.declaredType.name]
             if isinstance(value, str):
-                items = self.enumerations[v.declaredType.name]
                 if value not in items:
-                    raise ValueError(f"{name} = {value!r}: not one of {sorted(items)}")
+                    close = difflib.get_close_matches(value, items, n=1)
+                    hint = f"; did you mean {close[0]!r}?" if close else ""
+                    raise ValueError(f"{name} = {value!r}: not one of {sorted(items)}{hint}")
                 return items[value]
+            if float(value) != int(value) or int(value) not in items.values():
+                raise ValueError(f"{name} = {value!r}: not one of {sorted(items.values())} "
+                                 f"({', '.join(f'{k} = {i}' for k, i in items.items())})")
             return int(value)
         if v.type == "Integer":
             if isinstance(value, str) or float(value) != int(value):
                 raise ValueError(f"{name} = {value!r}: not an integer")
-            return int(value)
+            return self._in_range(v, int(value))
         if v.type == "String":
             return str(value)
-        return float(value)
+        if isinstance(value, str):
+            raise ValueError(f"{name} = {value!r}: not a number")
+        return self._in_range(v, float(value))
+
+    @staticmethod
+    def _in_range(v, value):
+        """The modelDescription's limits are exactly what the FMU refuses (tested)."""
+        if not math.isfinite(value):
+            raise ValueError(f"{v.name} = {value!r}: must be finite")
+        low = None if v.min is None else float(v.min)
+        high = None if v.max is None else float(v.max)
+        if (low is not None and value < low) or (high is not None and value > high):
+            unit = f" {v.unit}" if getattr(v, "unit", None) else ""
+            raise ValueError(f"{v.name} = {value!r}{unit}: out of range [{low}, {high}]")
+        return value
 
 
 class Model(Interface):

@@ -37,6 +37,7 @@ import numpy as np
 from distributed.diagnostics.plugin import WorkerPlugin
 
 from .fmu import Interface, Model, Profile, SimulationFailed, find_fmu
+from .material import DERIVED, to_fmu
 
 # Outputs every point reads (the metrics are computed from them).
 OUTPUTS = ["energy", "clamp_work", "normal_contact_work", "friction_work", "damping_work",
@@ -63,7 +64,16 @@ METRICS = {
     "iterations_per_substep": "contact_iterations / substeps",
     "gauss_seidel_sweeps": "sweeps of the contact solver's fallback",
 }
+METRIC_UNITS = {"energy_final": "J/m", "energy_max": "J/m", "balance_error_max": "J/m",
+                "normal_force_mean": "N/m", "friction_force_mean": "N/m",
+                "friction_power": "W/m", "damping_power": "W/m", "max_penetration": "m",
+                "wall_time": "s", "dostep_time": "s"}
 TIMES = ["wall_time", "dostep_time"]  # s: the whole point on its worker; its doSteps only
+
+
+class StudyError(ValueError):
+    """A mistake in a study's settings, found before anything runs; the message names the
+    file (when there is one) and the key."""
 
 
 def _canonical(value):
@@ -116,8 +126,83 @@ class Study:
 
     @classmethod
     def from_toml(cls, path) -> "Study":
-        with open(path, "rb") as f:
-            return cls.from_dict(tomllib.load(f))
+        try:
+            with open(path, "rb") as f:
+                d = tomllib.load(f)
+        except tomllib.TOMLDecodeError as e:
+            raise StudyError(f"{path}: not a TOML file ({e})") from None
+        except OSError as e:
+            raise StudyError(f"{path}: cannot be read ({e.strerror})") from None
+        try:
+            study = cls.from_dict(d)
+        except KeyError as e:
+            raise StudyError(f"{path}: missing key {e.args[0]!r}") from None
+        except (ValueError, TypeError) as e:
+            raise StudyError(f"{path}: {e}") from None
+        study.source = str(path)
+        return study
+
+    source: str = ""  # the study file, for messages
+
+    def check(self, interface: Interface | None = None):
+        """Study-level checks, before any cluster starts: the times, and with the FMU's
+        interface every name and value against its modelDescription. Raises StudyError
+        naming the file and the key."""
+        where = f"{self.source}: " if self.source else ""
+
+        def fail(key, why):
+            raise StudyError(f"{where}{key}: {why}")
+
+        for key in ("stop_time", "output_interval", "average_from"):
+            value = getattr(self, key)
+            if not (isinstance(value, (int, float)) and math.isfinite(value)):
+                fail(key, f"must be a finite number (got {value!r})")
+        if not self.stop_time > 0:
+            fail("stop_time", f"must be > 0 s (got {self.stop_time!r})")
+        if not self.output_interval > 0:
+            fail("output_interval", f"must be > 0 s (got {self.output_interval!r})")
+        steps = self.stop_time / self.output_interval
+        if abs(steps - round(steps)) > 1e-9 * max(1.0, steps) or round(steps) < 1:
+            fail("output_interval", f"{self.output_interval!r} s must divide stop_time "
+                 f"{self.stop_time!r} s into whole steps (it gives {steps:.6g})")
+        if not 0 <= self.average_from <= self.stop_time - self.output_interval:
+            fail("average_from", f"{self.average_from!r} s must be in [0, stop_time - "
+                 f"output_interval] = [0, {self.stop_time - self.output_interval:g}] s: the "
+                 "averaging window needs at least one output interval")
+        if interface is None:
+            return
+        places = [(f"fixed.{k}", k, v) for k, v in self.fixed.items()]
+        places += [(f"grid.{k}", k, v) for k, values in self.grid.items() for v in values]
+        places += [(f"points[{i}].{k}", k, v) for i, p in enumerate(self.points)
+                   for k, v in p.items()]
+        derived = {name for pair in DERIVED for name in pair}
+        for key, name, value in places:
+            if name in derived:
+                if not isinstance(value, (int, float)):
+                    fail(key, f"{name} must be a number (got {value!r})")
+                continue  # checked below, as the FMU parameters it defines
+            try:
+                if isinstance(value, Profile):
+                    if interface.variable(name).causality != "input":
+                        raise ValueError(f"{name} is not an input: it cannot follow a profile")
+                else:
+                    interface.coerce(name, value)
+            except ValueError as e:
+                fail(key, str(e))
+        points = self.expand()
+        for i, point in enumerate(points):  # what each point gives the FMU, derived included
+            try:
+                for name, value in to_fmu(point).items():
+                    if not isinstance(value, Profile):
+                        interface.coerce(name, value)
+            except ValueError as e:
+                fail(f"point {i + 1} of {len(points)} ({point})", str(e))
+        for name in self.series:
+            try:
+                if interface.variable(name).causality != "output":
+                    raise ValueError(f"{name} is not an output")
+            except ValueError as e:
+                fail("series", str(e))
 
     def expand(self) -> list[dict]:
         """The points, each with the fixed values under its own: the grid's product and the
@@ -132,6 +217,13 @@ class Study:
     def settings(self) -> dict:
         return {"stop_time": self.stop_time, "output_interval": self.output_interval,
                 "average_from": self.average_from}
+
+    def resolved(self) -> dict:
+        """The whole study as it ran (profiles as their [t, v] lists), for study.json."""
+        values = lambda d: {k: _canonical(v) for k, v in d.items()}  # noqa: E731
+        return {**self.settings(), "series": list(self.series), "fixed": values(self.fixed),
+                "grid": {k: [_canonical(v) for v in vs] for k, vs in self.grid.items()},
+                "points": [values(p) for p in self.points]}
 
     def point_id(self, point: dict) -> str:
         """Identity of a point in this study's table: its values and the run's settings."""
@@ -187,6 +279,11 @@ def run_point(model: Model, point: dict, study: Study):
     tic = time.perf_counter()
     values = {k: v for k, v in point.items() if not isinstance(v, Profile)}
     inputs = {k: v for k, v in point.items() if isinstance(v, Profile)}
+    try:
+        values = to_fmu(values)  # youngs_modulus, poisson_ratio, loss_factor, ...
+    except ValueError as e:
+        return ({"status": "failed", "message": str(e), **failed_metrics(),
+                 "wall_time": math.nan, "dostep_time": math.nan}, None)
     outputs = list(dict.fromkeys(OUTPUTS + list(study.series)))
     series, dostep = None, math.nan
     try:
@@ -313,9 +410,44 @@ def _key(pid: str) -> str:
     return f"point-{pid}-{time.monotonic_ns()}"
 
 
+def parameter_columns(df) -> list[str]:
+    """The columns of a study table that hold the points' values."""
+    other = {"point_id", "status", "message", "stop_time", "output_interval", "average_from",
+             *METRICS, *TIMES}
+    return [c for c in df.columns if c not in other]
+
+
 def point_of_key(key: str) -> str:
     """The point_id of a task key made by run_study (as dask's task stream shows it)."""
     return key.split("-")[1]
+
+
+def keep_settings(out, study: Study, units: dict):
+    """out/study.json holds the settings every row of out's table was run with (and the
+    study as resolved); a study with other settings is refused, naming what changed. New
+    points with the same settings extend the table."""
+    path = pathlib.Path(out) / "study.json"
+    mine = {**study.settings(), "series": list(study.series)}
+    if path.exists():
+        theirs = json.loads(path.read_text())
+        changed = [f"{k} = {theirs.get(k)!r} there, {v!r} here" for k, v in mine.items()
+                   if theirs.get(k) != v]
+        if changed:
+            raise StudyError(f"{out} holds a study run with other settings ({'; '.join(changed)}"
+                             f"): give a new --out, or the same settings to extend it")
+        resolved = theirs
+        for key in ("fixed", "grid"):  # what this run adds to the record of what ran
+            resolved.setdefault(key, {}).update(study.resolved()[key])
+        resolved.setdefault("points", []).extend(
+            p for p in study.resolved()["points"] if p not in resolved["points"])
+    else:
+        resolved = study.resolved()
+    resolved["units"] = {**METRIC_UNITS, **units, "stop_time": "s", "output_interval": "s",
+                         "average_from": "s"}
+    pathlib.Path(out).mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(".json.tmp")
+    tmp.write_text(json.dumps(resolved, indent=1) + "\n")
+    os.replace(tmp, path)
 
 
 def run_study(study: Study, out, fmu=None, workers: int | None = None,
@@ -333,20 +465,15 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
     data = fmu.read_bytes()
     digest = hashlib.sha256(data).hexdigest()[:16]
     interface = Interface(fmpy.read_model_description(str(fmu)))
+    study.check(interface)  # names, values and times, before anything runs
     points = study.expand()
-    for point in points:  # names and types are checked before anything runs
-        for name, value in point.items():
-            if isinstance(value, Profile):
-                if interface.variable(name).causality != "input":
-                    raise ValueError(f"{name} is not an input: it cannot follow a profile")
-            else:
-                interface.coerce(name, value)
-    for name in study.series:
-        interface.variable(name)
     names = sorted({k for p in points for k in p})
-    columns = ["point_id", "status", "message"] + names + list(METRICS) + TIMES
+    columns = (["point_id", "status", "message"] + names + list(study.settings()) +
+               list(METRICS) + TIMES)
+    keep_settings(out, study, {v.name: v.unit for v in interface.variables.values()
+                               if getattr(v, "unit", None)})
     table = Table(out, columns)
-    previous = table.frame()
+    previous = table.write_parquet()  # in step with the journal (a killed run left it behind)
     done = set(previous["point_id"] if not retry_failed
                else previous.loc[previous["status"] == "ok", "point_id"])
     todo = {}
@@ -379,18 +506,25 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
                 except Exception as e:  # noqa: BLE001 (any failure is the point's record)
                     name = type(e).__name__
                     if name == "KilledWorker" and not second_death:
+                        log(f"point {pid}: its worker process died (with every point it "
+                            "held); it runs again alone after the others")
                         return False  # run again alone, after the others
+                    if name == "KilledWorker":
+                        log(f"point {pid}: its worker process died again, alone: recorded "
+                            "as failed")
                     why = ("its worker process died while running it, also alone"
                            if name == "KilledWorker" else "the task failed")
                     record = {"status": "failed", "message": f"{why} ({name}: {e})",
                               **failed_metrics(), "wall_time": math.nan,
                               "dostep_time": math.nan}
                 future.release()
-                record.update({"point_id": pid,
+                record.update({"point_id": pid, **study.settings(),
                                **{k: _canonical(v) for k, v in todo[pid].items()}})
                 if series is not None:
                     (table.directory / "series").mkdir(exist_ok=True)
-                    np.savez(table.directory / "series" / f"{pid}.npz", **series)
+                    # with the point's values, so that a series file stands alone
+                    np.savez(table.directory / "series" / f"{pid}.npz", **series,
+                             point=json.dumps({k: _canonical(v) for k, v in todo[pid].items()}))
                 table.append(record)
                 bar.update()
                 if time.monotonic() - last_parquet > 5:

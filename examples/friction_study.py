@@ -29,12 +29,13 @@ def main():
     df = run_study(study, table, workers=args.workers)
     args.figures.mkdir(parents=True, exist_ok=True)
     x, y = "foundation_velocity", "friction_coefficient"
+    units = plots.units_of(table)
     plots.heatmap(df, x, y, "apparent_friction_ratio", args.figures / "friction_study_ratio.png",
-                  title="apparent friction ratio <T>/<N> (last 10 ms)")
+                  title="apparent friction ratio <T>/<N> (last 10 ms)", units=units)
     plots.heatmap(df, x, y, "friction_power", args.figures / "friction_study_power.png",
-                  title="frictional power [W/m] (last 10 ms)", fmt="{:.3g}")
+                  title="frictional power (last 10 ms)", fmt="{:.3g}", units=units)
     plots.heatmap(df, x, y, "energy_max", args.figures / "friction_study_energy.png",
-                  title="largest energy E over 20 ms [J/m]", fmt="{:.3g}")
+                  title="largest energy E over 20 ms", fmt="{:.3g}", units=units)
     shutil.copy(table / "results.csv", args.figures / "friction_study.csv")
 
     ok = df[df["status"] == "ok"]

@@ -16,7 +16,7 @@ import pytest
 
 from conftest import FMU, ROOT, SANITIZED
 from contactbody.fmu import Model, Profile
-from contactbody.study import METRICS, Study, run_study, run_point
+from contactbody.study import METRICS, Study, StudyError, run_study, run_point
 
 pytestmark = pytest.mark.skipif(SANITIZED, reason="dask workers do not load the sanitized FMU")
 
@@ -113,22 +113,26 @@ def test_a_killed_study_resumes_without_running_a_point_twice(tmp_path):
 
 
 def test_failed_points_are_recorded_and_the_others_complete(tmp_path):
-    """An invalid parameter, a contact solve that fails (F = 20 with no refinement allowed)
-    and a worker process that dies: each is a row with its message; the others run."""
+    """A contact solve that fails (F = 20 with no refinement allowed) and a worker process
+    that dies: each is a row with its message; the others run. (A value the FMU refuses is
+    a mistake in the study, refused before anything runs: test_study_cli.py.)"""
     study = small_study()
-    study.points = [{"friction_coefficient": 0.3}, {"nx": 0},
+    study.points = [{"friction_coefficient": 0.3}, {"nx": 11},
                     {"friction_coefficient": 20.0, "mass_matrix": "redistributed_both",
                      "min_internal_step": 4e-6},
                     {"nx": 7}, {"friction_coefficient": 0.5}]
     sys.path.insert(0, str(ROOT / "python_tests"))
     import study_tasks
+    said = []
     df = run_study(study, tmp_path, fmu=FMU, workers=2, progress=False, dashboard=False,
-                   task=study_tasks.crash_on_nx_7)
+                   task=study_tasks.crash_on_nx_7, log=said.append)
+    # a worker's death is said on the console as it happens, not only seen in the table
+    assert any("worker process died" in m and "runs again alone" in m for m in said), said
+    assert any("died again, alone" in m for m in said), said
     by = {(r["nx"], r["friction_coefficient"]): r for _, r in df.iterrows()}
     assert len(df) == 5
     assert by[10, 0.3]["status"] == "ok" and by[10, 0.5]["status"] == "ok"
-    invalid = df[df["nx"] == 0].iloc[0]
-    assert invalid["status"] == "failed" and "nx = 0 is out of range" in invalid["message"]
+    assert df[df["nx"] == 11].iloc[0]["status"] == "ok"
     contact = by[10, 20.0]
     assert contact["status"] == "failed" and "contact solve failed" in contact["message"]
     assert math.isnan(contact["energy_final"])
@@ -138,7 +142,7 @@ def test_failed_points_are_recorded_and_the_others_complete(tmp_path):
     # the table says which to retry: with --retry-failed only those run again
     rerun = run_study(study, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False,
                       retry_failed=True, task=study_tasks.crash_on_nx_7)
-    assert rerun.attrs["ran"] == 3
+    assert rerun.attrs["ran"] == 2
 
 
 def test_profiles_and_enumeration_names(tmp_path):
@@ -195,3 +199,23 @@ def test_soak_2000_cycles_do_not_grow_memory(tmp_path, mode):
                          capture_output=True, text=True, timeout=600)
     growth = json.loads(out.stdout.strip().splitlines()[-1])["growth"]
     assert growth < 10e6
+
+
+def test_every_row_carries_its_settings_and_a_rerun_with_others_is_refused(tmp_path):
+    """Issue 24: the folder keeps the study's settings (study.json, as resolved); the same
+    settings with new points extend the table; other settings are refused, naming what
+    changed, before anything runs."""
+    first = small_study(friction_coefficient=[0.2])
+    df = run_study(first, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False)
+    for key, value in first.settings().items():
+        assert (df[key] == value).all(), key
+    saved = json.loads((tmp_path / "study.json").read_text())
+    assert saved["stop_time"] == 0.003 and saved["grid"] == {"friction_coefficient": [0.2]}
+    more = small_study(friction_coefficient=[0.2, 0.4])
+    df = run_study(more, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False)
+    assert df.attrs["ran"] == 1 and len(df) == 2
+    other = small_study(friction_coefficient=[0.2])
+    other.stop_time = 0.002
+    with pytest.raises(StudyError, match=r"stop_time = 0.003 there, 0.002 here.*new --out"):
+        run_study(other, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False)
+    assert len(pd.read_csv(tmp_path / "results.csv")) == 2  # nothing appended

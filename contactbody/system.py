@@ -24,6 +24,8 @@ import tempfile
 import zipfile
 from xml.sax.saxutils import quoteattr
 
+from fmpy import read_model_description
+
 from .fmu import ROOT
 from .master import System
 
@@ -98,7 +100,9 @@ def _connectors(system, component):
 def write_ssp(system: System, path, name="System", stop_time=0.01):
     """The system as an SSP 1.0 archive: SystemStructure.ssd, the FMUs in resources/, and
     the parameters in resources/parameters.ssv (bound to the system, names
-    "component.variable"; fmpy's simulate_ssp takes them as its parameter_set)."""
+    "component.variable"). fmpy 0.3.32's simulate_ssp reads the binding but does not apply
+    it (only its parameter_set argument), and ignores the DefaultExperiment (it runs 1 s in
+    100 steps unless told): simulate_ssp below passes both."""
     path = pathlib.Path(path)
     ssd = [f'<?xml version="1.0" encoding="UTF-8"?>',
            f'<ssd:SystemStructureDescription {_NS} version="1.0" name="{name}">',
@@ -112,9 +116,13 @@ def write_ssp(system: System, path, name="System", stop_time=0.01):
                    f'source="resources/{pathlib.Path(fmu_path).name}" '
                    'type="application/x-fmu-sharedlibrary">')
         ssd.append('        <ssd:Connectors>')
+        types = {v.name: v.type for v in read_model_description(str(fmu_path)).modelVariables}
         for variable, kind in _connectors(system, component).items():
+            # the connector's type is the variable's (SSP 1.0: Real, Integer, Boolean, String;
+            # an enumeration is passed as its integer)
+            ssc = {"Enumeration": "Integer"}.get(types[variable], types[variable])
             ssd.append(f'          <ssd:Connector name="{variable}" kind="{kind}">'
-                       '<ssc:Real/></ssd:Connector>')
+                       f'<ssc:{ssc}/></ssd:Connector>')
         ssd += ['        </ssd:Connectors>', '      </ssd:Component>']
     ssd += ['    </ssd:Elements>', '    <ssd:Connections>']
     for s, t in system.connections:
@@ -156,12 +164,12 @@ def simulate_ssp(path, stop_time, step_size):
 
 # --- container FMU ---------------------------------------------------------------------------
 
-def write_container(system: System, path, step_size, name="Container"):
+def write_container(system: System, path, step_size, name="Container", stop_time=0.01):
     """The system as one FMI 2.0 co-simulation FMU (fmpy.container_fmu), fixed internal step
     step_size. Its parameters are the system's (start values of container parameters mapped
     to the components'); its outputs are the recorded Real variables, named
-    component_variable."""
-    from fmpy import read_model_description
+    component_variable. Its DefaultExperiment runs stop_time at step_size, so that plain
+    fmpy.simulate_fmu(container) runs the documented scene."""
     from fmpy.container_fmu.cli import create_container_fmu
     from fmpy.container_fmu.config import Component, Configuration, Connection
     from fmpy.model_description import CoSimulation, DefaultExperiment, ModelDescription, \
@@ -208,7 +216,9 @@ def write_container(system: System, path, step_size, name="Container"):
         connections.append(Connection(sc, [float64(sv)], tc, [float64(tv)]))
     md = ModelDescription(fmiVersion="2.0", modelName=name,
                           instantiationToken="{5d0c6a52-1e7f-4b3a-9c2d-8f4e6b1a7c90}",
-                          defaultExperiment=DefaultExperiment(stepSize=repr(step_size)),
+                          defaultExperiment=DefaultExperiment(startTime="0",
+                                                              stopTime=repr(stop_time),
+                                                              stepSize=repr(step_size)),
                           coSimulation=CoSimulation(fixedInternalStepSize=step_size),
                           modelVariables=model_variables)
     outputs = [v for v in model_variables if v.causality == "output"]

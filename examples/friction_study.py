@@ -2,9 +2,10 @@
 largest energy over F x V, on dask (contactbody.study), from examples/friction_study.toml.
 
 Writes the table to OUT/friction_study/ (results.csv, results.parquet) and the heat maps and
-a copy of the table to FIGURES (default examples/results). Prints the measured facts.
+a copy of the table to FIGURES (default OUT; --refresh: examples/results, the committed
+copies). Prints the measured facts.
 
-    .venv/bin/python examples/friction_study.py [--out DIR] [--figures DIR] [--workers N]
+    .venv/bin/python examples/friction_study.py [--out DIR] [--figures DIR | --refresh] [--workers N]
 """
 import argparse
 import pathlib
@@ -21,9 +22,14 @@ HERE = pathlib.Path(__file__).resolve().parent
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=HERE / "output", type=pathlib.Path)
-    parser.add_argument("--figures", default=HERE / "results", type=pathlib.Path)
+    parser.add_argument("--figures", type=pathlib.Path,
+                        help="where the heat maps and the table's copy go (default: --out)")
+    parser.add_argument("--refresh", action="store_true",
+                        help="write them to examples/results, the committed copies")
     parser.add_argument("--workers", type=int)
     args = parser.parse_args()
+    if args.figures is None:  # a run leaves the checkout clean unless asked to refresh
+        args.figures = HERE / "results" if args.refresh else args.out
     study = Study.from_toml(HERE / "friction_study.toml")
     table = args.out / "friction_study"
     df = run_study(study, table, workers=args.workers)

@@ -161,3 +161,33 @@ def test_the_press_blows_up_explicitly_and_holds_strongly_coupled():
             assert np.mean(r["press.reaction_force"][late]) == pytest.approx(150, rel=0.02)
             ends.append(r["press.position"][-1])
         assert ends[0] == pytest.approx(ends[1], rel=1e-3)
+
+
+def test_the_container_runs_alone_in_plain_fmpy(tmp_path, belt):
+    """Issue 24, item 1: plain fmpy.simulate_fmu(container), with no argument but the file, in
+    a process that has only fmpy (no contactbody), runs the documented scene (its
+    DefaultExperiment: 10 ms at 1e-4 s) bit for bit as the master does."""
+    import subprocess
+    import sys
+    path = S.write_container(S.belt_system(), tmp_path / "c.fmu", 1e-4, stop_time=0.01)
+    code = ("import sys, numpy as np, fmpy; r = fmpy.simulate_fmu(sys.argv[1]); "
+            "np.save(sys.argv[2], np.stack([r['time'], r['belt_belt_velocity'], "
+            "r['body_energy']]))")
+    subprocess.run([sys.executable, "-c", code, str(path), str(tmp_path / "plain.npy")],
+                   check=True, capture_output=True, cwd=tmp_path)
+    plain = np.load(tmp_path / "plain.npy")
+    master = belt.run_fixed(0.01, 1e-4)
+    assert plain.shape[1] == len(master) and plain[0, -1] == pytest.approx(0.01)
+    assert np.array_equal(plain[1], master["belt.belt_velocity"])
+    assert np.array_equal(plain[2], master["body.energy"])
+
+
+def test_ssp_connectors_carry_the_variables_types(tmp_path):
+    import zipfile
+    system = S.belt_system()
+    system.record = list(system.record) + ["body.active_contact_nodes"]
+    with zipfile.ZipFile(S.write_ssp(system, tmp_path / "b.ssp", stop_time=0.03)) as z:
+        ssd = z.read("SystemStructure.ssd").decode()
+    assert ('<ssd:Connector name="active_contact_nodes" kind="output"><ssc:Integer/>' in ssd)
+    assert '<ssd:Connector name="friction_force" kind="output"><ssc:Real/>' in ssd
+    assert 'stopTime="0.03"' in ssd

@@ -8,7 +8,7 @@ Writes the .ssp and container FMUs to OUT, and to RESULTS: system.png (belt spee
 force, stick/slip of the bottom edge, press force), system.md and system.json (accuracy
 against cost; where the fixed step fails). Prints the numbers.
 
-    .venv/bin/python examples/system/system_models.py [--out DIR] [--results DIR]
+    .venv/bin/python examples/system/system_models.py [--out DIR] [--results DIR | --refresh]
 """
 import argparse
 import json
@@ -95,17 +95,23 @@ def press_study(m):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=pathlib.Path, default=HERE.parent / "output" / "system")
-    parser.add_argument("--results", type=pathlib.Path, default=HERE.parent / "results")
+    parser.add_argument("--results", type=pathlib.Path, default=None,
+                        help="where system.md, .json, .png go (default: the --out folder)")
+    parser.add_argument("--refresh", action="store_true",
+                        help="write them to examples/results, the committed copies")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
+    if args.results is None:  # a run leaves the checkout clean unless asked to refresh
+        args.results = HERE.parent / "results" if args.refresh else args.out
     args.results.mkdir(parents=True, exist_ok=True)
     belt, press = S.belt_system(), S.press_system()
 
     ssp = S.write_ssp(belt, args.out / "belt_and_body.ssp", "BeltAndBody", STOP)
-    S.write_ssp(press, args.out / "press_and_body.ssp", "PressAndBody", STOP)
-    container = S.write_container(belt, args.out / "belt_and_body_container.fmu", 1e-4)
+    S.write_ssp(press, args.out / "press_and_body.ssp", "PressAndBody", PRESS_STOP)
+    container = S.write_container(belt, args.out / "belt_and_body_container.fmu", 1e-4,
+                                  stop_time=STOP)
     via_ssp = S.simulate_ssp(ssp, STOP, 1e-4)
-    via_container = fmpy.simulate_fmu(str(container), stop_time=STOP, output_interval=1e-4)
+    via_container = fmpy.simulate_fmu(str(container))  # its DefaultExperiment: STOP at 1e-4 s
     with Master(belt) as m:
         # simulate_ssp starts the inputs at 0, the container at the sources' outputs at t0
         same_step = m.run_fixed(STOP, 1e-4, zero_inputs=True)

@@ -25,14 +25,15 @@ function(make_self_contained target)
 endfunction()
 
 add_library(ContactBody SHARED fmu_src/fmi2_functions.cpp fmu_src/instance.cpp fmu_src/model.cpp
-            fmu_src/variables.cpp fmu_src/fmu_state.cpp)
+            fmu_src/variables.cpp fmu_src/fmu_state.cpp fmu_src/resource_start_values.cpp)
 target_include_directories(ContactBody PRIVATE fmu_src ${FMI_HEADERS_DIR})
 target_link_libraries(ContactBody PRIVATE contactbody_solver)
 make_self_contained(ContactBody)
 
 foreach(companion IN LISTS COMPANIONS)
-  add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model})
-  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR})
+  add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model}
+              fmu_src/resource_start_values.cpp)
+  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR} fmu_src)
   target_compile_definitions(${companion} PRIVATE FMI2_FUNCTION_PREFIX=)
   make_self_contained(${companion})
   # fmi2Functions.h declares the entry points with default visibility (dllexport on Windows).

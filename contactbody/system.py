@@ -18,6 +18,7 @@ velocity) x width; they differ by the coupling error only.
 """
 from __future__ import annotations
 
+import io
 import pathlib
 import shutil
 import tempfile
@@ -142,9 +143,35 @@ def write_ssp(system: System, path, name="System", stop_time=0.01):
     with zipfile.ZipFile(path, "w") as z:
         z.writestr("SystemStructure.ssd", "\n".join(ssd))
         z.writestr("resources/parameters.ssv", "\n".join(ssv))
-        for fmu_path in system.components.values():
-            z.write(fmu_path, f"resources/{pathlib.Path(fmu_path).name}")
+        for component, fmu_path in system.components.items():
+            values = {k.split(".", 1)[1]: v for k, v in system.parameters.items()
+                      if k.split(".", 1)[0] == component}
+            z.writestr(f"resources/{pathlib.Path(fmu_path).name}", configured_copy(fmu_path, values))
     return path
+
+
+def configured_copy(fmu_path, values: dict) -> bytes:
+    """The FMU's archive with `values` as its start values: in resources/start_values.txt,
+    which the FMU reads at instantiation and returns to at fmi2Reset (fmu_src/
+    resource_start_values.hpp), and in its modelDescription's start attributes, so that an
+    importer gets them whether it applies start values (SSP tools, the ssv binding) or not
+    (fmpy 0.3.32's simulate_ssp)."""
+    import xml.etree.ElementTree as ET
+    out = io.BytesIO()
+    with zipfile.ZipFile(fmu_path) as src, zipfile.ZipFile(out, "w") as dst:
+        for info in src.infolist():
+            data = src.read(info)
+            if info.filename == "modelDescription.xml":
+                root = ET.fromstring(data)
+                for v in root.iter("ScalarVariable"):
+                    if v.get("name") in values:
+                        typed = next(iter(v))  # Real, Integer, Enumeration, String
+                        typed.set("start", repr(values[v.get("name")]))
+                data = ET.tostring(root, encoding="UTF-8", xml_declaration=True)
+            dst.writestr(info, data)
+        dst.writestr("resources/start_values.txt", "".join(
+            f"{name} = {value!r}\n" for name, value in values.items()))
+    return out.getvalue()
 
 
 def simulate_ssp(path, stop_time, step_size):

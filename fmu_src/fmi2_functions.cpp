@@ -8,6 +8,7 @@
 #include <new>
 
 #include "instance.hpp"
+#include "resource_start_values.hpp"
 
 using namespace contactbody;
 using namespace contactbody::fmu;
@@ -139,7 +140,7 @@ const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char* fmi2GetVersion(void) { return fmi2Version; }
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
-                              fmi2String /*fmuResourceLocation*/,
+                              fmi2String fmuResourceLocation,
                               const fmi2CallbackFunctions* functions, fmi2Boolean /*visible*/,
                               fmi2Boolean loggingOn) {
     if (!functions) return nullptr;
@@ -154,7 +155,12 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     if (!fmuGUID || std::strcmp(fmuGUID, guid) != 0)
         return fail("fmuGUID does not match this FMU's modelDescription.xml");
     try {
-        return new Instance(instanceName, functions, loggingOn);
+        auto instance = std::make_unique<Instance>(instanceName, functions, loggingOn);
+        // A configured copy's start values (contactbody.system's SSP components).
+        instance->model.set_defaults(read_start_values(start_values_path(fmuResourceLocation)));
+        return instance.release();
+    } catch (const std::exception& e) {
+        return fail(e.what());
     } catch (...) {
         return fail("out of memory");
     }

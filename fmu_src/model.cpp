@@ -1,6 +1,7 @@
 #include "model.hpp"
 
 #include <filesystem>
+#include <locale>
 #include <cmath>
 #include <sstream>
 
@@ -28,8 +29,33 @@ void as_model_error(F&& f) {
 
 }  // namespace
 
+void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std::string>>& values) {
+    for (const auto& [name, text] : values) {
+        const Variable* v = nullptr;
+        for (const Variable& candidate : variables())
+            if (name == candidate.name) v = &candidate;
+        if (!v || v->causality == Causality::output)
+            throw ModelError(concat("resources/start_values.txt: ", name,
+                                    " is not a parameter or input of this FMU"));
+        if (v->string) {
+            set_string(*v, text.c_str(), false);
+            continue;
+        }
+        std::istringstream in(text);
+        in.imbue(std::locale::classic());  // '.' as the decimal point, whatever the host's
+        double x = 0;
+        if (!(in >> x) || !(in >> std::ws).eof())
+            throw ModelError(concat("resources/start_values.txt: ", name, " = '", text,
+                                    "' is not a number"));
+        if (v->real) set_real(*v, x, false);
+        else if (x != static_cast<int>(x)) throw ModelError(concat("resources/start_values.txt: ", name, " = '", text, "' is not an integer"));
+        else set_integer(*v, static_cast<int>(x), false);
+    }
+    defaults_ = values_;
+}
+
 void ContactBodyModel::reset() {
-    values_ = start_values();
+    values_ = defaults_;
     fields_.reset();
     rebuild_ = true;  // sim_ stays: the next initialization may reuse its discretization
     start_time_ = 0;

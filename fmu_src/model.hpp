@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "errors.hpp"
@@ -33,8 +35,11 @@ struct ModelState {
 
 class ContactBodyModel {
 public:
-    ContactBodyModel() : values_(start_values()) {}
+    ContactBodyModel() : values_(start_values()), defaults_(values_) {}
 
+    // Start values of this copy of the FMU (resources/start_values.txt: name, value as text),
+    // which fmi2Reset returns to. Throws ModelError naming a bad name or value.
+    void set_defaults(const std::vector<std::pair<std::string, std::string>>& values);
     void reset();
     void set_start_time(double t);
     // `initialized` is true after fmi2ExitInitializationMode: only inputs and tunable
@@ -71,6 +76,7 @@ private:
     void write_due_edge();
 
     Values values_;
+    Values defaults_;  // the start values (the table's, or this copy's resources')
     std::array<double, num_inputs> input_rates_{};
     std::array<double, num_inputs> previous_inputs_{};  // where input_interpolation = ramp starts
     std::unique_ptr<Simulation> sim_;

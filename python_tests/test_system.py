@@ -191,3 +191,59 @@ def test_ssp_connectors_carry_the_variables_types(tmp_path):
     assert ('<ssd:Connector name="active_contact_nodes" kind="output"><ssc:Integer/>' in ssd)
     assert '<ssd:Connector name="friction_force" kind="output"><ssc:Real/>' in ssd
     assert 'stopTime="0.03"' in ssd
+
+
+@pytest.mark.parametrize("name", ["belt", "press"])
+def test_both_ssps_run_alone_in_plain_fmpy(tmp_path, name):
+    """Issue 24, item 1: fmpy 0.3.32's simulate_ssp applies no parameter binding of the .ssd
+    (only its parameter_set argument), so each component in the archive is a configured copy
+    that carries the system's values as its own start values. Plain simulate_ssp, in a process
+    with only fmpy, then equals the project's run (with the .ssv) bit for bit; before, the body
+    ran with its defaults (E(0) = 0.1875 instead of the system's)."""
+    import subprocess
+    import sys
+    system = getattr(S, f"{name}_system")()
+    ssp = S.write_ssp(system, tmp_path / f"{name}.ssp", stop_time=0.003)
+    code = ("import sys, numpy as np; from fmpy.ssp.simulation import simulate_ssp; "
+            "assert 'contactbody' not in sys.modules; "
+            "r = simulate_ssp(sys.argv[1], stop_time=0.003, step_size=1e-4); "
+            "np.save(sys.argv[2], np.stack([r[n] for n in r.dtype.names]))")
+    subprocess.run([sys.executable, "-c", code, str(ssp), str(tmp_path / "plain.npy")],
+                   check=True, capture_output=True, cwd=tmp_path)
+    plain = np.load(tmp_path / "plain.npy")
+    ours = S.simulate_ssp(ssp, 0.003, 1e-4)
+    for k, column in enumerate(ours.dtype.names):
+        assert np.array_equal(plain[k], ours[column]), column
+    with Master(system) as m:
+        master = m.run_fixed(0.003, 1e-4, zero_inputs=True)
+    n = len(master) - 1
+    assert np.array_equal(plain[ours.dtype.names.index("body.energy")][:n],
+                          master["body.energy"][1:])
+
+
+def test_a_configured_copy_is_valid_and_keeps_its_values_across_reset(tmp_path):
+    """The copy's start values are its own at instantiation and after fmi2Reset; fmpy
+    validates it; a malformed start_values.txt fails fmi2Instantiate with the line."""
+    import zipfile
+    path = tmp_path / "Body.fmu"
+    path.write_bytes(S.configured_copy(S.fmu("ContactBody"), {"friction_coefficient": 0.37,
+                                                              "nx": 8, "ny": 8}))
+    assert validate_fmu(str(path)) == []
+    with Model(path) as model:
+        for _ in range(2):  # the second run starts from fmi2Reset
+            rows, _ = model.run({}, 1e-4, 1e-4, ["energy"])
+            assert model.instance.getReal([model.variables["friction_coefficient"].valueReference]) == [0.37]
+    broken = tmp_path / "Broken.fmu"
+    with zipfile.ZipFile(path) as src, zipfile.ZipFile(broken, "w") as dst:
+        for info in src.infolist():
+            dst.writestr(info, b"friction_coefficient 0.3\n" if info.filename ==
+                         "resources/start_values.txt" else src.read(info))
+    import fmpy
+    from contactbody import fmu as F
+    unzipped = tmp_path / "broken"
+    fmpy.extract(str(broken), str(unzipped))
+    before = set(F._messages_by_instance)
+    with pytest.raises(Exception, match="instantiate"):
+        F.Instance(fmpy.read_model_description(str(broken)), unzipped, "broken")
+    said = [m[2] for k, v in F._messages_by_instance.items() if k not in before for m in v]
+    assert any("start_values.txt, line 1: expected 'name = value'" in m for m in said), said

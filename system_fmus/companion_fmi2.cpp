@@ -3,7 +3,11 @@
 // are logged with the function's name. The FMU state is plain data (values, states, time).
 #include <fmi2Functions.h>
 
+#include <algorithm>
 #include <cmath>
+#include <locale>
+#include <sstream>
+#include <stdexcept>
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
@@ -12,6 +16,7 @@
 #include <vector>
 
 #include "companion.hpp"
+#include "resource_start_values.hpp"
 
 namespace {
 
@@ -48,6 +53,7 @@ struct Instance {
     bool logging = false;
     Snapshot s;
     Workspace work;
+    std::vector<double> defaults;  // start values: the table's, or this copy's resources'
 };
 
 constexpr uint32_t state_version = 1;
@@ -198,7 +204,8 @@ extern "C" {
 const char* fmi2GetTypesPlatform() { return fmi2TypesPlatform; }
 const char* fmi2GetVersion() { return fmi2Version; }
 
-fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, fmi2String,
+fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
+                              fmi2String resource_location,
                               const fmi2CallbackFunctions* callbacks, fmi2Boolean,
                               fmi2Boolean logging) {
     if (!name || !guid || !callbacks) return nullptr;
@@ -216,6 +223,31 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, f
     inst->callbacks = *callbacks;
     inst->logging = logging;
     start_values(inst->s);
+    try {  // a configured copy's start values (contactbody.system's SSP components)
+        const auto& vars = model().variables;
+        for (const auto& [name, text] : contactbody::fmu::read_start_values(
+                 contactbody::fmu::start_values_path(resource_location))) {
+            auto v = std::find_if(vars.begin(), vars.end(),
+                                  [&](const companion::Variable& x) { return name == x.name; });
+            std::istringstream in(text);
+            in.imbue(std::locale::classic());
+            double x = 0;
+            if (v == vars.end() || v->causality == Causality::output)
+                throw std::runtime_error("resources/start_values.txt: " + name +
+                                         " is not a parameter or input of this FMU");
+            if (!(in >> x) || !(in >> std::ws).eof() || !std::isfinite(x))
+                throw std::runtime_error("resources/start_values.txt: " + name + " = '" + text +
+                                         "' is not a finite number");
+            inst->s.values[v->value_reference] = x;
+        }
+    } catch (const std::exception& e) {
+        if (callbacks->logger)
+            callbacks->logger(callbacks->componentEnvironment, name, fmi2Error,
+                              "logStatusError", "fmi2Instantiate: %s", e.what());
+        delete inst;
+        return nullptr;
+    }
+    inst->defaults = inst->s.values;
     return inst;
 }
 
@@ -267,6 +299,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
           Phase::terminated, Phase::error);
     inst->s = Snapshot{};
     start_values(inst->s);
+    inst->s.values = inst->defaults;
     return fmi2OK;
 }
 

@@ -40,3 +40,16 @@ def test_descriptions_point_to_no_missing_files():
     md = fmpy.read_model_description(str(FMU))
     for v in md.modelVariables:
         assert not re.search(r"SPEC|\.\./|\.md\b", v.description or ""), v.name
+
+
+def test_readme_is_the_front_door():
+    """Issue 24, item 8: what it is, the two commands, a quick start, which settings, where to
+    read on; the depth is in docs/ (whose links the test above checks)."""
+    text = (ROOT / "README.md").read_text()
+    assert len(text.splitlines()) <= 150
+    for needed in ("scripts/run_paper_scene.sh", "scripts/test.sh", "```python",
+                   "**Which settings to use.**", "## Where to read on"):
+        assert needed in text, needed
+    for document in ("docs/contract.md", "docs/user_guide.md", "docs/studies.md",
+                     "docs/system_models.md", "docs/decisions.md"):
+        assert f"]({document})" in text, document

@@ -9,6 +9,8 @@ import fmpy
 import numpy as np
 import pytest
 
+from conftest import SANITIZED
+
 WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work"]
 OUTPUTS = ["energy", "strain_energy", "top_position", *WORKS]
 
@@ -38,7 +40,9 @@ def balance_error(fmu_path, scene, dt):
 
 
 @pytest.mark.parametrize("scene", SCENES)
-@pytest.mark.parametrize("dt", [4e-6, 1e-6, 2.5e-7])
+@pytest.mark.parametrize("dt", [4e-6, 1e-6, pytest.param(2.5e-7, marks=pytest.mark.skipif(
+    SANITIZED, reason="40,000 substeps per scene instrumented; the sanitizers see the same "
+    "code at 4e-6 and 1e-6 s, and the normal build runs 2.5e-7"))])
 def test_balance_closes_for_a_body_moving_as_a_whole(fmu_path, scene, dt):
     error, r = balance_error(fmu_path, scene, dt)
     assert abs(r["top_position"][-1]) > 5e-3, "the scene must move the body by centimetres"

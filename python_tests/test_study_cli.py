@@ -6,7 +6,11 @@ import sys
 
 import pytest
 
-from conftest import FMU, ROOT
+from conftest import FMU, ROOT, SANITIZED
+
+# Runs that start a dask cluster: as test_study.py, not in the sanitizer job (its workers do
+# not load the sanitized FMU); the mistakes are caught before any cluster starts.
+with_cluster = pytest.mark.skipif(SANITIZED, reason="dask workers do not load the sanitized FMU")
 
 GOOD = """stop_time = 0.002
 output_interval = 1e-4
@@ -92,6 +96,7 @@ def plot_cli(*args):
                           capture_output=True, text=True, cwd=ROOT, timeout=120)
 
 
+@with_cluster
 def test_a_heatmap_refuses_to_average_over_a_third_axis(three_axes):
     """Issue 24, item 4: fixed with --where, or shown with --facet; labelled with units."""
     args = ["plot", three_axes, "--heatmap", "foundation_velocity", "friction_coefficient",
@@ -109,6 +114,7 @@ def test_a_heatmap_refuses_to_average_over_a_third_axis(three_axes):
     assert lines.returncode == 2 and "damping_stiffness" in lines.stderr
 
 
+@with_cluster
 def test_plots_label_their_axes_with_units(three_axes):
     from contactbody import plots
     units = plots.units_of(three_axes)
@@ -118,6 +124,7 @@ def test_plots_label_their_axes_with_units(three_axes):
     assert plots.label("apparent_friction_ratio", units) == "apparent_friction_ratio"
 
 
+@with_cluster
 def test_the_series_command_plots_chosen_points_and_files_carry_their_values(three_axes):
     import json
 
@@ -136,6 +143,7 @@ def test_the_series_command_plots_chosen_points_and_files_carry_their_values(thr
         assert point[name] == row[name]
 
 
+@with_cluster
 def test_the_summary_lists_the_failed_points_with_their_messages(tmp_path):
     text = GOOD.replace("[grid]", "[[points]]\nfriction_coefficient = 0.3\n[[points]]\n"
                         "friction_coefficient = 20.0\nmass_matrix = 'redistributed_both'\n"

@@ -1,6 +1,6 @@
 # The FMU binaries: ContactBody (the FMI 2.0 layer over the solver) and the companion FMUs of
 # examples/system (BeltDrive, Press), each one shared library with nothing inside it that the
-# platform's C library does not provide, exporting only the fmi2 functions.
+# platform's C library does not provide, exporting only the FMI functions.
 
 function(make_self_contained target)
   set_target_properties(${target} PROPERTIES PREFIX "" C_VISIBILITY_PRESET hidden
@@ -24,8 +24,11 @@ function(make_self_contained target)
   endif()
 endfunction()
 
-add_library(ContactBody SHARED fmu_src/fmi2_functions.cpp fmu_src/instance.cpp fmu_src/model.cpp
-            fmu_src/variables.cpp fmu_src/fmu_state.cpp fmu_src/resource_start_values.cpp)
+# One binary, both standards: ContactBody.fmu (FMI 2.0) and ContactBody_fmi3.fmu (FMI 3.0)
+# carry the same library, which exports the fmi2 and the fmi3 functions.
+add_library(ContactBody SHARED fmu_src/fmi2_functions.cpp fmu_src/fmi3_functions.cpp
+            fmu_src/shim.cpp fmu_src/instance.cpp fmu_src/model.cpp fmu_src/variables.cpp
+            fmu_src/fmu_state.cpp fmu_src/resource_start_values.cpp)
 target_include_directories(ContactBody PRIVATE fmu_src ${FMI_HEADERS_DIR})
 target_link_libraries(ContactBody PRIVATE contactbody_solver)
 make_self_contained(ContactBody)

@@ -1,6 +1,7 @@
 """Packs an FMU folder into a .fmu (zip): python pack_fmu.py FOLDER OUTPUT.
 
-Everything is deflated except binaries/linux64, which is stored: fmpy extracts every
+Everything is deflated except the Linux binary (binaries/linux64, FMI 3.0's
+binaries/x86_64-linux), which is stored: fmpy extracts every
 platform's binaries on each simulate_fmu, and inflating the 1.4 MB .so took 7.5 ms of a
 25 ms one-step run (benchmarks/results/portable.md). Stored, it is a copy. The win64 DLL stays
 deflated, or the FMU would pass 3 MB."""
@@ -16,7 +17,7 @@ tmp = output.with_suffix(".tmp")
 with zipfile.ZipFile(tmp, "w") as z:
     for path in files:
         name = path.relative_to(folder).as_posix()
-        stored = name.startswith("binaries/linux64/")
+        stored = name.startswith(("binaries/linux64/", "binaries/x86_64-linux/"))
         z.write(path, name, compress_type=zipfile.ZIP_STORED if stored else zipfile.ZIP_DEFLATED,
                 compresslevel=None if stored else 9)
 os.replace(tmp, output)

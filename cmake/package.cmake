@@ -1,4 +1,4 @@
-# Packages ContactBody.fmu, BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
+# Packages ContactBody.fmu (FMI 2.0), ContactBody_fmi3.fmu (FMI 3.0), BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
 # default: what users get) their binaries come from this project built again for each platform
 # with a toolchain from cmake/: linux64 by zig (glibc 2.17), win64 by MinGW-w64. Without it
 # (the sanitizer job) the FMU holds the native build's linux64 binary only.
@@ -55,10 +55,10 @@ else()
   set(license_names LICENSE)
 endif()
 
-# add_fmu(NAME GENERATOR target BINARIES platform file ... SOURCES files LICENSES files
-#         LICENSE_NAMES names): one .fmu in the build folder.
+# add_fmu(NAME GENERATOR target [GENERATOR_ARGS args] BINARIES platform file ... SOURCES files
+#         LICENSES files LICENSE_NAMES names): one .fmu in the build folder.
 function(add_fmu name)
-  cmake_parse_arguments(FMU "" "GENERATOR" "BINARIES;SOURCES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;SOURCES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
   set(dir ${CMAKE_BINARY_DIR}/fmu/${name})
   set(file ${CMAKE_BINARY_DIR}/${name}.fmu)
   set(commands)
@@ -76,7 +76,7 @@ function(add_fmu name)
   add_custom_command(OUTPUT ${file}
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${dir}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/sources ${dir}/documentation/licenses
-    COMMAND ${FMU_GENERATOR} ${dir}/modelDescription.xml
+    COMMAND ${FMU_GENERATOR} ${FMU_GENERATOR_ARGS} ${dir}/modelDescription.xml
     ${commands}
     COMMAND ${CMAKE_COMMAND} -E copy ${FMU_SOURCES} ${dir}/sources/
     COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${dir} ${file}
@@ -102,6 +102,18 @@ file(GLOB contactbody_sources CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/solver/*.cpp ${PROJECT_SOURCE_DIR}/solver/*.hpp)
 add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_binaries}
         SOURCES ${contactbody_sources} LICENSES ${contactbody_licenses}
+        LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
+# The FMI 3.0 FMU: the same binaries under FMI 3.0's platform tuples.
+set(platform_tuple_linux64 x86_64-linux)
+set(platform_tuple_win64 x86_64-windows)
+set(fmi3_binaries)
+set(list ${ContactBody_binaries})
+while(list)
+  list(POP_FRONT list platform binary)
+  list(APPEND fmi3_binaries ${platform_tuple_${platform}} ${binary})
+endwhile()
+add_fmu(ContactBody_fmi3 GENERATOR generate_model_description GENERATOR_ARGS --fmi3
+        BINARIES ${fmi3_binaries} SOURCES ${contactbody_sources} LICENSES ${contactbody_licenses}
         LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
 foreach(companion IN LISTS COMPANIONS)
   add_fmu(${companion} GENERATOR ${companion}_model_description BINARIES ${${companion}_binaries}

@@ -1,14 +1,19 @@
 // The exported FMI 2.0 Co-Simulation functions. Each checks its state and pointers in its
-// first lines (BEGIN / REQUIRE), then runs its body through `guarded`, which turns the
-// model's exceptions into fmi2Status and a log message naming the function.
+// first lines (BEGIN / REQUIRE), then runs its body through the shared shim (shim.hpp), which
+// turns the model's exceptions into fmi2Status and a log message naming the function.
 #include <cmath>
 #include <cstring>
 #include <sstream>
 #include <memory>
 #include <new>
 
+extern "C" {
+#include "fmi2Functions.h"
+}
+
 #include "instance.hpp"
 #include "resource_start_values.hpp"
+#include "shim.hpp"
 
 using namespace contactbody;
 using namespace contactbody::fmu;
@@ -24,74 +29,21 @@ constexpr unsigned settable = Instantiated | InitializationMode | StepComplete;
 constexpr unsigned saveable = Instantiated | InitializationMode | StepComplete | StepFailed | Terminated;
 constexpr unsigned restorable = saveable | Error;
 
+// The shared shim, returning fmi2Status.
 template <class Body>
-fmi2Status guarded(Instance* instance, const char* function, Body&& body) {
-    try {
-        return body();
-    } catch (const StepError& e) {
-        instance->error(function, e.what());
-        instance->state = Error;  // the state is the step's start: fmi2SetFMUstate may go on
-        return fmi2Error;
-    } catch (const ModelError& e) {
-        instance->error(function, e.what());
-        return fmi2Error;
-    } catch (const std::bad_alloc&) {
-        instance->error(function, "out of memory");
-    } catch (const std::exception& e) {
-        instance->error(function, e.what());
-    } catch (...) {
-        instance->error(function, "unknown failure");
-    }
-    instance->state = Error;  // unexpected: fmi2SetFMUstate, fmi2Reset or fmi2FreeInstance help
-    return fmi2Error;
+fmi2Status fmi2_guarded(Instance* instance, const char* function, Body&& body) {
+    return static_cast<fmi2Status>(
+        guarded(instance, function, [&] { return static_cast<int>(body()); }));
 }
 
 bool initialized(const Instance* instance) {
     return instance->state & (StepComplete | StepFailed | Terminated | Error);
 }
 
-// The simulation's warnings (docs/contract.md, "Warnings"), each once, as logStatusWarning.
-void log_warnings(Instance* instance, const char* function, Simulation& sim) {
-    for (const std::string& warning : sim.take_warnings())
-        instance->log(fmi2Warning, LogCategory::warning, std::string(function) + ": " + warning);
-}
-
-// Events (a new factorization) and the contact solver's statistics of the last step.
-void log_step(Instance* instance, Simulation& sim) {
-    log_warnings(instance, "fmi2DoStep", sim);
-    const int factorizations = sim.stepper().factorizations();
-    if (factorizations != instance->factorizations_logged) {
-        instance->factorizations_logged = factorizations;
-        instance->log(fmi2OK, LogCategory::events,
-                      "factorized 4/dt^2 M + A (factorization " + std::to_string(factorizations) + ")");
-    }
-    const StepStatistics& s = sim.statistics();
-    if (s.refinements > 0) {
-        std::ostringstream msg;
-        msg << "step to t = " << sim.time() << ": " << s.refinements
-            << " substeps redone as halves after a failed contact solve (smallest substep "
-            << s.smallest_substep << " s)";
-        instance->log(fmi2OK, LogCategory::events, msg.str());
-    }
-    instance->log(fmi2OK, LogCategory::contact_solver,
-                  "substeps " + std::to_string(s.substeps) + ", contact solves " +
-                      std::to_string(s.contact_solves) + ", Newton iterations " +
-                      std::to_string(s.contact_iterations) + " (max " +
-                      std::to_string(s.max_contact_iterations) + " in one substep), Gauss-Seidel "
-                      "sweeps " + std::to_string(s.gauss_seidel_sweeps));
-}
-
 const Variable& variable(unsigned vr) {
-    const Variable* v = find_variable(vr);
+    const Variable* v = find_variable(vr, Standard::fmi2);
     if (!v) throw ModelError("unknown value reference " + std::to_string(vr));
     return *v;
-}
-
-FmuState* known_state(Instance* instance, fmi2FMUstate s) {
-    auto* state = static_cast<FmuState*>(s);
-    if (!instance->states.count(state))
-        throw ModelError("FMUstate was not made by this instance, or was freed");
-    return state;
 }
 
 }  // namespace
@@ -119,7 +71,7 @@ fmi2Status for_each_variable(fmi2Component c, const char* function, unsigned sta
                              const fmi2ValueReference vr[], size_t nvr, Value* value, Each&& each) {
     BEGIN(function, states)
     REQUIRE(function, vr, nvr) REQUIRE(function, value, nvr)
-    return guarded(instance, function, [&] {
+    return fmi2_guarded(instance, function, [&] {
         for (size_t k = 0; k < nvr; ++k) each(instance, variable(vr[k]), value[k]);
         return fmi2OK;
     });
@@ -155,7 +107,15 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     if (!fmuGUID || std::strcmp(fmuGUID, guid) != 0)
         return fail("fmuGUID does not match this FMU's modelDescription.xml");
     try {
-        auto instance = std::make_unique<Instance>(instanceName, functions, loggingOn);
+        // The message goes through "%s": the host formats the logger's message printf-style.
+        Logger logger;
+        if (functions->logger)
+            logger = [log = functions->logger, env = functions->componentEnvironment,
+                      name = std::string(instanceName)](int status, const char* category,
+                                                        const char* message) {
+                log(env, name.c_str(), static_cast<fmi2Status>(status), category, "%s", message);
+            };
+        auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn);
         // A configured copy's start values (contactbody.system's SSP components).
         instance->model.set_defaults(read_start_values(start_values_path(fmuResourceLocation)));
         return instance.release();
@@ -171,14 +131,15 @@ void fmi2FreeInstance(fmi2Component c) { delete static_cast<Instance*>(c); }
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[]) {
     BEGIN("fmi2SetDebugLogging", any_state)
-    return instance->set_debug_logging(loggingOn, nCategories, categories);
+    return static_cast<fmi2Status>(
+        instance->set_debug_logging("fmi2SetDebugLogging", loggingOn, nCategories, categories));
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean /*toleranceDefined*/,
                                fmi2Real /*tolerance*/, fmi2Real startTime,
                                fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     BEGIN("fmi2SetupExperiment", Instantiated)
-    return guarded(instance, "fmi2SetupExperiment", [&] {
+    return fmi2_guarded(instance, "fmi2SetupExperiment", [&] {
         if (stopTimeDefined && !(stopTime >= startTime))
             throw ModelError("stopTime must be >= startTime");
         instance->model.set_start_time(startTime);
@@ -195,14 +156,10 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     BEGIN("fmi2ExitInitializationMode", InitializationMode)
-    return guarded(instance, "fmi2ExitInitializationMode", [&] {
+    return fmi2_guarded(instance, "fmi2ExitInitializationMode", [&] {
         instance->model.initialize();
         instance->state = StepComplete;
-        // Factorizations are counted over the discretization's life (it outlives fmi2Reset):
-        // the steps log the ones they make.
-        instance->factorizations_logged = instance->model.simulation()->stepper().factorizations();
-        instance->log(fmi2OK, LogCategory::events, "initialized");
-        log_warnings(instance, "fmi2ExitInitializationMode", *instance->model.simulation());
+        log_initialized(instance, "fmi2ExitInitializationMode");
         return fmi2OK;
     });
 }
@@ -289,12 +246,12 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize,
                       fmi2Boolean /*noSetFMUStatePriorToCurrentPoint*/) {
     BEGIN("fmi2DoStep", StepComplete)
-    const fmi2Status status = guarded(instance, "fmi2DoStep", [&] {
+    const fmi2Status status = fmi2_guarded(instance, "fmi2DoStep", [&] {
         instance->model.do_step(currentCommunicationPoint, communicationStepSize);
         instance->last_successful_time = instance->model.time();
         return fmi2OK;
     });
-    if (Simulation* sim = instance->model.simulation()) log_step(instance, *sim);
+    if (Simulation* sim = instance->model.simulation()) log_step(instance, "fmi2DoStep", *sim);
     return status;
 }
 
@@ -349,7 +306,7 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
     REQUIRE("fmi2SetRealInputDerivatives", vr, nvr)
     REQUIRE("fmi2SetRealInputDerivatives", order, nvr)
     REQUIRE("fmi2SetRealInputDerivatives", value, nvr)
-    return guarded(instance, "fmi2SetRealInputDerivatives", [&] {
+    return fmi2_guarded(instance, "fmi2SetRealInputDerivatives", [&] {
         for (size_t k = 0; k < nvr; ++k)
             instance->model.set_input_derivative(variable(vr[k]), order[k], value[k]);
         return fmi2OK;
@@ -372,55 +329,27 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
     BEGIN("fmi2GetFMUstate", saveable)
     REQUIRE("fmi2GetFMUstate", FMUstate, 1)
-    return guarded(instance, "fmi2GetFMUstate", [&] {
-        FmuState* target = static_cast<FmuState*>(*FMUstate);
-        if (target && !instance->states.count(target))
-            throw ModelError("*FMUstate is not a state of this instance (pass NULL for a new one)");
-        FmuState saved{instance->state, instance->last_successful_time, instance->model.save()};
-        if (target) {
-            *target = std::move(saved);  // overwrite, as FMI 2.0 asks for a non-NULL state
-        } else {
-            auto fresh = std::make_unique<FmuState>(std::move(saved));
-            instance->states.insert(fresh.get());
-            *FMUstate = fresh.release();
-        }
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(get_fmu_state(instance, "fmi2GetFMUstate", FMUstate));
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
     BEGIN("fmi2SetFMUstate", restorable)
     REQUIRE("fmi2SetFMUstate", FMUstate, 1)
-    return guarded(instance, "fmi2SetFMUstate", [&] {
-        const FmuState* s = known_state(instance, FMUstate);
-        instance->model.load(s->model);
-        instance->state = static_cast<FmiState>(s->instance_state);
-        instance->last_successful_time = s->last_successful_time;
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(set_fmu_state(instance, "fmi2SetFMUstate", FMUstate));
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
     BEGIN("fmi2FreeFMUstate", any_state)
     REQUIRE("fmi2FreeFMUstate", FMUstate, 1)
-    if (!*FMUstate) return fmi2OK;
-    return guarded(instance, "fmi2FreeFMUstate", [&] {
-        FmuState* s = known_state(instance, *FMUstate);
-        instance->states.erase(s);
-        delete s;
-        *FMUstate = nullptr;
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(free_fmu_state(instance, "fmi2FreeFMUstate", FMUstate));
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
     BEGIN("fmi2SerializedFMUstateSize", any_state)
     REQUIRE("fmi2SerializedFMUstateSize", FMUstate, 1)
     REQUIRE("fmi2SerializedFMUstateSize", size, 1)
-    return guarded(instance, "fmi2SerializedFMUstateSize", [&] {
-        *size = serialize(*known_state(instance, FMUstate)).size();
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(
+        serialized_fmu_state_size(instance, "fmi2SerializedFMUstateSize", FMUstate, size));
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte bytes[],
@@ -428,14 +357,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
     BEGIN("fmi2SerializeFMUstate", any_state)
     REQUIRE("fmi2SerializeFMUstate", FMUstate, 1)
     REQUIRE("fmi2SerializeFMUstate", bytes, 1)
-    return guarded(instance, "fmi2SerializeFMUstate", [&] {
-        const std::vector<char> data = serialize(*known_state(instance, FMUstate));
-        if (size != data.size())
-            throw ModelError("size is " + std::to_string(size) + ", the state needs " +
-                             std::to_string(data.size()) + " (fmi2SerializedFMUstateSize)");
-        std::memcpy(bytes, data.data(), data.size());
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(
+        serialize_fmu_state(instance, "fmi2SerializeFMUstate", FMUstate, bytes, size));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
@@ -443,17 +366,8 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     BEGIN("fmi2DeSerializeFMUstate", any_state)
     REQUIRE("fmi2DeSerializeFMUstate", serializedState, 1)
     REQUIRE("fmi2DeSerializeFMUstate", FMUstate, 1)
-    return guarded(instance, "fmi2DeSerializeFMUstate", [&] {
-        FmuState parsed = deserialize(serializedState, size);
-        if (*FMUstate) {  // reuse the given state, as FMI 2.0 allows
-            *known_state(instance, *FMUstate) = std::move(parsed);
-            return fmi2OK;
-        }
-        auto fresh = std::make_unique<FmuState>(std::move(parsed));
-        instance->states.insert(fresh.get());
-        *FMUstate = fresh.release();
-        return fmi2OK;
-    });
+    return static_cast<fmi2Status>(
+        deserialize_fmu_state(instance, "fmi2DeSerializeFMUstate", serializedState, size, FMUstate));
 }
 
 }  // extern "C"

@@ -18,6 +18,13 @@ constexpr size_t header_size = sizeof(magic) + 4 + 8 + 8;  // magic, version, si
 constexpr unsigned restorable_states =
     Instantiated | InitializationMode | StepComplete | StepFailed | Terminated;
 
+// The variables whose values are part of Values (every one but the edge arrays).
+size_t stored_variables() {
+    size_t n = 0;
+    for (const Variable& v : variables()) n += !v.is_array();
+    return n;
+}
+
 uint64_t fnv1a(const char* data, size_t size) {
     uint64_t h = 1469598103934665603ull;
     for (size_t i = 0; i < size; ++i) {
@@ -138,8 +145,9 @@ std::vector<char> serialize(const FmuState& s) {
     w.value<uint32_t>(s.instance_state);
     w.value(s.last_successful_time);
     Values values = s.model.values;
-    w.value<uint32_t>(static_cast<uint32_t>(variables().size()));
+    w.value<uint32_t>(static_cast<uint32_t>(stored_variables()));
     for (const Variable& v : variables()) {
+        if (v.is_array()) continue;  // read from the simulation's edge, stored below
         if (v.real) w.value(v.real(values));
         else if (v.integer) w.value<int32_t>(v.integer(values));
         else w.string(v.string(values));
@@ -162,6 +170,11 @@ std::vector<char> serialize(const FmuState& s) {
         Works::for_each(sim.works, sim.works, [&](double x, double) { w.value(x); });
         w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
+        for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction,
+                                         &sim.edge.slip_velocity, &sim.edge.gap})
+            w.vector(*x);
+        w.value<uint64_t>(static_cast<uint64_t>(sim.edge.state.size()));
+        for (Eigen::Index i = 0; i < sim.edge.state.size(); ++i) w.value<int8_t>(sim.edge.state[i]);
     }
 
     std::vector<char> out(header_size + w.bytes.size());
@@ -203,10 +216,11 @@ FmuState deserialize(const char* bytes, size_t size) {
     if (!(s.instance_state & restorable_states) || (s.instance_state & (s.instance_state - 1)))
         r.fail("invalid instance state " + std::to_string(s.instance_state));
     s.last_successful_time = r.finite("last successful time");
-    if (r.value<uint32_t>("variable count") != variables().size())
+    if (r.value<uint32_t>("variable count") != stored_variables())
         r.fail("variable count differs from this FMU's");
     Values& values = s.model.values;
     for (const Variable& v : variables()) {
+        if (v.is_array()) continue;
         if (v.string) {
             v.string(values) = r.string(v.name, max_string_length);
             try {
@@ -230,6 +244,7 @@ FmuState deserialize(const char* bytes, size_t size) {
             r.fail(e.what());
         }
     }
+    if (values.edge_nodes != values.nx + 1) r.fail("edge_nodes is not nx + 1");
     s.model.start_time = r.finite("start time");
     for (double& x : s.model.input_rates) x = r.finite("input derivative");
     for (double& x : s.model.previous_inputs) x = r.finite("input at the last communication point");
@@ -269,6 +284,18 @@ FmuState deserialize(const char* bytes, size_t size) {
             if constexpr (std::is_same_v<T, double>) x = r.finite("observable");
             else x = r.value<int32_t>("observable");
         });
+        EdgeSnapshot& edge = sim.edge;
+        edge.pressure = r.vector("edge pressure", nc);
+        edge.friction = r.vector("edge friction", nc);
+        edge.slip_velocity = r.vector("edge slip velocity", nc);
+        edge.gap = r.vector("edge gap", nc);
+        if (r.value<uint64_t>("edge states") != static_cast<uint64_t>(nc))
+            r.fail("edge states do not fit the mesh");
+        edge.state.resize(nc);
+        for (Eigen::Index i = 0; i < nc; ++i) {
+            edge.state[i] = r.value<int8_t>("edge state");
+            if (edge.state[i] < 0 || edge.state[i] > 2) r.fail("invalid edge state");
+        }
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");
     return s;

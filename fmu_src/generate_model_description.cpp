@@ -70,20 +70,50 @@ const std::map<std::string, std::string> units = {
     {"J/m", R"(kg="1" m="1" s="-2")"},
 };
 
-}  // namespace
+constexpr const char* description =
+    "Plane-strain elastic body in frictional contact with a moving rigid foundation: Ligursky "
+    "and Renard mass redistribution on the normal component, midpoint time stepping";
 
-int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::cerr << "usage: generate_model_description OUTPUT.xml\n";
-        return 2;
-    }
+void write_units(std::ostream& x) {
+    x << "  <UnitDefinitions>\n";
+    for (const auto& [unit, exponents] : units)
+        x << "    <Unit name=\"" << unit << "\"><BaseUnit " << exponents << "/></Unit>\n";
+    x << "  </UnitDefinitions>\n";
+}
+
+// The enumeration types the standard's variables use.
+std::vector<const EnumerationType*> used_enumerations(Standard standard) {
+    std::vector<const EnumerationType*> used;
+    for (const EnumerationType& t : enumeration_types())
+        for (const Variable& v : variables())
+            if (v.in(standard) && v.enumeration && t.name == std::string(v.enumeration)) {
+                used.push_back(&t);
+                break;
+            }
+    return used;
+}
+
+void write_log_categories_and_experiment(std::ostream& x) {
+    x << "  <LogCategories>\n";
+    for (const std::string& c : log_categories()) x << "    <Category name=\"" << c << "\"/>\n";
+    x << "  </LogCategories>\n"
+      << "  <DefaultExperiment startTime=\"0\" stopTime=\"0.02\" stepSize=\"0.0001\"/>\n";
+}
+
+void write_limits(std::ostream& x, const Variable& v) {
+    if (v.type == Type::String || v.type == Type::Enumeration) return;
+    if (!std::isnan(v.min)) x << " min=\"" << number(v.min) << "\"";
+    if (!std::isnan(v.max) && std::isfinite(v.max)) x << " max=\"" << number(v.max) << "\"";
+}
+
+std::string fmi2(void) {
     std::ostringstream x;
     x << R"(<?xml version="1.0" encoding="UTF-8"?>
 <fmiModelDescription
   fmiVersion="2.0"
   modelName=")" << model_identifier << R"("
   guid=")" << guid << R"("
-  description="Plane-strain elastic body in frictional contact with a moving rigid foundation: Ligursky and Renard mass redistribution on the normal component, midpoint time stepping"
+  description=")" << description << R"("
   generationTool="ContactBody generate_model_description"
   variableNamingConvention="structured"
   numberOfEventIndicators="0">
@@ -98,30 +128,22 @@ int main(int argc, char** argv) {
     canGetAndSetFMUstate="true"
     canSerializeFMUstate="true"
     providesDirectionalDerivative="false"/>
-  <UnitDefinitions>
 )";
-    for (const auto& [unit, exponents] : units)
-        x << "    <Unit name=\"" << unit << "\"><BaseUnit " << exponents << "/></Unit>\n";
-    x << R"(  </UnitDefinitions>
-  <TypeDefinitions>
-)";
-    for (const EnumerationType& t : enumeration_types()) {
-        x << "    <SimpleType name=\"" << t.name << "\">\n      <Enumeration>\n";
-        for (size_t k = 0; k < t.items.size(); ++k)
-            x << "        <Item name=\"" << t.items[k] << "\" value=\"" << k << "\"/>\n";
+    write_units(x);
+    x << "  <TypeDefinitions>\n";
+    for (const EnumerationType* t : used_enumerations(Standard::fmi2)) {
+        x << "    <SimpleType name=\"" << t->name << "\">\n      <Enumeration>\n";
+        for (size_t k = 0; k < t->items.size(); ++k)
+            x << "        <Item name=\"" << t->items[k] << "\" value=\"" << k << "\"/>\n";
         x << "      </Enumeration>\n    </SimpleType>\n";
     }
-    x << R"(  </TypeDefinitions>
-  <LogCategories>
-)";
-    for (const std::string& c : log_categories()) x << "    <Category name=\"" << c << "\"/>\n";
-    x << R"(  </LogCategories>
-  <DefaultExperiment startTime="0" stopTime="0.02" stepSize="0.0001"/>
-  <ModelVariables>
-)";
+    x << "  </TypeDefinitions>\n";
+    write_log_categories_and_experiment(x);
+    x << "  <ModelVariables>\n";
     std::vector<size_t> outputs;
     size_t index = 0;
     for (const Variable& v : variables()) {
+        if (!v.in(Standard::fmi2)) continue;
         ++index;
         if (v.causality == Causality::output) outputs.push_back(index);
         x << "    <!-- " << index << " --><ScalarVariable name=\"" << v.name
@@ -139,10 +161,7 @@ int main(int argc, char** argv) {
             case Type::String: x << "String"; break;
         }
         if (*v.unit) x << " unit=\"" << v.unit << "\"";
-        if (v.type == Type::Real || v.type == Type::Integer) {
-            if (!std::isnan(v.min)) x << " min=\"" << number(v.min) << "\"";
-            if (!std::isnan(v.max) && std::isfinite(v.max)) x << " max=\"" << number(v.max) << "\"";
-        }
+        write_limits(x, v);
         if (v.type == Type::String) x << " start=\"\"";
         else if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
         x << "/>\n    </ScalarVariable>\n";
@@ -152,11 +171,94 @@ int main(int argc, char** argv) {
     x << "    </Outputs>\n    <InitialUnknowns>\n";
     for (size_t i : outputs) x << "      <Unknown index=\"" << i << "\"/>\n";
     x << "    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n";
+    return x.str();
+}
 
-    std::ofstream out(argv[1]);
-    out << x.str();
+// FMI 3.0: the same table, with FMI 3.0's types, the structural parameters, the independent
+// variable time, and the contact-edge arrays sized by edge_nodes.
+std::string fmi3(void) {
+    std::ostringstream x;
+    x << R"(<?xml version="1.0" encoding="UTF-8"?>
+<fmiModelDescription
+  fmiVersion="3.0"
+  modelName=")" << model_identifier << R"("
+  instantiationToken=")" << guid << R"("
+  description=")" << description << R"("
+  generationTool="ContactBody generate_model_description"
+  variableNamingConvention="structured">
+  <CoSimulation
+    modelIdentifier=")" << model_identifier << R"("
+    canHandleVariableCommunicationStepSize="true"
+    canGetAndSetFMUState="true"
+    canSerializeFMUState="true"
+    providesDirectionalDerivatives="false"
+    providesAdjointDerivatives="false"
+    providesPerElementDependencies="false"
+    maxOutputDerivativeOrder="0"
+    providesIntermediateUpdate="false"
+    mightReturnEarlyFromDoStep="false"
+    canReturnEarlyAfterIntermediateUpdate="false"
+    hasEventMode="false"
+    providesEvaluateDiscreteStates="false"/>
+)";
+    write_units(x);
+    x << "  <TypeDefinitions>\n";
+    for (const EnumerationType* t : used_enumerations(Standard::fmi3)) {
+        x << "    <EnumerationType name=\"" << t->name << "\">\n";
+        for (size_t k = 0; k < t->items.size(); ++k)
+            x << "      <Item name=\"" << t->items[k] << "\" value=\"" << k << "\"/>\n";
+        x << "    </EnumerationType>\n";
+    }
+    x << "  </TypeDefinitions>\n";
+    write_log_categories_and_experiment(x);
+    x << "  <ModelVariables>\n"
+      << "    <Float64 name=\"time\" valueReference=\"" << time_value_reference
+      << "\" causality=\"independent\" variability=\"continuous\" unit=\"s\" description=\"Simulation time\"/>\n";
+    unsigned edge_nodes_reference = 0;
+    for (const Variable& v : variables())
+        if (v.name == std::string("edge_nodes")) edge_nodes_reference = v.value_reference;
+    std::vector<unsigned> outputs;
+    for (const Variable& v : variables()) {
+        if (!v.in(Standard::fmi3)) continue;
+        const char* element = v.type == Type::Enumeration ? "Enumeration" : fmi3_type(v);
+        const char* causality = v.structural ? "structuralParameter" : name(v.causality);
+        if (v.causality == Causality::output) outputs.push_back(v.value_reference);
+        x << "    <" << element << " name=\"" << v.name << "\" valueReference=\""
+          << v.value_reference << "\" description=\"" << escaped(v.description)
+          << "\" causality=\"" << causality << "\" variability=\"" << name(v.variability) << "\"";
+        if (v.type == Type::Enumeration) x << " declaredType=\"" << enumeration_type(v).name << "\"";
+        if (*v.unit) x << " unit=\"" << v.unit << "\"";
+        write_limits(x, v);
+        if (v.causality != Causality::output && v.type != Type::String)
+            x << " start=\"" << number(v.start) << "\"";
+        if (v.type == Type::String)
+            x << ">\n      <Start value=\"\"/>\n    </String>\n";
+        else if (v.is_array())
+            x << ">\n      <Dimension valueReference=\"" << edge_nodes_reference << "\"/>\n    </"
+              << element << ">\n";
+        else
+            x << "/>\n";
+    }
+    x << "  </ModelVariables>\n  <ModelStructure>\n";
+    for (unsigned vr : outputs) x << "    <Output valueReference=\"" << vr << "\"/>\n";
+    for (unsigned vr : outputs) x << "    <InitialUnknown valueReference=\"" << vr << "\"/>\n";
+    x << "  </ModelStructure>\n</fmiModelDescription>\n";
+    return x.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool v3 = argc == 3 && std::string(argv[1]) == "--fmi3";
+    if (argc != 2 && !v3) {
+        std::cerr << "usage: generate_model_description [--fmi3] OUTPUT.xml\n";
+        return 2;
+    }
+    const char* path = argv[argc - 1];
+    std::ofstream out(path);
+    out << (v3 ? fmi3() : fmi2());
     if (!out) {
-        std::cerr << "cannot write " << argv[1] << "\n";
+        std::cerr << "cannot write " << path << "\n";
         return 1;
     }
     return 0;

@@ -12,27 +12,26 @@ const char* state_name(FmiState s) {
         case StepFailed: return "StepFailed";
         case Terminated: return "Terminated";
         case Error: return "Error";
+        case ConfigurationMode: return "ConfigurationMode";
     }
     return "unknown";
 }
 
 }  // namespace
 
-Instance::Instance(std::string n, const fmi2CallbackFunctions* cb, bool on)
-    : name(std::move(n)), callbacks(*cb), logging_on(on) {
+Instance::Instance(std::string n, Logger l, bool on)
+    : name(std::move(n)), logger(std::move(l)), logging_on(on) {
     category_on.fill(on);
 }
 
-void Instance::log(fmi2Status status, LogCategory category, const std::string& message) const {
-    if (!callbacks.logger) return;
+void Instance::log(int status, LogCategory category, const std::string& message) const {
+    if (!logger) return;
     const auto index = static_cast<size_t>(category);
     // Errors and warnings reach the user whatever the logging settings: a warning nobody sees
     // would be a silent one.
-    const bool always = status != fmi2OK;
+    const bool always = status != Status::ok;
     if (!always && !(logging_on && category_on[index])) return;
-    // The message goes through "%s": the host formats the logger's message printf-style.
-    callbacks.logger(callbacks.componentEnvironment, name.c_str(), status,
-                     log_categories()[index].c_str(), "%s", message.c_str());
+    logger(status, log_categories()[index].c_str(), message.c_str());
 }
 
 Instance::~Instance() {
@@ -45,10 +44,11 @@ bool Instance::allowed(const char* function, unsigned states) const {
     return false;
 }
 
-fmi2Status Instance::set_debug_logging(bool on, size_t n, const fmi2String categories[]) {
+int Instance::set_debug_logging(const char* function, bool on, size_t n,
+                                const char* const categories[]) {
     if (n > 0 && !categories) {
-        error("fmi2SetDebugLogging", "categories is NULL but nCategories > 0");
-        return fmi2Error;
+        error(function, "categories is NULL but nCategories > 0");
+        return Status::error;
     }
     std::array<bool, 5> requested{};
     for (size_t k = 0; k < n; ++k) {
@@ -58,8 +58,8 @@ fmi2Status Instance::set_debug_logging(bool on, size_t n, const fmi2String categ
             if (log_categories()[c] == wanted) requested[c] = found = true;
         }
         if (!found) {
-            error("fmi2SetDebugLogging", "unknown log category '" + wanted + "'");
-            return fmi2Error;
+            error(function, "unknown log category '" + wanted + "'");
+            return Status::error;
         }
     }
     logging_on = on;
@@ -68,7 +68,7 @@ fmi2Status Instance::set_debug_logging(bool on, size_t n, const fmi2String categ
         else if (requested[c]) category_on[c] = on;
     }
     if (on && n > 0 && requested[static_cast<size_t>(LogCategory::all)]) category_on.fill(true);
-    return fmi2OK;
+    return Status::ok;
 }
 
 }  // namespace contactbody::fmu

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <locale>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -97,6 +98,7 @@ void ContactBodyModel::set_integer(const Variable& v, int value, bool initialize
         throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     check_settable(v, value, initialized);
     v.integer(values_) = value;
+    if (&v.integer(values_) == &values_.nx) values_.edge_nodes = value + 1;  // the arrays follow
     if (!initialized) rebuild_ = true;
 }
 
@@ -124,6 +126,24 @@ int ContactBodyModel::get_integer(const Variable& v) {
         throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     if (v.causality == Causality::output) refresh_outputs();
     return v.integer(values_);
+}
+
+size_t ContactBodyModel::size(const Variable& v) const {
+    return v.is_array() ? static_cast<size_t>(values_.edge_nodes) : 1;
+}
+
+void ContactBodyModel::get_edge(const Variable& v, double* out) {
+    if (!v.edge_real) throw ModelError(concat("variable ", v.name, " is not a Float64 array"));
+    refresh_outputs();
+    const Eigen::VectorXd& x = v.edge_real(sim_->edge());
+    std::copy(x.data(), x.data() + x.size(), out);
+}
+
+void ContactBodyModel::get_edge(const Variable& v, int64_t* out) {
+    if (!v.edge_state) throw ModelError(concat("variable ", v.name, " is not an Int64 array"));
+    refresh_outputs();
+    const auto& state = sim_->edge().state;
+    for (Eigen::Index i = 0; i < state.size(); ++i) out[i] = state[i];
 }
 
 void ContactBodyModel::set_input_derivative(const Variable& v, int order, double value) {
@@ -206,8 +226,16 @@ void ContactBodyModel::write_due_fields() {
     next_field_output_ = static_cast<uint64_t>(std::floor(elapsed / interval + 1e-9)) + 1;
 }
 
+void ContactBodyModel::check_structure() const {
+    if (values_.edge_nodes != values_.nx + 1)
+        throw ModelError(concat("edge_nodes = ", values_.edge_nodes, " but nx + 1 = ", values_.nx + 1,
+                                ": the edge arrays hold one value per bottom node (setting nx "
+                                "sets edge_nodes; set edge_nodes only to nx + 1)"));
+}
+
 void ContactBodyModel::initialize() {
     if (!rebuild_ && sim_) return;
+    check_structure();
     build_simulation(values_);
     open_field_output();
     values_.out = Observables{};

@@ -48,6 +48,11 @@ public:
     void set_integer(const Variable& v, int value, bool initialized);
     void set_string(const Variable& v, const char* value, bool initialized);
     double get_real(const Variable& v);
+    // Values a variable holds: edge_nodes for the contact-edge arrays (FMI 3.0), else 1.
+    size_t size(const Variable& v) const;
+    // A contact-edge array's size(v) values: the Float64 fields, or the states (edge_state).
+    void get_edge(const Variable& v, double* out);
+    void get_edge(const Variable& v, int64_t* out);
     int get_integer(const Variable& v);
     const char* get_string(const Variable& v);
 
@@ -59,6 +64,8 @@ public:
     // Restores a saved state; refuses one saved with other fixed parameters (another mesh).
     void load(const ModelState& state);
 
+    // Throws ModelError unless edge_nodes = nx + 1 (the FMI 3.0 arrays' size).
+    void check_structure() const;
     // Builds the simulation from the parameters if they changed (throws ModelError).
     void initialize();
     void do_step(double current_time, double step_size);

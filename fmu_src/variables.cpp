@@ -21,6 +21,15 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 #define ACCESS_STRING(field) nullptr, nullptr, [](Values& v) -> std::string& { return v.field; }
 #define ACCESS_ENUM(field, type) \
     nullptr, [](Values& v) -> int& { return v.field; }, nullptr, type
+// FMI 3.0 structural parameters (UInt64), in both FMUs or in the FMI 3.0 one only.
+#define ACCESS_STRUCTURAL(field, standard) \
+    nullptr, [](Values& v) -> int& { return v.field; }, nullptr, nullptr, true, standard
+// FMI 3.0 outputs along the contact edge.
+#define ACCESS_EDGE(field) \
+    nullptr, nullptr, nullptr, nullptr, false, Standard::fmi3, \
+        [](const EdgeSnapshot& e) -> const Eigen::VectorXd& { return e.field; }
+#define ACCESS_EDGE_STATE \
+    nullptr, nullptr, nullptr, "ContactState", false, Standard::fmi3, nullptr, true
 
 using T = Type;
 using C = Causality;
@@ -30,8 +39,9 @@ const std::vector<Variable> table = {
     // Parameters (docs/variables.md lists them)
     {"width", 1, T::Real, C::parameter, V::fixed, "m", "Width W of the body", 0.1, 1e-6, inf, ACCESS_REAL(width)},
     {"height", 2, T::Real, C::parameter, V::fixed, "m", "Height H of the body", 0.1, 1e-6, inf, ACCESS_REAL(height)},
-    {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, ACCESS_INT(nx)},
-    {"ny", 4, T::Integer, C::parameter, V::fixed, "", "Cells along y", 20, 1, max_cells_per_direction, ACCESS_INT(ny)},
+    {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(nx, Standard::both)},
+    {"ny", 4, T::Integer, C::parameter, V::fixed, "", "Cells along y", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(ny, Standard::both)},
+    {"edge_nodes", 31, T::Integer, C::parameter, V::fixed, "", "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused at initialization)", 21, 2, max_cells_per_direction + 1, ACCESS_STRUCTURAL(edge_nodes, Standard::fmi3)},
     {"density", 5, T::Real, C::parameter, V::fixed, "kg/m3", "Density rho", 1000, 1e-3, inf, ACCESS_REAL(density)},
     {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, ACCESS_REAL(lambda)},
     {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 1, inf, ACCESS_REAL(mu)},
@@ -85,6 +95,13 @@ const std::vector<Variable> table = {
     {"substep_refinements", 122, T::Integer, C::output, V::discrete, "", "Substeps of the last communication step redone as two halves after a failed contact solve", none, none, none, ACCESS_INT(out.substep_refinements)},
     {"contact_iterations", 123, T::Integer, C::output, V::discrete, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed", none, none, none, ACCESS_INT(out.contact_iterations)},
     {"gauss_seidel_sweeps", 124, T::Integer, C::output, V::discrete, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)", none, none, none, ACCESS_INT(out.gauss_seidel_sweeps)},
+    // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
+    {"edge_x", 130, T::Real, C::output, V::discrete, "m", "Position x of each bottom node (reference configuration)", none, none, none, ACCESS_EDGE(x)},
+    {"edge_pressure", 131, T::Real, C::output, V::continuous, "Pa", "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)", none, none, none, ACCESS_EDGE(pressure)},
+    {"edge_friction", 132, T::Real, C::output, V::continuous, "Pa", "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)", none, none, none, ACCESS_EDGE(friction)},
+    {"edge_slip_velocity", 133, T::Real, C::output, V::continuous, "m/s", "Velocity x of each bottom node relative to the foundation over the last substep", none, none, none, ACCESS_EDGE(slip_velocity)},
+    {"edge_gap", 134, T::Real, C::output, V::continuous, "m", "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)", none, none, none, ACCESS_EDGE(gap)},
+    {"edge_state", 135, T::Enumeration, C::output, V::discrete, "", "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)", none, none, none, ACCESS_EDGE_STATE},
 };
 
 }  // namespace
@@ -151,14 +168,24 @@ int input_index(const Variable& v) {
     return name == "foundation_velocity" ? 0 : name == "top_displacement" ? 1 : 2;
 }
 
-const Variable* find_variable(unsigned value_reference) {
+const char* fmi3_type(const Variable& v) {
+    switch (v.type) {
+        case Type::Real: return "Float64";
+        case Type::Integer: return v.structural ? "UInt64" : "Int32";
+        case Type::Enumeration: return "Int64";
+        case Type::String: return "String";
+    }
+    return "";
+}
+
+const Variable* find_variable(unsigned value_reference, Standard standard) {
     static const std::unordered_map<unsigned, const Variable*> index = [] {
         std::unordered_map<unsigned, const Variable*> m;
         for (const Variable& v : table) m.emplace(v.value_reference, &v);
         return m;
     }();
     const auto it = index.find(value_reference);
-    return it == index.end() ? nullptr : it->second;
+    return it == index.end() || !it->second->in(standard) ? nullptr : it->second;
 }
 
 Values start_values() {
@@ -178,6 +205,7 @@ const std::vector<EnumerationType>& enumeration_types() {
         {"InputInterpolation", {"hold", "ramp"}},
         {"TopControl", {"displacement", "force"}},
         {"InitialState", {"paper", "static"}},
+        {"ContactState", {"open", "stick", "slip"}},
     };
     return types;
 }

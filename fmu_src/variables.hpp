@@ -16,6 +16,7 @@ constexpr const char* guid = "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
 struct Values {
     double width, height, density, lambda, mu, friction_coefficient;
     int nx, ny, mass_matrix;
+    int edge_nodes;  // nx + 1: the size of the FMI 3.0 edge arrays (follows nx)
     double internal_step, contact_tolerance, initial_gap;
     double damping_mass, damping_stiffness, min_internal_step;
     int input_interpolation;  // InputInterpolation
@@ -36,6 +37,9 @@ struct Values {
 enum class Type { Real, Integer, Enumeration, String };
 enum class Causality { parameter, input, output };
 enum class Variability { fixed, tunable, continuous, discrete };
+// Which FMUs declare a variable: both, or only the FMI 3.0 one (the contact-edge arrays and
+// the structural parameter that sizes them).
+enum class Standard : unsigned { fmi2 = 1, fmi3 = 2, both = 3 };
 
 struct Variable {
     const char* name;
@@ -51,10 +55,21 @@ struct Variable {
     int& (*integer)(Values&);
     std::string& (*string)(Values&) = nullptr;
     const char* enumeration = nullptr;  // the EnumerationType's name, for Enumeration variables
+    // FMI 3.0: causality structuralParameter, type UInt64 (FMI 2.0: an Integer parameter).
+    bool structural = false;
+    Standard standard = Standard::both;
+    // FMI 3.0 arrays along the contact edge, edge_nodes values each: a field of the edge
+    // snapshot (Float64), or its contact states (edge_state: an Enumeration array).
+    const Eigen::VectorXd& (*edge_real)(const EdgeSnapshot&) = nullptr;
+    bool edge_state = false;
 
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
     }
+    bool in(Standard s) const {
+        return static_cast<unsigned>(standard) & static_cast<unsigned>(s);
+    }
+    bool is_array() const { return edge_real || edge_state; }
 };
 
 const std::vector<Variable>& variables();
@@ -69,8 +84,14 @@ void check_string(const Variable& v, const char* value);
 constexpr int num_inputs = 3;
 int input_index(const Variable& v);
 
-// nullptr when no variable has this reference.
-const Variable* find_variable(unsigned value_reference);
+// The variable's FMI 3.0 type: Float64, Int32, UInt64 (structural parameters), Int64
+// (enumerations, as FMI 3.0 accesses them) or String.
+const char* fmi3_type(const Variable& v);
+// FMI 3.0's independent variable, which the variable table leaves to the layers.
+constexpr unsigned time_value_reference = 0;
+
+// nullptr when no variable of this standard has this reference.
+const Variable* find_variable(unsigned value_reference, Standard standard);
 // Values with every start value.
 Values start_values();
 
@@ -81,6 +102,8 @@ enum class InputInterpolation : int { hold = 0, ramp = 1 };
 enum class TopControl : int { displacement = 0, force = 1 };
 // The initial displacement: the paper's linear profile, or the static equilibrium.
 enum class InitialState : int { paper = 0, static_equilibrium = 1 };
+// A contact node's state in the last substep (EdgeSnapshot::state, the edge_state array).
+enum class ContactState : int { open = 0, stick = 1, slip = 2 };
 
 // The enumeration types: XML name and item names in value order. Each Enumeration variable
 // names its type (Variable::enumeration).

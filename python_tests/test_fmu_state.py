@@ -131,6 +131,9 @@ def payload_offsets(md):
     for v in md.modelVariables:
         off[v.name] = pos
         pos += {"Real": 8, "String": 8}.get(v.type, 4)  # an empty String: its u64 length
+        if v.name == "ny":  # the FMI 3.0 FMU's edge_nodes follows in the table (Int32)
+            off["edge_nodes"] = pos
+            pos += 4
     off["start_time"] = pos
     off["field_output_count"] = pos + 56  # after 3 rates and 3 previous inputs; no times follow
     off["next_field_output"] = pos + 64
@@ -160,7 +163,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 9": blob[:8] + struct.pack("<I", 9) + blob[12:],
+        "version 10": blob[:8] + struct.pack("<I", 10) + blob[12:],
+        "version 8 (before the edge arrays)": blob[:8] + struct.pack("<I", 8) + blob[12:],
         "version 7 (before the edge history)": blob[:8] + struct.pack("<I", 7) + blob[12:],
         "version 6 (before sticking nodes)": blob[:8] + struct.pack("<I", 6) + blob[12:],
         "version 5 (before the top force)": blob[:8] + struct.pack("<I", 5) + blob[12:],
@@ -186,6 +190,7 @@ def corruptions(blob, md):
         "variable count": patch(blob, o["variable_count"], "<I", 3),
         "nx = 0": patch(blob, o["nx"], "<i", 0),
         "nx of another mesh": patch(blob, o["nx"], "<i", 10),
+        "edge_nodes not nx + 1": patch(blob, o["edge_nodes"], "<i", 30),
         "mass_matrix = 9": patch(blob, o["mass_matrix"], "<i", 9),
         "density NaN": patch(blob, o["density"], "<d", float("nan")),
         "negative density": patch(blob, o["density"], "<d", -1.0),

@@ -1,6 +1,7 @@
 """Issue 20: the FMUs users get are portable. Each platform folder holds one binary; the
 linux64 one needs nothing beyond glibc 2.17 (checked here and by PyPA's auditwheel), the win64
-one only Windows' own DLLs; both export the fmi2 functions and nothing else."""
+one only Windows' own DLLs; both export the FMI functions and nothing else (ContactBody's
+library: fmi2 and fmi3, the same file in ContactBody.fmu and ContactBody_fmi3.fmu)."""
 import base64
 import hashlib
 import json
@@ -20,14 +21,28 @@ from conftest import FMU, ROOT, SANITIZED
 # The sanitizer job packs its native instrumented binary instead: nothing here applies.
 pytestmark = pytest.mark.skipif(SANITIZED, reason="the sanitizer build is not the portable one")
 
-FMUS = [FMU, FMU.with_name("BeltDrive.fmu"), FMU.with_name("Press.fmu")]
+FMU3 = FMU.with_name("ContactBody_fmi3.fmu")
+FMUS = [FMU, FMU3, FMU.with_name("BeltDrive.fmu"), FMU.with_name("Press.fmu")]
+# FMI 3.0 names the platform folders by tuple.
+PLATFORM_TUPLES = {"linux64": "x86_64-linux", "win64": "x86_64-windows"}
 GLIBC_LIBRARIES = {"libc.so.6", "libm.so.6", "libpthread.so.0", "libdl.so.2", "librt.so.1",
                    "ld-linux-x86-64.so.2"}
 WINDOWS_SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll", "ws2_32.dll",
                        "shell32.dll", "ole32.dll", "bcrypt.dll", "ntdll.dll"}
 
 
+def folder(fmu, platform):
+    three = fmpy.read_model_description(str(fmu)).fmiVersion.startswith("3")
+    return PLATFORM_TUPLES[platform] if three else platform
+
+
+def exports_only_fmi(fmu, exported):
+    prefixes = ("fmi2", "fmi3") if fmu.stem.startswith("ContactBody") else ("fmi2",)
+    return exported and all(n.startswith(prefixes) for n in exported)
+
+
 def binaries(fmu, platform):
+    platform = folder(fmu, platform)
     with zipfile.ZipFile(fmu) as z:
         return {n: z.read(n) for n in z.namelist()
                 if n.startswith(f"binaries/{platform}/") and not n.endswith("/")}
@@ -37,7 +52,7 @@ def only_binary(fmu, platform, tmp_path):
     files = binaries(fmu, platform)
     identifier = fmpy.read_model_description(str(fmu)).coSimulation.modelIdentifier
     suffix = ".so" if platform == "linux64" else ".dll"
-    assert list(files) == [f"binaries/{platform}/{identifier}{suffix}"], files.keys()
+    assert list(files) == [f"binaries/{folder(fmu, platform)}/{identifier}{suffix}"], files.keys()
     path = tmp_path / f"{identifier}{suffix}"
     path.write_bytes(next(iter(files.values())))
     return path
@@ -67,7 +82,9 @@ def test_linux_binary_needs_only_glibc_2_17(fmu, tmp_path):
         assert not any(v.startswith(("GLIBCXX", "CXXABI", "GCC_")) for v in versions), versions
         exported = {s.name for s in elf.get_section_by_name(".dynsym").iter_symbols()
                     if s["st_shndx"] != "SHN_UNDEF" and s.name}
-        assert exported and all(n.startswith("fmi2") for n in exported), sorted(exported)[:10]
+        assert exports_only_fmi(fmu, exported), sorted(exported)[:10]
+        if fmu.stem.startswith("ContactBody"):
+            assert {"fmi2DoStep", "fmi3DoStep", "fmi3InstantiateCoSimulation"} <= exported
 
 
 def test_auditwheel_calls_the_linux_binary_manylinux_2_17(tmp_path):
@@ -102,7 +119,9 @@ def test_windows_binary_imports_only_system_dlls(fmu, tmp_path):
     assert "kernel32.dll" in imports and imports <= WINDOWS_SYSTEM_DLLS, imports
     table = out.split("[Ordinal/Name Pointer] Table", 1)[1].split("\n\n", 1)[0]
     exported = re.findall(r"\]\s+(\S+)", table)
-    assert exported and all(n.startswith("fmi2") for n in exported), exported
+    assert exports_only_fmi(fmu, exported), exported
+    if fmu.stem.startswith("ContactBody"):
+        assert {"fmi2DoStep", "fmi3DoStep", "fmi3InstantiateCoSimulation"} <= set(exported)
 
 
 def test_fmu_is_small_and_carries_the_licences():

@@ -458,6 +458,10 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     if (s.u.size() != dofs || s.v.size() != dofs ||
         (s.lambda.size() != nc && s.lambda.size() != 2 * nc) || s.sticking.size() != nc)
         throw std::invalid_argument("state does not fit this mesh");
+    const EdgeSnapshot& e = snapshot.edge;
+    if (e.pressure.size() != nc || e.friction.size() != nc || e.slip_velocity.size() != nc ||
+        e.gap.size() != nc || e.state.size() != nc)
+        throw std::invalid_argument("edge does not fit this mesh");
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
             throw std::invalid_argument("cached substep sizes must be finite and > 0");
@@ -465,6 +469,11 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     state_ = s;
     works_ = snapshot.works;
     observables_ = snapshot.observables;
+    edge_.pressure = e.pressure;  // x stays the mesh's
+    edge_.friction = e.friction;
+    edge_.slip_velocity = e.slip_velocity;
+    edge_.gap = e.gap;
+    edge_.state = e.state;
     energies_current_ = false;
 }
 

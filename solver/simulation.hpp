@@ -54,6 +54,7 @@ struct SimulationSnapshot {
     Works works;              // since t0
     Observables observables;  // the last step's averages
     std::vector<double> factor_substeps;  // Stepper::cached_substeps()
+    EdgeSnapshot edge;        // the last step's edge (its x is the mesh's)
 };
 
 // What the last communication step cost.
@@ -106,7 +107,7 @@ public:
     int substeps_for(double h) const;
 
     SimulationSnapshot snapshot() const {
-        return {state_, works_, observables_, stepper_->cached_substeps()};
+        return {state_, works_, observables_, stepper_->cached_substeps(), edge_};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);

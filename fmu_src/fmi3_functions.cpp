@@ -63,11 +63,17 @@ void check_configuration(const Instance* instance, const Variable* v) {
                          " is not a structural parameter: only those in Configuration Mode");
 }
 
-// A whole number that fits the model's int, or an error naming the variable.
-int as_int(const Variable& v, long double x) {
-    if (!(x >= INT_MIN && x <= INT_MAX))
-        throw ModelError(std::string("variable ") + v.name + " = " + std::to_string(static_cast<double>(x)) +
-                         " is out of range");
+// An integer value as the model's int, or an error naming the variable and its limits (the
+// model checks the limits of the values that fit).
+template <class T>
+int as_int(const Variable& v, T x) {
+    bool fits;
+    if constexpr (std::is_unsigned_v<T>) fits = x <= static_cast<T>(INT_MAX);
+    else fits = x >= INT_MIN && x <= INT_MAX;
+    if (!fits)
+        throw ModelError(std::string("variable ") + v.name + " = " + std::to_string(x) +
+                         " is out of range: must be >= " + std::to_string(static_cast<long long>(v.min)) +
+                         " and <= " + std::to_string(static_cast<long long>(v.max)));
     return static_cast<int>(x);
 }
 
@@ -148,7 +154,7 @@ fmi3Status set_values(fmi3Instance instance_, const char* function, const char* 
             const bool after = initialized(instance);
             if constexpr (std::is_same_v<T, fmi3Float64>) model.set_real(*v, values[k], after);
             else if constexpr (std::is_same_v<T, fmi3String>) model.set_string(*v, values[k], after);
-            else model.set_integer(*v, as_int(*v, static_cast<long double>(values[k])), after);
+            else model.set_integer(*v, as_int(*v, values[k]), after);
         }
         return fmi3OK;
     });

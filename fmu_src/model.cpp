@@ -254,7 +254,11 @@ ModelState ContactBodyModel::save() const {
     s.input_rates = input_rates_;
     s.previous_inputs = previous_inputs_;
     s.has_simulation = sim_ && !rebuild_;
-    if (s.has_simulation) s.simulation = sim_->snapshot();
+    if (s.has_simulation) {
+        s.simulation = sim_->snapshot();
+        // The outputs as they are, not as last read: the bytes do not depend on what was read.
+        s.values.out = sim_->observables();
+    }
     if (fields_) s.field_output_times = fields_->times();
     s.next_field_output = next_field_output_;
     if (edge_) s.edge_rows = edge_->rows();

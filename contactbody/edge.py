@@ -1,8 +1,10 @@
 """The contact edge over time: reads the FMU's edge history (result_directory/
-contactbody_edge.npy, written when edge_output_interval > 0) and plots it.
+contactbody_edge.npy, written when edge_output_interval > 0), or takes it from the FMI 3.0
+FMU's array outputs in a simulate_fmu result, and plots it.
 
     import contactbody.edge as edge
     e = edge.load("out/contactbody_edge.npy")       # structured array, one record per time
+    e = edge.from_result(simulate_fmu("ContactBody_fmi3.fmu", ...))  # the same records
     edge.plot(e, "edge.png", times=[0.005, 0.01])     # x-t maps and pressure profiles
 """
 from __future__ import annotations
@@ -22,6 +24,32 @@ def load(path):
     like normal_force and friction_force), slip_velocity (m/s, over the last substep,
     relative to the foundation), gap (m, end of the step), state (0 open, 1 stick, 2 slip)."""
     return np.load(path)
+
+
+# The FMI 3.0 FMU's array outputs and the history's fields they fill.
+ARRAYS = {"x": "edge_x", "pressure": "edge_pressure", "friction": "edge_friction",
+          "slip_velocity": "edge_slip_velocity", "gap": "edge_gap", "state": "edge_state"}
+
+
+def dtype(nodes):
+    """The history's record type (the .npy file's) for `nodes` bottom nodes."""
+    return np.dtype([("time", "<f8")] + [(field, "i1" if field == "state" else "<f8", (nodes,))
+                                         for field in ARRAYS])
+
+
+def from_result(result):
+    """The edge history as load() gives it, from a simulate_fmu result of the FMI 3.0 FMU
+    (ContactBody_fmi3.fmu), whose edge_* outputs fmpy records as shaped columns."""
+    missing = [name for name in ARRAYS.values() if name not in result.dtype.names]
+    if missing:
+        raise ValueError(f"the result has no {', '.join(missing)}: simulate the FMI 3.0 FMU "
+                         "(ContactBody_fmi3.fmu) and record its edge_* outputs")
+    nodes = result["edge_x"].shape[1]
+    edge = np.empty(len(result), dtype(nodes))
+    edge["time"] = result["time"]
+    for field, name in ARRAYS.items():
+        edge[field] = result[name]
+    return edge
 
 
 def plot(edge, path, times=None, title=None):

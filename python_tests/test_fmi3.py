@@ -1,9 +1,8 @@
 """Issue 21: the same body as an FMI 3.0 Co-Simulation FMU (build/ContactBody_fmi3.fmu), from
 the same variable table and the same binary, with the contact edge as arrays sized by the
 structural parameter edge_nodes = nx + 1."""
-import ctypes
+import pathlib
 import shutil
-import tempfile
 import zipfile
 from xml.etree import ElementTree
 
@@ -315,3 +314,40 @@ def test_refusals_name_the_function_and_the_cause(make3, vr3, md3, unzipped3):
         slave.instantiate(eventModeUsed=True,
                           logMessage=lambda e, s, c, m: messages.append(m.decode()))
     assert "no event mode" in messages[-1]
+
+
+def test_the_arrays_are_the_edge_history_record_for_record(tmp_path):
+    """The FMI 3.0 arrays and the FMI 2.0 FMU's edge history file (edge_output_interval) come
+    from the same edge snapshot: equal bit for bit at every output, through
+    contactbody.edge.from_result."""
+    from contactbody import edge
+    scene = {"initial_state": 1, "foundation_velocity": 0.05, "friction_coefficient": 0.5,
+             "static_friction_ratio": 2.0, "damping_stiffness": 4e-6}
+    fmpy.simulate_fmu(str(FMU), stop_time=3e-3, output_interval=1e-4, output=["energy"],
+                      start_values={**scene, "result_directory": str(tmp_path),
+                                    "field_output_interval": 1.0, "edge_output_interval": 1e-4})
+    history = edge.load(tmp_path / "contactbody_edge.npy")
+    arrays = edge.from_result(fmpy.simulate_fmu(str(FMU3), stop_time=3e-3, output_interval=1e-4,
+                                                start_values=scene))
+    assert arrays.dtype == history.dtype and len(arrays) == len(history) == 31
+    assert arrays.tobytes() == history.tobytes()
+    assert (arrays["state"] == 1).any() and (arrays["state"] == 2).any()
+
+
+def test_the_example_plots_the_map_from_simulate_fmu(tmp_path):
+    import subprocess
+    import sys
+    from conftest import ROOT
+    out = subprocess.run([sys.executable, str(ROOT / "examples" / "edge_map_fmi3.py"), "--out",
+                          str(tmp_path)], capture_output=True, text=True, cwd=ROOT / "examples")
+    assert out.returncode == 0, out.stderr
+    assert "recorded as (1001, 21)" in out.stdout and "equal active_contact_nodes at every output: True" in out.stdout
+    assert (tmp_path / "edge_map_fmi3.png").stat().st_size > 10_000
+
+
+def test_committed_fmi3_model_description_is_the_generated_one(unzipped3):
+    from conftest import ROOT
+    generated = (pathlib.Path(unzipped3) / "modelDescription.xml").read_text()
+    committed = (ROOT / "modelDescription" / "modelDescription_fmi3.xml").read_text()
+    assert generated == committed, ("modelDescription/modelDescription_fmi3.xml is stale: copy "
+                                    "build/fmu/ContactBody_fmi3/modelDescription.xml")

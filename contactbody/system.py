@@ -155,7 +155,11 @@ def configured_copy(fmu_path, values: dict) -> bytes:
     which the FMU reads at instantiation and returns to at fmi2Reset (fmu_src/
     resource_start_values.hpp), and in its modelDescription's start attributes, so that an
     importer gets them whether it applies start values (SSP tools, the ssv binding) or not
-    (fmpy 0.3.32's simulate_ssp)."""
+    (fmpy 0.3.32's simulate_ssp).
+
+    FMI 3.0 (ContactBody_fmi3.fmu): the same, and a new nx also sets edge_nodes' start to
+    nx + 1, so that an importer that sizes the edge arrays from the modelDescription (fmpy
+    does) records nx + 1 values."""
     import xml.etree.ElementTree as ET
     out = io.BytesIO()
     with zipfile.ZipFile(fmu_path) as src, zipfile.ZipFile(out, "w") as dst:
@@ -163,10 +167,18 @@ def configured_copy(fmu_path, values: dict) -> bytes:
             data = src.read(info)
             if info.filename == "modelDescription.xml":
                 root = ET.fromstring(data)
-                for v in root.iter("ScalarVariable"):
-                    if v.get("name") in values:
-                        typed = next(iter(v))  # Real, Integer, Enumeration, String
-                        typed.set("start", repr(values[v.get("name")]))
+                starts = dict(values)
+                if root.get("fmiVersion", "").startswith("3") and "nx" in values:
+                    starts["edge_nodes"] = int(values["nx"]) + 1
+                for v in root.find("ModelVariables"):
+                    if v.get("name") not in starts:
+                        continue
+                    # FMI 2.0: the typed child of ScalarVariable; FMI 3.0: the element itself,
+                    # or its <Start value=...> for Strings.
+                    typed = next(iter(v)) if v.tag == "ScalarVariable" else v
+                    start = typed.find("Start")
+                    (typed if start is None else start).set(
+                        "start" if start is None else "value", repr(starts[v.get("name")]))
                 data = ET.tostring(root, encoding="UTF-8", xml_declaration=True)
             dst.writestr(info, data)
         dst.writestr("resources/start_values.txt", "".join(

@@ -111,9 +111,20 @@ fmi3Status get_values(fmi3Instance instance_, const char* function, const char* 
             check_configuration(instance, v);
             needed += v ? model.size(*v) : 1;
         }
-        if (needed != nValues)
-            throw ModelError("nValues is " + std::to_string(nValues) + ", the variables hold " +
-                             std::to_string(needed));
+        if (needed != nValues) {
+            size_t array_size = 0;
+            for (size_t k = 0; k < nvr; ++k)
+                if (const Variable* v = variable(vr[k], type); v && v->is_array())
+                    array_size = model.size(*v);
+            throw ModelError(
+                "nValues is " + std::to_string(nValues) + ", the variables hold " +
+                std::to_string(needed) +
+                (array_size ? " (each edge array holds edge_nodes = nx + 1 = " +
+                                  std::to_string(array_size) +
+                                  " values; an importer that sizes arrays from the "
+                                  "modelDescription needs the start of edge_nodes changed too)"
+                            : std::string()));
+        }
         T* out = values;
         for (size_t k = 0; k < nvr; ++k) {
             const Variable* v = variable(vr[k], type);

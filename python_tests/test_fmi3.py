@@ -351,3 +351,21 @@ def test_committed_fmi3_model_description_is_the_generated_one(unzipped3):
     committed = (ROOT / "modelDescription" / "modelDescription_fmi3.xml").read_text()
     assert generated == committed, ("modelDescription/modelDescription_fmi3.xml is stale: copy "
                                     "build/fmu/ContactBody_fmi3/modelDescription.xml")
+
+
+def test_a_configured_copy_with_another_nx_runs_in_plain_fmpy(tmp_path):
+    """fmpy sizes the arrays from the modelDescription's start of edge_nodes (it does not enter
+    Configuration Mode): contactbody.system.configured_copy writes nx and edge_nodes = nx + 1,
+    and plain simulate_fmu records 11-node arrays that add up to normal_force."""
+    from contactbody.system import configured_copy
+    copy = tmp_path / "ContactBody_fmi3_nx10.fmu"
+    copy.write_bytes(configured_copy(FMU3, {"nx": 10, "friction_coefficient": 0.2}))
+    assert validate_fmu(str(copy)) == []
+    r = fmpy.simulate_fmu(str(copy), stop_time=1e-3, output_interval=H)
+    assert r["edge_pressure"].shape == (11, 11)
+    assert np.allclose(r["edge_x"][0], np.linspace(0, 0.1, 11))
+    sums = r["edge_pressure"] @ edge_shares(r["edge_x"][0])
+    assert np.abs(sums - r["normal_force"]).max() <= 1e-12 * r["normal_force"].max()
+    # Setting nx alone through fmpy's start values: the FMU's arrays grow, fmpy's stay at 21.
+    with pytest.raises(FMICallException):
+        fmpy.simulate_fmu(str(FMU3), stop_time=1e-3, output_interval=H, start_values={"nx": 10})

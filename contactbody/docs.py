@@ -55,7 +55,35 @@ def variable_table(fmu=None) -> str:
               "| type | values |", "|---|---|"]
     for t in enumerations.values():
         lines.append(f"| {t.name} | " + ", ".join(f"{i.value} = `{i.name}`" for i in t.items) + " |")
+    fmu3 = find_fmu(fmu).with_name("ContactBody_fmi3.fmu")
+    if fmu3.exists():
+        lines += [""] + _fmi3_section(md, fmpy.read_model_description(str(fmu3)))
     return "\n".join(lines) + "\n"
+
+
+def _fmi3_section(md2, md3):
+    """What the FMI 3.0 FMU (ContactBody_fmi3.fmu, from the same table) adds or types otherwise."""
+    two = {v.name for v in md2.modelVariables}
+    lines = ["## FMI 3.0 (`ContactBody_fmi3.fmu`)", "",
+             "The same variables by the same names and value references, with FMI 3.0's types: "
+             "Real is Float64, Integer Int32, Enumerations are set and read as Int64; `nx` and "
+             "`ny` are structural parameters of type UInt64 (settable in Configuration Mode, at "
+             "instantiation and in Initialization Mode). It adds the independent variable "
+             "`time` and the contact edge as arrays of `edge_nodes` = nx + 1 values, one per "
+             "bottom node ordered by x:", "",
+             "| name | value reference | type | causality | unit | size | description |",
+             "|---|---|---|---|---|---|---|"]
+    for v in md3.modelVariables:
+        if v.name in two:
+            continue
+        kind = f"Enumeration ({v.declaredType.name})" if v.type == "Enumeration" else v.type
+        size = " x ".join(d.variable.name if d.variable is not None else str(d.start)
+                          for d in v.dimensions) or "1"
+        lines.append(f"| `{v.name}` | {v.valueReference} | {kind} | {v.causality} | "
+                     f"{v.unit or ''} | {size} | {_cell(v.description or '')} |")
+    states = [t for t in md3.typeDefinitions if t.name == "ContactState"][0]
+    lines += ["", "ContactState: " + ", ".join(f"{i.value} = `{i.name}`" for i in states.items)]
+    return lines
 
 
 if __name__ == "__main__":

@@ -41,7 +41,7 @@ const std::vector<Variable> table = {
     {"height", 2, T::Real, C::parameter, V::fixed, "m", "Height H of the body", 0.1, 1e-6, inf, ACCESS_REAL(height)},
     {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(nx, Standard::both)},
     {"ny", 4, T::Integer, C::parameter, V::fixed, "", "Cells along y", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(ny, Standard::both)},
-    {"edge_nodes", 31, T::Integer, C::parameter, V::fixed, "", "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused at initialization)", 21, 2, max_cells_per_direction + 1, ACCESS_STRUCTURAL(edge_nodes, Standard::fmi3)},
+    {"edge_nodes", 31, T::Integer, C::parameter, V::fixed, "", "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused when Configuration Mode ends and at initialization)", 21, 2, max_cells_per_direction + 1, ACCESS_STRUCTURAL(edge_nodes, Standard::fmi3)},
     {"density", 5, T::Real, C::parameter, V::fixed, "kg/m3", "Density rho", 1000, 1e-3, inf, ACCESS_REAL(density)},
     {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, ACCESS_REAL(lambda)},
     {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 1, inf, ACCESS_REAL(mu)},

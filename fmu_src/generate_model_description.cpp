@@ -62,6 +62,7 @@ const std::map<std::string, std::string> units = {
     {"m", R"(m="1")"},
     {"s", R"(s="1")"},
     {"1/s", R"(s="-1")"},
+    {"s/m", R"(m="-1" s="1")"},
     {"m/s", R"(m="1" s="-1")"},
     {"kg/m3", R"(kg="1" m="-3")"},
     {"kg/m", R"(kg="1" m="-1")"},

@@ -65,6 +65,8 @@ const std::vector<Variable> table = {
     {"max_energy", 29, T::Real, C::parameter, V::fixed, "J/m", "Blow-up guard: a step that ends with the energy E above this fails with fmi2Error, naming the time, E, the works and the likely cause; 0 = no absolute limit", 0, 0, inf, ACCESS_REAL(max_energy)},
     {"max_energy_ratio", 30, T::Real, C::parameter, V::fixed, "", "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with fmi2Error, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is 4x above the largest growth in the paper's Figs. 7-8 (2.3e5: variant 0, F = 1.2, internal_step 1e-6 s)", 1e6, 0, inf, ACCESS_REAL(max_energy_ratio)},
     {"static_friction_ratio", 27, T::Real, C::parameter, V::fixed, "", "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)", 1, 1, max_static_friction_ratio, ACCESS_REAL(static_friction_ratio)},
+    {"stribeck_velocity", 32, T::Real, C::parameter, V::fixed, "m/s", "Slip-rate law: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity) + viscous_friction |v| with F_d = friction_coefficient, F_s = static_friction_ratio x F_d and v the scheme's slip rate, taken implicitly in the step; 0 = no Stribeck term (F_s is then the stick memory of static_friction_ratio)", 0, 0, inf, ACCESS_REAL(stribeck_velocity)},
+    {"viscous_friction", 33, T::Real, C::parameter, V::fixed, "s/m", "Slip-rate law: the viscous term c_v |v| of F(v) (see stribeck_velocity); 0 = none", 0, 0, max_viscous_friction, ACCESS_REAL(viscous_friction)},
     // Inputs
     {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, ACCESS_REAL(foundation_velocity)},
     {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, ACCESS_REAL(top_displacement)},
@@ -117,6 +119,8 @@ SceneParameters Values::scene() const {
     p.mu = mu;
     p.friction_coefficient = friction_coefficient;
     p.static_friction_ratio = static_friction_ratio;
+    p.stribeck_velocity = stribeck_velocity;
+    p.viscous_friction = viscous_friction;
     p.mass_matrix = static_cast<MassVariant>(mass_matrix);
     p.internal_step = internal_step;
     p.contact_tolerance = contact_tolerance;

@@ -24,6 +24,7 @@ struct Values {
     int initial_state;        // InitialState
     double top_mass, initial_velocity_x, initial_velocity_y;
     double static_friction_ratio;
+    double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
     std::string result_directory;  // field output; empty = none
     double field_output_interval;

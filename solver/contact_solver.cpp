@@ -19,6 +19,18 @@ std::uint64_t ContactProblem::next_revision() {
     return ++counter;
 }
 
+double ContactProblem::coefficient(Eigen::Index i, double slip, double* derivative) const {
+    const double v = std::abs(slip) / rate.slip_time, sign = slip >= 0 ? 1.0 : -1.0;
+    double F = friction[i] + rate.viscous * v, dF = rate.viscous;
+    if (rate.stribeck_velocity > 0 && rate.excess != 0) {
+        const double e = rate.excess * std::exp(-v / rate.stribeck_velocity);
+        F += e;
+        dF -= e / rate.stribeck_velocity;
+    }
+    if (derivative) *derivative = dF * sign / rate.slip_time;
+    return F;
+}
+
 // Alart-Curnier residual phi(lambda), zero exactly at a solution; piecewise linear in lambda,
 // so a semi-smooth Newton step lands on the solution once the node states are right.
 // The augmentation parameters r = 1 / diag(W) make phi a force in every row.
@@ -31,6 +43,12 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
     phi.resize(lambda.size());
     status_.resize(n);
     pattern_.resize(n);
+    const bool rate = friction && p.rate_dependent();
+    if (rate) {
+        rate_F_.resize(n);
+        rate_dF_.resize(n);
+        trial_pressure_.resize(n);
+    }
     for (Eigen::Index i = 0; i < n; ++i) {
         const double pressure = -lambda[i];
         const double trial = pressure - r_[i] * (p.gap_limit[i] - u_hat_[i]);
@@ -47,7 +65,13 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
             status_[i] = NodeStatus::stick;
             continue;
         }
-        const double bound = p.friction[i] * trial;
+        double F = p.friction[i];
+        if (rate) {
+            F = p.coefficient(i, u_hat_[n + i] - p.slip_origin[i], &rate_dF_[i]);
+            rate_F_[i] = F;
+            trial_pressure_[i] = trial;
+        }
+        const double bound = F * trial;
         const double z = lambda[n + i] - r_[n + i] * (u_hat_[n + i] - p.slip_origin[i]);
         if (std::abs(z) <= bound) {
             phi[n + i] = lambda[n + i] - z;
@@ -135,6 +159,44 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
                 step_[n + i] -= slip_sign(p, i) * step_[i];
 }
 
+// J delta = -phi with every row of J, for a slip-rate law. Rows as in residual():
+//   open:   phi_N = -lambda_N, phi_T = lambda_T
+//   active: phi_N = r_N (gap - u_N)
+//   stick:  phi_T = r_T (u_T - origin)
+//   slip:   phi_T = lambda_T - s F(v) trial, trial = -lambda_N - r_N (gap - u_N), s = sign(z)
+void ContactSolver::full_newton_direction(const ContactProblem& p) {
+    const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
+    if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
+    auto J = reduced_matrix_.topLeftCorner(m, m);
+    J.setZero();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Index t = n + i;
+        if (pattern_[i] == 0) {
+            J(i, i) = -1;
+            J(t, t) = 1;
+            continue;
+        }
+        J.row(i) = -r_[i] * p.W.row(i);
+        if (pattern_[i] == 1) {
+            J.row(t) = r_[t] * p.W.row(t);
+            continue;
+        }
+        const double s = pattern_[i] > 0 ? 1.0 : -1.0;
+        // d trial = -d lambda_N + r_N W(N_i, :) d lambda; dF = F' W(T_i, :) d lambda
+        J.row(t) = -s * (rate_F_[i] * r_[i] * p.W.row(i) + trial_pressure_[i] * rate_dF_[i] * p.W.row(t));
+        J(t, i) += s * rate_F_[i];
+        J(t, t) += 1;
+    }
+    step_ = -phi_;
+    pivots_.resize(static_cast<size_t>(m));
+    int rows = static_cast<int>(m), lda = static_cast<int>(m), one = 1, info = 0;
+    dgetrf_(&rows, &rows, reduced_matrix_.data(), &lda, pivots_.data(), &info);
+    if (info != 0) throw ContactSolveError("contact solver: singular Newton matrix");
+    char no_transpose = 'N';
+    dgetrs_(&no_transpose, &rows, &one, reduced_matrix_.data(), &lda, pivots_.data(),
+            step_.data(), &rows, &info);
+}
+
 ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
                                       const ContactSolverOptions& options,
                                       Eigen::VectorXd& lambda) {
@@ -213,9 +275,13 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
             const double aNT = friction ? p.W(i, t) : 0.0, aTT = friction ? p.W(t, t) : 1.0;
             const double qN = u_hat_[i] - p.W(i, i) * lN - aNT * lT;
             const double qT = friction ? u_hat_[t] - aNT * lN - aTT * lT : 0.0;
+            // A slip-rate law enters lagged, at the node's current slip: the sweeps iterate it
+            // to the fixed point the residual checks.
+            const double F = !friction ? 0.0
+                             : p.rate_dependent() ? p.coefficient(i, u_hat_[t] - p.slip_origin[i])
+                                                  : p.friction[i];
             const Local l = solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
-                                       friction ? p.slip_origin[i] : 0.0,
-                                       friction ? p.friction[i] : 0.0, friction);
+                                       friction ? p.slip_origin[i] : 0.0, F, friction);
             if (l.lN != lN) {
                 u_hat_.noalias() += (l.lN - lN) * p.W.col(i);
                 lambda[i] = l.lN;
@@ -251,16 +317,22 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         ++info.iterations;
         // The reduced Newton matrix is fixed by W and the node states: when the states of
         // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
-        const bool reuse = p.revision != 0 && p.revision == lu_revision_ &&
+        const bool rate = p.has_friction() && p.rate_dependent();
+        const bool reuse = !rate && p.revision != 0 && p.revision == lu_revision_ &&
                            pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_ &&
                            p.friction.size() == lu_friction_.size() && p.friction == lu_friction_;
-        newton_direction(p, reuse);
-        if (!reuse) {
+        if (rate) {
+            lu_revision_ = 0;  // the buffer now holds another matrix
+            full_newton_direction(p);
+        } else {
+            newton_direction(p, reuse);
+        }
+        if (!reuse && !rate) {
             lu_pattern_ = pattern_;
             lu_friction_ = p.friction;
             lu_revision_ = p.revision;
-            ++factorizations_;
         }
+        if (!reuse) ++factorizations_;
         if (!step_.allFinite()) {
             lu_revision_ = 0;
             throw ContactSolveError("contact solver: singular Newton matrix");

@@ -6,6 +6,9 @@
 //   lambda_N <= 0,  u_N - gap_limit <= 0,  lambda_N (u_N - gap_limit) = 0,
 //   lambda_T in F_i lambda_N Sgn(u_T - slip_origin)        (Coulomb on the slip).
 // Without friction (F == 0) the tangential part is absent: lambda and u_hat have n entries.
+// With a slip-rate law (RateLaw) F_i depends on the node's slip rate v = (u_T - slip_origin) /
+// slip_time, implicitly: F_i(v) = friction_i + excess exp(-|v| / stribeck_velocity)
+// + viscous |v|.
 #pragma once
 
 #include <Eigen/Dense>
@@ -24,6 +27,18 @@ struct ContactProblem {
     Eigen::VectorXd gap_limit;   // n: u_N must not exceed it
     Eigen::VectorXd slip_origin; // n: slip is u_T - slip_origin (unused without friction)
     Eigen::VectorXd friction;    // n: F_i, the node's friction coefficient (with friction)
+    // The slip-rate dependence of F_i (off while stribeck_velocity and viscous are 0).
+    struct RateLaw {
+        double excess = 0;             // F_s - F_d, the Stribeck drop
+        double stribeck_velocity = 0;  // m/s; 0: no Stribeck term
+        double viscous = 0;            // s/m
+        double slip_time = 1;          // s: v = slip / slip_time
+    } rate;
+    bool rate_dependent() const {
+        return rate.viscous > 0 || (rate.stribeck_velocity > 0 && rate.excess > 0);
+    }
+    // F_i at slip (u_T - slip_origin), and dF_i/dslip.
+    double coefficient(Eigen::Index i, double slip, double* derivative = nullptr) const;
     // Identifies W: the solver reuses its Newton factorization across solves while the revision
     // (nonzero) and the node states are unchanged. Set a new one whenever W changes; 0 = never
     // reuse. next_revision() gives process-wide unique values.
@@ -71,6 +86,9 @@ private:
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     void newton_direction(const ContactProblem& p, bool reuse);
+    // The full generalized Jacobian, for a slip-rate law: a slipping node's friction then
+    // depends on its own tangential motion, which the reduced system eliminates.
+    void full_newton_direction(const ContactProblem& p);
     // +-F_i for a slipping node, the sign of its slip.
     double slip_sign(const ContactProblem& p, Eigen::Index i) const {
         return pattern_[i] > 0 ? p.friction[i] : -p.friction[i];
@@ -78,6 +96,7 @@ private:
 
     // Workspace kept between calls so that steady stepping does not reallocate.
     Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, start_;
+    Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
     std::vector<int> pivots_;

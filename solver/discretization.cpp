@@ -62,6 +62,10 @@ void check_parameters(const SceneParameters& p) {
         reject("max_energy_ratio", "finite and >= 0 (0: no limit)", p.max_energy_ratio);
     if (!(p.static_friction_ratio >= 1 && p.static_friction_ratio <= max_static_friction_ratio))
         reject("static_friction_ratio", "in [1, 10]", p.static_friction_ratio);
+    if (!(std::isfinite(p.stribeck_velocity) && p.stribeck_velocity >= 0))
+        reject("stribeck_velocity", "finite and >= 0 (0: no Stribeck term)", p.stribeck_velocity);
+    if (!(p.viscous_friction >= 0 && p.viscous_friction <= max_viscous_friction))
+        reject("viscous_friction", "in [0, 100] s/m", p.viscous_friction);
     const int variant = static_cast<int>(p.mass_matrix);
     if (variant < 0 || variant >= num_mass_variants)
         reject("mass_matrix", "0, 1, 2, 3 or 4", variant);

@@ -35,6 +35,12 @@ struct SceneParameters {
     // A node that sticks needs static_friction_ratio x F to break loose; a slipping node feels
     // F. 1 is Coulomb's law; above 1 the friction drops at the onset of slip (stick-slip).
     double static_friction_ratio = 1;
+    // Slip-rate dependence: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity)
+    // + viscous_friction |v|, F_d = friction_coefficient, F_s = static_friction_ratio x F_d,
+    // v the discrete slip rate, taken implicitly. 0 and 0: today's law (with the stick memory
+    // of static_friction_ratio).
+    double stribeck_velocity = 0;  // m/s
+    double viscous_friction = 0;   // s/m
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
     double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
@@ -65,6 +71,8 @@ constexpr double max_static_friction_ratio = 10;
 // Measured dry friction coefficients stay below about 3 (clean metals in vacuum excepted); a
 // hundred means a bond, not friction, and only stiffens the contact step.
 constexpr double max_friction_coefficient = 100;
+// c_v |v| adds 1 to F at |v| = 1 / c_v: 100 s/m does so at 1 cm/s.
+constexpr double max_viscous_friction = 100;
 
 
 // Throws std::invalid_argument naming the first offending parameter (the FMU's variable names).

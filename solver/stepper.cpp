@@ -233,8 +233,19 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
             problem_.slip_origin[i] = implicit ? 0.25 * dt * (s.v[dof_x(node)] + load.foundation_velocity)
                                                : 0.5 * dt * load.foundation_velocity;
     }
-    const bool static_friction = friction && params_.static_friction_ratio != 1;
-    if (static_friction)  // the nodes that stuck in the last substep hold with F_s
+    // The slip rate the law sees: the scheme's own, (u^{k+1} - u^k) / dt - V at the midpoint,
+    // v^{k+1} - V for the implicit-contact variants (slip / slip_time, docs/contract.md).
+    const bool stribeck = friction && params_.stribeck_velocity > 0;
+    if (friction) {
+        problem_.rate.excess = stribeck ? (params_.static_friction_ratio - 1) * params_.friction_coefficient : 0;
+        problem_.rate.stribeck_velocity = params_.stribeck_velocity;
+        problem_.rate.viscous = params_.viscous_friction;
+        problem_.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
+    }
+    // Without a Stribeck velocity the static coefficient is a memory: the nodes that stuck in
+    // the last substep hold with F_s. With one, F_s is the law's value at zero slip rate.
+    const bool static_friction = friction && params_.static_friction_ratio != 1 && !stribeck;
+    if (static_friction)
         for (int i = 0; i < nc; ++i)
             problem_.friction[i] = params_.friction_coefficient *
                                    (s.sticking[i] != 0 ? params_.static_friction_ratio : 1.0);

@@ -168,3 +168,57 @@ TEST(ContactSolver, FrictionlessProblemHasNoTangentialUnknowns) {
         EXPECT_LE(std::abs(lambda[i] * u[i]), 1e-12);
     }
 }
+
+// Issue 22: a slip-rate law on a random 6-node problem (W symmetric positive definite, nodes
+// pressed and driven to slip). Newton with the full Jacobian and the Gauss-Seidel fallback
+// (forced by max_iterations = 0) reach the same solution, and at it every slipping node's
+// friction is F(v) at its own slip rate, every sticking node's within F(0).
+TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
+    const int n = 6;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    Eigen::MatrixXd R(2 * n, 2 * n);
+    for (int i = 0; i < 2 * n; ++i)
+        for (int j = 0; j < 2 * n; ++j) R(i, j) = u(rng);
+    ContactProblem p;
+    p.W = 0.1 * R * R.transpose() + Eigen::MatrixXd::Identity(2 * n, 2 * n);
+    p.a.resize(2 * n);
+    for (int i = 0; i < n; ++i) {
+        p.a[i] = 0.5 + 0.2 * u(rng);          // pressed
+        p.a[n + i] = (i % 3 == 0 ? 0.05 : 2.0) * u(rng);  // some stick, most slip
+    }
+    p.gap_limit = Eigen::VectorXd::Zero(n);
+    p.slip_origin = Eigen::VectorXd::Zero(n);
+    p.friction = Eigen::VectorXd::Constant(n, 0.3);
+    p.rate.excess = 0.2;
+    p.rate.stribeck_velocity = 0.5;
+    p.rate.viscous = 0.05;
+    p.rate.slip_time = 0.1;
+    ASSERT_TRUE(p.rate_dependent());
+
+    ContactSolver newton_solver, gs_solver;
+    Eigen::VectorXd newton = Eigen::VectorXd::Zero(2 * n), gs = newton;
+    const ContactSolveInfo a = newton_solver.solve(p, ContactSolverOptions{1e-13, 100, 0}, newton);
+    EXPECT_EQ(a.sweeps, 0);
+    const ContactSolveInfo b = gs_solver.solve(p, ContactSolverOptions{1e-13, 0, 100000}, gs);
+    EXPECT_GT(b.sweeps, 0);
+    EXPECT_LE((newton - gs).lpNorm<Eigen::Infinity>(), 1e-10 * newton.lpNorm<Eigen::Infinity>());
+
+    const Eigen::VectorXd uh = p.a + p.W * newton;
+    int slipping = 0, sticking = 0;
+    for (int i = 0; i < n; ++i) {
+        const double N = -newton[i], T = newton[n + i], slip = uh[n + i] - p.slip_origin[i];
+        ASSERT_GT(N, 0);
+        EXPECT_NEAR(uh[i], p.gap_limit[i], 1e-12);
+        if (std::abs(slip) > 1e-12) {
+            ++slipping;
+            EXPECT_NEAR(std::abs(T), p.coefficient(i, slip) * N, 1e-11);
+            EXPECT_LT(T * slip, 0);  // friction opposes the slip
+        } else {
+            ++sticking;
+            EXPECT_LE(std::abs(T), p.coefficient(i, 0) * N + 1e-11);
+        }
+    }
+    EXPECT_GT(slipping, 0);
+    EXPECT_GT(sticking, 0);
+}

@@ -13,12 +13,13 @@ from fmpy.fmi3 import fmi3FMUState
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import FMU, PLATFORM, extract_for
+from conftest import FMU, PLATFORM, SANITIZED, extract_for
 from test_fmi3 import Instance3
 
 pytestmark = pytest.mark.skipif(PLATFORM != "linux64", reason="the FMI 3.0 FMU is tested on linux64")
 
-EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES_FMI3", "600"))
+# The sanitizer job runs a third of them: each call is several times slower there.
+EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES_FMI3", "200" if SANITIZED else "600"))
 FMU3 = FMU.with_name("ContactBody_fmi3.fmu")
 NASTY_REALS = [math.nan, math.inf, -1e308, -1.0, 0.0, 5e-324, 1e-300, 2.5e-5, 0.3, 20.0]
 NASTY_UINTS = [0, 1, 3, 4, 5, 6, 21, 4097, 2**31, 2**64 - 1]

@@ -59,14 +59,58 @@ def calls(md):
 
 
 class Driver:
-    """Runs calls on an instance; returns (status, value) and keeps the successful calls."""
+    """Runs calls on an instance; returns (status, value) and keeps the successful calls.
+    The FMI 3.0 fuzz (test_fuzz_fmi3.py) subclasses it with its own instance, calls and
+    names of the state functions."""
+
+    STATE = {"get": "getFMUstate", "set": "setFMUstate", "serialize": "serializeFMUstate",
+             "deserialize": "deSerializeFMUstate"}
+    BAD_STATE = fmi2FMUstate
 
     def __init__(self, md, unzipped, name):
-        self.inst = Instance(md, unzipped, name)
+        self.inst = self.instantiate(md, unzipped, name)
         self.time = 0.0
         self.states = []
 
+    def instantiate(self, md, unzipped, name):
+        inst = Instance(md, unzipped, name)
+        inst.setInteger([3, 4], [4, 4])  # a small mesh keeps thousands of sequences fast
+        return inst
+
     def apply(self, call):
+        """The calls both standards share; the rest goes to apply_other."""
+        inst, op = self.inst, call[0]
+        state = {k: getattr(inst, v) for k, v in self.STATE.items()}
+        if op == "doStep":
+            t = {"now": self.time, "late": self.time + 1.0, "early": self.time - 1e-3}[call[1]]
+            inst.doStep(t, call[2])
+            self.time = t + call[2]
+            return None
+        if op == "getFMUstate":
+            self.states.append((state["get"](), self.time))
+            return None
+        if op == "setFMUstate":
+            if not self.states:
+                raise LookupError  # nothing to restore: not a call
+            saved, t = self.states[-1]
+            state["set"](saved)
+            self.time = t
+            return None
+        if op == "serializeRoundTrip":
+            if not self.states:
+                raise LookupError
+            saved, t = self.states[-1]
+            self.states.append((state["deserialize"](state["serialize"](saved)), t))
+            return None
+        if op == "badState":
+            return state["set"](self.BAD_STATE(0xDEAD))
+        if op == "reset":
+            inst.reset()
+            self.time = 0.0
+            return None
+        return self.apply_other(call)
+
+    def apply_other(self, call):
         inst, op = self.inst, call[0]
         if op == "setReal":
             return inst.setReal([call[1]], [call[2]])
@@ -76,43 +120,16 @@ class Driver:
             return inst.getReal([call[1]])[0]
         if op == "getInteger":
             return inst.getInteger([call[1]])[0]
-        if op == "doStep":
-            t = {"now": self.time, "late": self.time + 1.0, "early": self.time - 1e-3}[call[1]]
-            inst.doStep(t, call[2])
-            self.time = t + call[2]
-            return None
         if op == "derivative":
             return inst.setRealInputDerivatives([call[1]], [call[2]], [call[3]])
         if op == "setupExperiment":
             inst.setupExperiment(startTime=0.0)
             self.time = 0.0
             return None
-        if op == "getFMUstate":
-            self.states.append((inst.getFMUstate(), self.time))
-            return None
-        if op == "setFMUstate":
-            if not self.states:
-                raise LookupError  # nothing to restore: not a call
-            state, t = self.states[-1]
-            inst.setFMUstate(state)
-            self.time = t
-            return None
-        if op == "serializeRoundTrip":
-            if not self.states:
-                raise LookupError
-            state, t = self.states[-1]
-            self.states.append((inst.deSerializeFMUstate(inst.serializeFMUstate(state)), t))
-            return None
-        if op == "badState":
-            return inst.setFMUstate(fmi2FMUstate(0xDEAD))
         if op == "getRealStatus":
             return inst.getRealStatus(2)
         if op == "getBooleanStatus":
             return inst.getBooleanStatus(3)
-        if op == "reset":
-            inst.reset()
-            self.time = 0.0
-            return None
         return getattr(inst, op)()
 
     def outputs(self, md):
@@ -122,10 +139,12 @@ class Driver:
         except FMICallException as e:
             return ("status", e.status)
 
+    def close(self):
+        self.inst.close()
 
-def run_sequence(md, unzipped, sequence, name):
-    d = Driver(md, unzipped, name)
-    d.inst.setInteger([3, 4], [4, 4])  # a small mesh keeps thousands of sequences fast
+
+def run_sequence(md, unzipped, sequence, name, driver=Driver):
+    d = driver(md, unzipped, name)
     kept, results = [], []
     for call in sequence:
         before = len(d.inst.messages)
@@ -147,7 +166,7 @@ def run_sequence(md, unzipped, sequence, name):
                 d.time = saved_time
             results.append(("failed", e.status))
     out = d.outputs(md)
-    d.inst.close()
+    d.close()
     return kept, results, out
 
 

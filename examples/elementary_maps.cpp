@@ -3,7 +3,11 @@
 // computed by ContactSolver (the stepper's contact solve) from a family of starting multipliers,
 // against the closed forms S1-S4 on the sets sigma_1-sigma_4.
 //   elementary_maps LAME MU DT M1 M2 FRICTION U_TAU_OLD FN_MIN FN_MAX FT_MIN FT_MAX N OUT.csv
-// Writes one CSV row per grid point and prints a JSON summary.
+//                   [EXCESS STRIBECK_VELOCITY VISCOUS]
+// Writes one CSV row per grid point and prints a JSON summary. With the last three (issue 22)
+// friction depends on the slip rate v = slip / (DT / 2): F(v) = FRICTION + EXCESS
+// exp(-|v| / STRIBECK_VELOCITY) + VISCOUS |v|, and the reference set is rate_solutions()
+// (the slip equation's roots) instead of the closed forms.
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -34,10 +38,10 @@ double set_distance(const std::vector<ElementarySolution>& from,
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 14) {
+    if (argc != 14 && argc != 17) {
         std::fprintf(stderr,
                      "usage: elementary_maps LAME MU DT M1 M2 FRICTION U_TAU_OLD FN_MIN FN_MAX "
-                     "FT_MIN FT_MAX N OUT.csv\n");
+                     "FT_MIN FT_MAX N OUT.csv [EXCESS STRIBECK_VELOCITY VISCOUS]\n");
         return 2;
     }
     double v[12];
@@ -47,9 +51,18 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "elementary_maps: N must be at least 2\n");
         return 2;
     }
-    const ElementaryExample example =
+    ElementaryExample example =
         ElementaryExample::from_material(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
-    const bool critical = example.friction() * example.b() == example.c();
+    const bool rate = argc == 17;
+    if (rate) {
+        ContactProblem::RateLaw law;
+        law.excess = std::atof(argv[14]);
+        law.stribeck_velocity = std::atof(argv[15]);
+        law.viscous = std::atof(argv[16]);
+        law.slip_time = v[2] / 2;
+        example.set_rate_law(law);
+    }
+    const bool critical = !rate && example.friction() * example.b() == example.c();
     std::ofstream out(argv[13]);
     if (!out) {
         std::fprintf(stderr, "elementary_maps: cannot write %s\n", argv[13]);
@@ -67,7 +80,8 @@ int main(int argc, char** argv) {
             const double tol = 1e-8 * (1 + f.lpNorm<Eigen::Infinity>());
             int failed = 0;
             const auto found = example.solver_solutions(f, solver, &failed);
-            const auto closed = example.closed_form_solutions(f, -1e-12 * (1 + f.lpNorm<Eigen::Infinity>()));
+            const auto closed = rate ? example.rate_solutions(f)
+                                     : example.closed_form_solutions(f, -1e-12 * (1 + f.lpNorm<Eigen::Infinity>()));
             double violation = 0;
             for (const ElementarySolution& s : found) violation = std::max(violation, example.violation(f, s.x));
             // On sigma_5 (F = c/b) the solutions form the segment S_5: every solution found

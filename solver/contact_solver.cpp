@@ -19,16 +19,20 @@ std::uint64_t ContactProblem::next_revision() {
     return ++counter;
 }
 
-double ContactProblem::coefficient(Eigen::Index i, double slip, double* derivative) const {
-    const double v = std::abs(slip) / rate.slip_time, sign = slip >= 0 ? 1.0 : -1.0;
-    double F = friction[i] + rate.viscous * v, dF = rate.viscous;
-    if (rate.stribeck_velocity > 0 && rate.excess != 0) {
-        const double e = rate.excess * std::exp(-v / rate.stribeck_velocity);
+double ContactProblem::RateLaw::coefficient(double base, double slip, double* derivative) const {
+    const double v = std::abs(slip) / slip_time, sign = slip >= 0 ? 1.0 : -1.0;
+    double F = base + viscous * v, dF = viscous;
+    if (stribeck_velocity > 0 && excess != 0) {
+        const double e = excess * std::exp(-v / stribeck_velocity);
         F += e;
-        dF -= e / rate.stribeck_velocity;
+        dF -= e / stribeck_velocity;
     }
-    if (derivative) *derivative = dF * sign / rate.slip_time;
+    if (derivative) *derivative = dF * sign / slip_time;
     return F;
+}
+
+double ContactProblem::coefficient(Eigen::Index i, double slip, double* derivative) const {
+    return rate.coefficient(friction[i], slip, derivative);
 }
 
 // Alart-Curnier residual phi(lambda), zero exactly at a solution; piecewise linear in lambda,

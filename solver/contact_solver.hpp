@@ -33,10 +33,12 @@ struct ContactProblem {
         double stribeck_velocity = 0;  // m/s; 0: no Stribeck term
         double viscous = 0;            // s/m
         double slip_time = 1;          // s: v = slip / slip_time
+        bool active() const { return viscous > 0 || (stribeck_velocity > 0 && excess > 0); }
+        // base + excess exp(-|v| / stribeck_velocity) + viscous |v| at this slip, and its
+        // derivative with respect to the slip.
+        double coefficient(double base, double slip, double* derivative = nullptr) const;
     } rate;
-    bool rate_dependent() const {
-        return rate.viscous > 0 || (rate.stribeck_velocity > 0 && rate.excess > 0);
-    }
+    bool rate_dependent() const { return rate.active(); }
     // F_i at slip (u_T - slip_origin), and dF_i/dslip.
     double coefficient(Eigen::Index i, double slip, double* derivative = nullptr) const;
     // Identifies W: the solver reuses its Newton factorization across solves while the revision

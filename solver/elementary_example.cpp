@@ -30,6 +30,7 @@ ContactProblem ElementaryExample::problem(const Eigen::Vector2d& f) const {
     p.gap_limit = Eigen::VectorXd::Zero(1);
     p.slip_origin = Eigen::VectorXd::Constant(1, u_tau_old_);
     p.friction = Eigen::VectorXd::Constant(1, friction_);
+    p.rate = rate_;
     return p;
 }
 
@@ -90,7 +91,7 @@ std::vector<ElementarySolution> ElementaryExample::closed_form_solutions(
 }
 
 double ElementaryExample::violation(const Eigen::Vector2d& f, const ElementaryState& x) const {
-    const double un = x[0], ut = x[1], ln = x[2], lt = x[3], F = friction_;
+    const double un = x[0], ut = x[1], ln = x[2], lt = x[3], F = coefficient(ut - u_tau_old_);
     double v = std::max(std::abs(a_ * un - b_ * ut - f[0] - ln),
                         std::abs(-b_ * un + c_ * ut - f[1] - lt));
     v = std::max({v, std::max(un, 0.0), std::max(ln, 0.0), std::abs(un * ln)});
@@ -108,6 +109,64 @@ int ElementaryExample::region_of(const ElementaryState& x, double tol) const {
     const double slip = x[1] - u_tau_old_;
     if (std::abs(slip) <= tol) return 2;
     return slip > 0 ? 3 : 4;
+}
+
+std::vector<ElementarySolution> ElementaryExample::rate_solutions(const Eigen::Vector2d& f) const {
+    std::vector<ElementarySolution> out;
+    const double tol = 1e-9 * scale_of(f);
+    // Rounding margins: on a set's edge a slip root sits at an end of its interval (w = 0, or
+    // N = 0), where the bracketing cannot see it, and the open or sticking state it equals is
+    // admitted instead.
+    const double margin = 1e-12 * scale_of(f);
+    if (in_sigma(1, f, -margin)) add_distinct(out, 1, closed_form(1, f), tol);
+    const double fn = f[0], ft = f[1], ut = u_tau_old_, b = b_, c = c_;
+    const double N0 = b * ut + fn;  // the pressure at the sticking position
+    if (N0 >= -margin && std::abs(c * ut - ft) <= coefficient(0) * std::max(N0, 0.0) + margin)
+        add_distinct(out, 2, ElementaryState(0, ut, -std::max(N0, 0.0), c * ut - ft), tol);
+    for (const double s : {1.0, -1.0}) {
+        // Slip w with s w > 0 and N(w) >= 0. Beyond w = f_tau / c - u_tau_old, G_+ > 0 (F N >= 0);
+        // G_- needs N > 0, so w > -N0 / b.
+        double near = 0, far = 0;
+        if (s > 0) {
+            near = std::max(0.0, -N0 / b);
+            far = std::max(near, ft / c - ut) * (1 + 1e-9) + 1e-12;
+        } else {
+            if (N0 <= 0) continue;
+            near = 0;
+            far = -N0 / b;
+        }
+        auto G = [&](double w) {
+            const double N = b * (ut + w) + fn;
+            return c * (ut + w) - ft + s * coefficient(w) * N;
+        };
+        // Points from the near end: geometric from 1e-14 of the span (the Stribeck drop acts on
+        // |w| ~ slip_time x stribeck_velocity, which may be tiny), then uniform.
+        const double span = far - near;
+        if (!(std::abs(span) > 0)) continue;
+        std::vector<double> t;
+        for (int k = 0; k <= 3000; ++k) t.push_back(std::pow(10.0, -14 + 14.0 * k / 3000));
+        for (int k = 1; k <= 3000; ++k) t.push_back(static_cast<double>(k) / 3000);
+        std::sort(t.begin(), t.end());
+        double w0 = near + t[0] * span, g0 = G(w0);
+        for (size_t k = 1; k < t.size(); ++k) {
+            const double w1 = near + t[k] * span, g1 = G(w1);
+            if ((g0 < 0) != (g1 < 0)) {
+                double lo = w0, hi = w1, glo = g0;
+                for (int it = 0; it < 200 && lo != hi; ++it) {
+                    const double mid = 0.5 * (lo + hi), gm = G(mid);
+                    if ((gm < 0) == (glo < 0)) lo = mid, glo = gm;
+                    else hi = mid;
+                    if (std::nextafter(lo, hi) == hi) break;
+                }
+                const double w = 0.5 * (lo + hi), N = b * (ut + w) + fn;
+                add_distinct(out, s > 0 ? 3 : 4,
+                             ElementaryState(0, ut + w, -N, -s * coefficient(w) * N), tol);
+            }
+            w0 = w1;
+            g0 = g1;
+        }
+    }
+    return out;
 }
 
 std::vector<ElementarySolution> ElementaryExample::solver_solutions(const Eigen::Vector2d& f,

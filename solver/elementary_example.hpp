@@ -38,6 +38,20 @@ public:
     // The condensed problem of ContactSolver for the load f = (f_nu, f_tau).
     ContactProblem problem(const Eigen::Vector2d& f) const;
 
+    // Issue 22: friction depending on the slip rate, F(v) with F_d = friction(), v = slip /
+    // law.slip_time (dt / 2 for the midpoint step). Enters problem(), violation() and
+    // rate_solutions().
+    void set_rate_law(const ContactProblem::RateLaw& law) { rate_ = law; }
+    const ContactProblem::RateLaw& rate_law() const { return rate_; }
+    // F at this slip u_tau - u_tau_old (F(0) = F_s bounds a sticking node).
+    double coefficient(double slip) const { return rate_.coefficient(friction_, slip); }
+    // Every solution of (23) with the rate law, found directly: S1 (open), the sticking
+    // state if F(0) admits it, and each root of the slip equation along the contact
+    //   G_s(w) = c (u_tau_old + w) - f_tau + s F(|w| / slip_time) N(w) = 0,
+    //   N(w) = b (u_tau_old + w) + f_nu >= 0, s w > 0,
+    // bracketed on a grid fine near w = 0 (where the Stribeck drop acts) and bisected.
+    std::vector<ElementarySolution> rate_solutions(const Eigen::Vector2d& f) const;
+
     // The paper's sets: f in sigma_i (closed, i = 1..4; sigma_4 follows the case F < c/b or
     // F > c/b) and the half-line sigma_5 (F = c/b). `margin` > 0 shrinks each set, < 0 grows it;
     // for the line sigma_5 it is also the tolerance on c f_nu + b f_tau = 0.
@@ -63,6 +77,7 @@ public:
 
 private:
     double a_, b_, c_, friction_, u_tau_old_;
+    ContactProblem::RateLaw rate_;
     Eigen::Matrix2d inverse_;
 };
 

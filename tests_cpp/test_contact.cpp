@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <tuple>
 
 #include "contact_solver.hpp"
 #include "elementary_example.hpp"
@@ -221,4 +222,49 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
     }
     EXPECT_GT(slipping, 0);
     EXPECT_GT(sticking, 0);
+}
+
+// rate_solutions() finds the solutions directly (the slip equation's roots); with no rate
+// dependence it must give the paper's closed forms S1-S4, load by load, for the three mass
+// distributions of Figs. 3-4.
+TEST(ElementaryExample, RateSolutionsWithoutRateDependenceAreTheClosedForms) {
+    for (const auto& [m1, m2, F] : {std::tuple{0.0, 1.0, 2.5}, std::tuple{1.0, 0.0, 2.5},
+                                    std::tuple{0.0, 0.0, 1.0}}) {
+        const ElementaryExample e = elementary(m1, m2, F);
+        int compared = 0;
+        for (int i = 0; i <= 20; ++i)
+            for (int j = 0; j <= 20; ++j) {
+                const Eigen::Vector2d f(-2 + 0.2 * i + 0.013, -4 + 0.4 * j + 0.017);  // off boundaries
+                const auto closed = e.closed_form_solutions(f);
+                const auto direct = e.rate_solutions(f);
+                ASSERT_EQ(direct.size(), closed.size()) << f.transpose();
+                for (const ElementarySolution& s : closed) {
+                    double best = 1e300;
+                    for (const ElementarySolution& t : direct)
+                        best = std::min(best, (s.x - t.x).lpNorm<Eigen::Infinity>());
+                    EXPECT_LT(best, 1e-9) << f.transpose();
+                }
+                ++compared;
+            }
+        EXPECT_EQ(compared, 441);
+    }
+}
+
+// Velocity weakening without tangential mass: a load with three solutions of one step
+// (stick, and two slipping states), each reached by ContactSolver from some start.
+TEST(ElementaryExample, VelocityWeakeningWithoutTangentialMassHasSeveralSolutions) {
+    ElementaryExample e = ElementaryExample::from_material(2, 1, 0.01, 0, 0, 0.5, 0.1);
+    ContactProblem::RateLaw law;
+    law.excess = 0.5;
+    law.stribeck_velocity = 0.1;
+    law.slip_time = 0.005;
+    e.set_rate_law(law);
+    const Eigen::Vector2d f(0.4, -0.2);
+    const auto direct = e.rate_solutions(f);
+    ASSERT_EQ(direct.size(), 3u);
+    for (const ElementarySolution& s : direct) EXPECT_LT(e.violation(f, s.x), 1e-12);
+    ContactSolver solver;
+    const auto found = e.solver_solutions(f, solver);
+    EXPECT_GE(found.size(), 2u);
+    for (const ElementarySolution& s : found) EXPECT_LT(e.violation(f, s.x), 1e-10);
 }

@@ -123,6 +123,9 @@ public:
     SubstepReport substep(State& s, double dt, const SubstepLoad& load);
 
     const ContactSnapshot& last_contact() const { return snapshot_; }
+    // The contact problem of the last substep (for studying its solution set: W, a, the
+    // gaps, slip origins and friction law it was solved with). Valid until the next substep.
+    const ContactProblem& last_contact_problem() const { return problem_; }
     // Substep sizes of the cached factors, most recent first. A substep reuses a factor whose
     // size is within 1e-14 of its own, so results depend on these sizes to the last bit:
     // they are part of the state, and restoring them rebuilds exactly those factors.

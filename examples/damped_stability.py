@@ -4,6 +4,11 @@ and 0.25 cm (redistributed_normal, the paper's scene). build/sliding_stability c
 undamped eigenvalues once per (h, F); the damped rates follow exactly from them (see the top
 of sliding_stability.cpp), so the beta axis costs nothing.
 
+The steady state linearized about is the admissible one (--lift-off: the nodes that the full
+contact state would pull on are lifted, issue 22 item 4); --full-contact gives the map of
+issue 10, which linearized about every node touching. Where no admissible steady sliding state
+exists (F >= 1.3 here: the clamped body wedges) the row has no growth rates.
+
 Writes OUT/damped_stability.png, .json and .md (the table of the smallest stabilizing beta).
 
     .venv/bin/python examples/damped_stability.py [--finest NX] [--out DIR]
@@ -25,17 +30,27 @@ PROGRAM = ROOT / "build" / "sliding_stability"
 BETAS = np.linspace(0, 1e-5, 101)
 
 
-def analyse(nx, friction, variant=1):
-    out = subprocess.run([str(PROGRAM), str(nx), repr(friction), str(variant),
-                          *(repr(float(b)) for b in BETAS)],
-                         check=True, capture_output=True, text=True).stdout
-    r = json.loads(out)
+def analyse(nx, friction, variant=1, lift_off=True):
+    run = subprocess.run([str(PROGRAM), *(["--lift-off"] if lift_off else []), str(nx),
+                          repr(friction), str(variant), *(repr(float(b)) for b in BETAS)],
+                         capture_output=True, text=True)
+    if run.returncode == 1 and "no admissible steady contact set" in run.stderr:
+        return {"nx": nx, "h": 0.1 / nx, "friction": friction, "steady_state": False,
+                "growth": None}
+    if run.returncode != 0:
+        raise RuntimeError(f"sliding_stability {nx} {friction}: {run.stderr.strip()}")
+    r = json.loads(run.stdout)
     return {"nx": nx, "h": r["h"], "friction": friction, "seconds": r["seconds"],
+            "steady_state": True, "lifted_nodes": r["lifted_nodes"],
+            "normal_force": r["normal_force"],
             "growth": [d["max_growth_rate"] for d in r["damped"]]}
 
 
 def critical_beta(growth):
-    """Smallest beta of the grid from which every larger one is stable (None if none)."""
+    """Smallest beta of the grid from which every larger one is stable (None if none, or if
+    there is no steady state: growth None)."""
+    if growth is None:
+        return None
     stable = np.asarray(growth) < 0
     if not stable[-1]:
         return None
@@ -49,6 +64,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--finest", type=int, default=40, help="finest nx (dense eigenvalues)")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
+    parser.add_argument("--full-contact", action="store_true",
+                        help="linearize about every node touching (issue 10's map)")
     parser.add_argument("--replot", action="store_true",
                         help="redo the table and figure from OUT/damped_stability.json")
     args = parser.parse_args()
@@ -61,15 +78,16 @@ def main():
         frictions[40] = np.round(np.arange(0, 2.0001, 0.25), 2)
         jobs = [(nx, float(F)) for nx in frictions if nx <= args.finest for F in frictions[nx]]
         with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-            rows = list(pool.map(lambda job: analyse(*job), jobs))
+            rows = list(pool.map(lambda job: analyse(*job, lift_off=not args.full_contact),
+                                 jobs))
         for r in rows:
             r["critical_beta"] = critical_beta(r["growth"])
-        (args.out / "damped_stability.json").write_text(
-            json.dumps({"betas": BETAS.tolist(), "rows": rows}, indent=1))
+        (args.out / "damped_stability.json").write_text(json.dumps(
+            {"betas": BETAS.tolist(), "lift_off": not args.full_contact, "rows": rows}, indent=1))
 
     sizes = sorted({r["nx"] for r in rows})
-    lines = ["Smallest stabilizing beta [s] (grid step 1e-7; '-' = unstable up to 1e-5 s), "
-             "redistributed_normal, alpha = 0:", "",
+    lines = ["Smallest stabilizing beta [s] (grid step 1e-7; '-' = unstable up to 1e-5 s; "
+             "'none' = no admissible steady sliding state), redistributed_normal, alpha = 0:", "",
              "| F | " + " | ".join(f"h = {100 * 0.1 / n:g} cm" for n in sizes) + " |",
              "|---|" + "---|" * len(sizes)]
     for F in sorted({r["friction"] for r in rows}):
@@ -80,7 +98,8 @@ def main():
                 cells.append("")
                 continue
             cb = match[0]["critical_beta"]
-            cells.append("-" if cb is None else f"{cb:.1e}")
+            cells.append("none" if match[0]["growth"] is None else
+                         "-" if cb is None else f"{cb:.1e}")
         lines.append(f"| {F:g} | " + " | ".join(cells) + " |")
     table = "\n".join(lines)
     (args.out / "damped_stability.md").write_text(table + "\n")
@@ -88,7 +107,8 @@ def main():
 
     fig, axes = plt.subplots(1, len(sizes), figsize=(3.6 * len(sizes), 3.6), sharey=True)
     for ax, n in zip(np.atleast_1d(axes), sizes):
-        sel = sorted((r for r in rows if r["nx"] == n), key=lambda r: r["friction"])
+        sel = sorted((r for r in rows if r["nx"] == n and r["growth"] is not None),
+                     key=lambda r: r["friction"])
         F = [r["friction"] for r in sel]
         g = np.array([r["growth"] for r in sel]).T  # beta x F
         level = np.sign(g) * np.log10(1 + np.abs(g))

@@ -144,6 +144,39 @@ def fmu_check(nx=10, friction=0.5, beta=4e-6, speeds=(5.0, 1.0), slopes=(0.05, -
                                   "end": float(ke[-1])}}
 
 
+# Constant-F points where the FMU is run from the static start for 0.2 s and compared with the
+# admissible steady state and its least stable rate (issue 10's full-contact map called the
+# first two unstable at every beta <= 1e-5 s; the third is unstable; the fourth has no state).
+SETTLE_POINTS = ((0.8, 4e-6), (1.2, 1e-5), (0.4, 4e-6), (1.5, 1e-5))
+
+
+def settle_run(friction, beta, nx=10, stop=0.2):
+    import fmpy
+
+    run = subprocess.run([str(PROGRAM), "--lift-off", str(nx), repr(friction), "1", repr(beta)],
+                         capture_output=True, text=True)
+    steady = json.loads(run.stdout) if run.returncode == 0 else None
+    r = fmpy.simulate_fmu(str(FMU), stop_time=stop, output_interval=2e-5, start_values={
+        "friction_coefficient": friction, "nx": nx, "ny": nx, "damping_stiffness": beta,
+        "initial_state": 1}, output=["kinetic_energy", "normal_force", "active_contact_nodes"])
+    t, ke = r["time"], r["kinetic_energy"]
+    last = t > stop - 0.01
+    row = {"friction": friction, "beta": beta, "nx": nx, "steady_state": steady is not None,
+           "fmu_active_nodes": sorted({int(a) for a in r["active_contact_nodes"][last]}),
+           "fmu_normal_force": [float(r["normal_force"][last].min()),
+                                float(r["normal_force"][last].max())],
+           "fmu_normal_force_at": {f"{a:g}": float(r["normal_force"][t <= a][-1])
+                                   for a in (0.03, 0.1, stop)},
+           "fmu_kinetic_energy_last_10ms": [float(ke[last].min()), float(ke[last].max())]}
+    if steady is not None:
+        rate = steady["damped"][0]["max_growth_rate"]
+        window = 4 / max(steady["damped"][0]["frequency_hz"], 100.0)
+        row.update({"touching_nodes": nx + 1 - len(steady["lifted_nodes"]),
+                    "normal_force": steady["normal_force"], "predicted": rate,
+                    "measured": envelope_rate(t, ke, stop / 2, stop, window)})
+    return row
+
+
 def critical_slope(slopes, growth):
     """Smallest slope of the grid from which every larger one is stable (None if none)."""
     stable = np.asarray(growth) < 0
@@ -159,16 +192,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--finest", type=int, default=20)
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
+    parser.add_argument("--fmu-only", action="store_true",
+                        help="keep the map of OUT/rate_stability.json, redo the FMU runs")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     meshes = [n for n in (5, 10, 20) if n <= args.finest]
-    jobs = [(nx, F, s, FINE_BETAS if nx >= 20 else BETAS) for nx in meshes for F in FRICTIONS
-            for s in (FINE_SLOPES if nx >= 20 else SLOPES)]
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        rows = list(pool.map(lambda job: growth_rates(*job), jobs))
+    if args.fmu_only:
+        rows = json.loads((args.out / "rate_stability.json").read_text())["rows"]
+        meshes = sorted({r["nx"] for r in rows})
+    else:
+        jobs = [(nx, F, s, FINE_BETAS if nx >= 20 else BETAS) for nx in meshes
+                for F in FRICTIONS for s in (FINE_SLOPES if nx >= 20 else SLOPES)]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+            rows = list(pool.map(lambda job: growth_rates(*job), jobs))
     check = fmu_check()
-    (args.out / "rate_stability.json").write_text(json.dumps({"rows": rows, "fmu_check": check},
-                                                             indent=1))
+    settled = [settle_run(F, beta) for F, beta in SETTLE_POINTS]
+    (args.out / "rate_stability.json").write_text(json.dumps(
+        {"rows": rows, "fmu_check": check, "settle_runs": settled}, indent=1))
 
     lines = ["Smallest stabilizing dF/dv [s/m] on the grid (every larger grid value stable; "
              "'-': none up to the largest), top_displacement -2.5e-5 m, redistributed_normal:",
@@ -205,6 +245,25 @@ def main():
               "| measured / predicted |", "|---|---|---|---|---|"]
     for v, s, p, m in zip(c["speeds"], c["slopes"], c["predicted"], c["measured"]):
         lines.append(f"| {v:g} | {s:g} | {p:.4g} | {m:.4g} | {m / p:.3f} |")
+    lines += ["", "Constant F from the static start, 0.2 s, h = 1 cm: the admissible steady state "
+              "against the FMU (rates from the kinetic energy's envelope over [0.1, 0.2] s; "
+              "FMU columns over the last 10 ms):", "",
+              "| F | beta [s] | touching nodes | FMU active | N [N/m] | FMU N [N/m] "
+              "| predicted Re s [1/s] | measured [1/s] | FMU kinetic energy [J/m] |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for r in settled:
+        active = ", ".join(map(str, r["fmu_active_nodes"]))
+        fmu_n = "{:.5g} to {:.5g}".format(*r["fmu_normal_force"])
+        ke = "{:.3g} to {:.3g}".format(*r["fmu_kinetic_energy_last_10ms"])
+        if r["steady_state"]:
+            lines.append(f"| {r['friction']:g} | {r['beta']:g} | {r['touching_nodes']} | {active} "
+                         f"| {r['normal_force']:.5g} | {fmu_n} | {r['predicted']:.4g} "
+                         f"| {r['measured']:.4g} | {ke} |")
+        else:
+            at = r["fmu_normal_force_at"]
+            lines.append(f"| {r['friction']:g} | {r['beta']:g} | none | {active} | – | "
+                         f"{at['0.03']:.3g} at 0.03 s, {at['0.1']:.3g} at 0.1 s, {at['0.2']:.3g} "
+                         f"at 0.2 s | – | – | {ke} |")
     table = "\n".join(lines)
     (args.out / "rate_stability.md").write_text(table + "\n")
     print(table)

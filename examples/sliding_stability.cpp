@@ -39,6 +39,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -156,9 +157,10 @@ int main(int argc, char** argv) {
     std::vector<bool> touching(nc, true);
     Linearization L = linearize(d, M, A, touching, F, top);
     int active_set_iterations = 0;
-    // Active sets: each pass drops the pulled nodes and takes back the penetrating ones; a
-    // contact set seen twice would cycle, so the passes are bounded.
-    for (; lift_off && active_set_iterations < 100; ++active_set_iterations) {
+    // Active sets: each pass drops the pulled nodes and takes back the penetrating ones. A
+    // contact set seen before means the passes cycle: no admissible set is found.
+    std::set<std::vector<bool>> seen{touching};
+    for (; lift_off; ++active_set_iterations) {
         bool changed = false;
         for (size_t i = 0; i < nc; ++i) {
             const Eigen::Index k = static_cast<Eigen::Index>(i);
@@ -166,11 +168,12 @@ int main(int argc, char** argv) {
             else if (!touching[i] && L.lift[k] < 0) touching[i] = true, changed = true;
         }
         if (!changed) break;
+        if (!seen.insert(touching).second) {
+            std::fprintf(stderr, "sliding_stability: no admissible steady contact set (the "
+                                 "active sets cycle after %d passes)\n", active_set_iterations + 1);
+            return 1;
+        }
         L = linearize(d, M, A, touching, F, top);
-    }
-    if (lift_off && active_set_iterations == 100) {
-        std::fprintf(stderr, "sliding_stability: no admissible steady contact set in 100 passes\n");
-        return 1;
     }
     const Eigen::Index n = static_cast<Eigen::Index>(L.rows.size());
     const Eigen::MatrixXd& MF = L.MF;

@@ -105,3 +105,19 @@ def test_the_law_through_two_slopes():
     np.testing.assert_allclose(friction_law(v, **law), 0.5, rtol=1e-12)
     slope = (friction_law(v + 1e-6, **law) - friction_law(v - 1e-6, **law)) / 2e-6
     np.testing.assert_allclose(slope, [-0.15, 0.05], rtol=1e-6)
+
+
+def test_beyond_the_last_steady_state_the_foundation_wedges_the_body():
+    """F = 1.5: the active sets find no admissible steady state (they cycle), and in the FMU
+    (beta = 1e-5 s, h = 1 cm) the normal force keeps growing, past 1000 x the frictionless
+    one, with two nodes touching."""
+    run = subprocess.run([str(PROGRAM), "--lift-off", "10", "1.5", "1"], capture_output=True,
+                         text=True)
+    assert run.returncode == 1 and "no admissible steady contact set" in run.stderr
+    r = fmpy.simulate_fmu(str(FMU), stop_time=0.1, output_interval=1e-3, start_values={
+        "friction_coefficient": 1.5, "nx": 10, "ny": 10, "damping_stiffness": 1e-5,
+        "initial_state": 1}, output=["normal_force", "active_contact_nodes"])
+    n = r["normal_force"]
+    assert n[-1] > 3 * n[30] > 1000 * 1.17e4
+    assert np.all(np.diff(n[30:]) > 0)
+    assert r["active_contact_nodes"][-1] == 2

@@ -47,18 +47,19 @@ def at_init(warnings):
     return [w for w in warnings if w.startswith("fmi2ExitInitializationMode")]
 
 
+DAMPED = json.loads((ROOT / "examples" / "results" / "damped_stability.json").read_text())
+
+
 def test_the_paper_scene_is_warned_about_and_the_recommended_settings_are_not(
         model_description, unzipped, vr):
     default = run(model_description, unzipped, vr)
     assert len(default) == 1 and "friction_coefficient = 1.2" in default[0]
-    assert "no damping_stiffness up to" in default[0] and "F <= 0.7" in default[0]
+    row = next(r for r in DAMPED["rows"] if r["nx"] == 20 and r["friction"] == 1.2)
+    assert f"set damping_stiffness >= {critical_beta(row['growth']):g} s" in default[0], default
     for nx in (5, 10, 20, 40):  # README: beta = 4e-6 s stabilizes F <= 0.3 on every mesh
         assert run(model_description, unzipped, vr, {"friction_coefficient": 0.3,
                                                      "damping_stiffness": 4e-6},
                    {"nx": nx, "ny": nx}) == [], nx
-
-
-DAMPED = json.loads((ROOT / "examples" / "results" / "damped_stability.json").read_text())
 
 
 @pytest.mark.parametrize("nx, friction", [(5, 0.2), (10, 0.4), (20, 0.5), (40, 0.5), (20, 0.7)])
@@ -78,13 +79,33 @@ def test_the_sliding_warning_follows_the_measured_damped_map(model_description, 
                    {"nx": nx, "ny": nx}) == []
 
 
-def test_friction_beyond_the_measured_stable_range_is_warned_at_every_damping(
+def test_friction_without_a_steady_sliding_state_is_warned_at_every_damping(
         model_description, unzipped, vr):
-    """F >= 0.8: unstable for every beta up to 1e-5 s on every measured mesh."""
+    """F >= 1.3: the map finds no admissible steady sliding state on any
+    mesh, so no damping helps; F = 1.2 has one, and the map's beta stabilizes it."""
+    assert all(r["growth"] is None for r in DAMPED["rows"] if r["friction"] >= 1.3)
     for beta in (0.0, 4e-6, 1e-5):
-        warnings = run(model_description, unzipped, vr, {"friction_coefficient": 0.8,
+        warnings = run(model_description, unzipped, vr, {"friction_coefficient": 1.5,
                                                          "damping_stiffness": beta})
-        assert len(warnings) == 1 and "no damping_stiffness up to" in warnings[0]
+        assert len(warnings) == 1 and "no steady sliding state exists" in warnings[0], warnings
+    assert run(model_description, unzipped, vr, {"friction_coefficient": 1.2,
+                                                 "damping_stiffness": 1e-5}) == []
+
+
+def test_between_measured_frictions_the_larger_beta_is_asked_for(model_description, unzipped,
+                                                                  vr):
+    """The map is not monotone in F (about the admissible state the contact set changes with
+    F), so between two measured rows the warning asks for the larger of their betas."""
+    rows = {r["friction"]: critical_beta(r["growth"]) for r in DAMPED["rows"] if r["nx"] == 5}
+    needed = max(rows[0.4], rows[0.5])
+    assert rows[0.4] != rows[0.5]
+    below = run(model_description, unzipped, vr, {"friction_coefficient": 0.45,
+                                                  "damping_stiffness": 0.99 * needed},
+                {"nx": 5, "ny": 5})
+    assert len(below) == 1 and f"damping_stiffness >= {needed:g} s" in below[0], below
+    assert run(model_description, unzipped, vr, {"friction_coefficient": 0.45,
+                                                 "damping_stiffness": needed},
+               {"nx": 5, "ny": 5}) == []
 
 
 FRICTIONLESS = {"friction_coefficient": 0.0, "foundation_velocity": 0.0, "lambda": 1.5e9}

@@ -27,9 +27,10 @@ int nearest_column(int cells) {
     return best;
 }
 
-// Smallest stabilizing beta (paper's units) on column c for friction F: interpolated linearly
-// between the measured F around it (beta grows with F); inf where the next measured F has no
-// stabilizing beta, or beyond the measured F.
+// Smallest stabilizing beta (paper's units) on column c for friction F: the larger of the
+// measured F's around it (the map is not monotone in F about the admissible steady state, so
+// no interpolation is safe); inf where one of them has no stabilizing beta, or beyond the
+// measured F.
 double stabilizing_beta(int c, double friction) {
     const stability_map::DampedRow* below = nullptr;
     for (const auto& row : stability_map::damped) {
@@ -38,9 +39,8 @@ double stabilizing_beta(int c, double friction) {
             below = &row;
             continue;
         }
-        if (row.friction == friction || !below || !std::isfinite(row.beta[c])) return row.beta[c];
-        const double w = (friction - below->friction) / (row.friction - below->friction);
-        return (1 - w) * below->beta[c] + w * row.beta[c];
+        if (row.friction == friction || !below) return row.beta[c];
+        return std::max(below->beta[c], row.beta[c]);
     }
     return stability_map::inf;
 }
@@ -60,6 +60,15 @@ std::string friction_warning(const SceneParameters& p) {
         paper_height / std::sqrt((paper_lambda + 2 * paper_mu) / paper_density);
     const double scale = p.height / p_wave_speed(p) / paper_time;
     const int c = nearest_column(p.ny);
+    if (p.friction_coefficient >= stability_map::damped_no_steady_state[c]) {
+        std::ostringstream msg;
+        msg << "friction_coefficient = " << p.friction_coefficient << ": no steady sliding state "
+            << "exists here (foundation_velocity != 0): the clamped body wedges, its normal force "
+            << "grows without bound, for F >= " << stability_map::damped_no_steady_state[c]
+            << " on the damped stability map (nx = " << stability_map::damped_nx[c]
+            << " cells across the height; measured on the paper's body, lambda/mu = 2)";
+        return msg.str();
+    }
     const double needed = stabilizing_beta(c, p.friction_coefficient) * scale;
     if (p.damping_stiffness >= needed) return "";
     std::ostringstream msg;

@@ -11,9 +11,9 @@ namespace contactbody {
 
 // One message naming the settings to change, or "" where the measured maps see no growth:
 // - with friction: steady sliding is unstable below the smallest stabilizing damping_stiffness
-//   of the damped stability map (examples/damped_stability.py; interpolated linearly in F
-//   between measured rows of the nearest measured mesh), and for every measured one from
-//   F = 0.8 on;
+//   of the damped stability map (examples/damped_stability.py, about the admissible steady
+//   state; the larger of the measured rows around F on the nearest measured mesh), and does
+//   not exist from the smallest F at which the map found no steady state (the body wedges);
 // - without friction, variants 0-2: the frictionless map's max E / E(0) over 20 ms above
 //   frictionless_growth_limit (examples/frictionless_stability.py).
 // The maps are measured on the paper's square body (lambda/mu = 2 for the damped one); other

@@ -106,7 +106,7 @@ def envelope_rate(time, kinetic_energy, start, stop, window):
 
 
 def fmu_check(nx=10, friction=0.5, beta=4e-6, speeds=(5.0, 1.0), slopes=(0.05, -0.15),
-              settle=0.06, grow=0.035):
+              settle=0.06, grow=0.035, fmu=FMU):
     """Runs the FMU at the two points (see the top) and returns predicted and measured rates."""
     import fmpy
 
@@ -115,7 +115,7 @@ def fmu_check(nx=10, friction=0.5, beta=4e-6, speeds=(5.0, 1.0), slopes=(0.05, -
     signal = np.array([(0.0, speeds[0]), (settle, speeds[0]), (settle, speeds[1]),
                        (settle + grow, speeds[1])],
                       dtype=[("time", float), ("foundation_velocity", float)])
-    r = fmpy.simulate_fmu(str(FMU), stop_time=settle + grow, output_interval=2e-5, input=signal,
+    r = fmpy.simulate_fmu(str(fmu), stop_time=settle + grow, output_interval=2e-5, input=signal,
                           start_values={**law, "nx": nx, "ny": nx, "damping_stiffness": beta,
                                         "initial_state": 1},
                           output=["kinetic_energy", "normal_force", "friction_force",

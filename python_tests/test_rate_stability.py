@@ -86,7 +86,7 @@ def test_two_points_of_the_map_against_the_fmu():
     settles at 5 m/s (bounded: its kinetic energy falls by orders of magnitude) at the
     predicted rate within 20 %, and after the switch to 1 m/s grows at the predicted rate
     within 20 %."""
-    c = fmu_check()
+    c = fmu_check(fmu=FMU)
     np.testing.assert_allclose(c["law_at_speeds"], 0.5, rtol=1e-12)
     decay, growth = c["predicted"]
     assert decay < 0 < growth

@@ -3,7 +3,10 @@
 // friction_force, which is ContactBody's output as it is: N per metre of thickness.
 //   J_m w_m' = tau(t) - k (phi_m - phi_p) - c (w_m - w_p)
 //   J_p w_p' = k (phi_m - phi_p) + c (w_m - w_p) - r T w        (T = friction_force, w = width)
-// tau(t) = motor_torque + torque_amplitude min(1, t / torque_ramp_time). The body's friction
+// tau(t) = motor_torque + torque_amplitude min(1, t / torque_ramp_time)
+//          + speed_gain (speed_setpoint min(1, t / torque_ramp_time) - w_m):
+// a proportional speed controller (speed_gain 0, the default, leaves the torque source alone;
+// a large one makes the motor a velocity source, the classic stick-slip drive). The body's friction
 // force T is the belt's force on the body (+x drags it along), so the body pulls the belt
 // back with T w. load_work = int T w v dt is the work the belt does on the body; with v fed
 // to foundation_velocity it matches ContactBody's foundation_work x width up to the coupling.
@@ -17,12 +20,15 @@ enum : unsigned {
     torque_amplitude, torque_ramp_time,
     motor_torque, friction_force,
     belt_velocity, motor_speed, shaft_torque, load_force, load_work, drive_work,
+    speed_setpoint, speed_gain,  // appended: the references above stay as they were
     count
 };
 enum { phi_m, w_m, phi_p, w_p, x_load_work, x_drive_work };
 
-double torque(const double* v, double t) {
-    return v[motor_torque] + v[torque_amplitude] * ramp(t, v[torque_ramp_time]);
+double torque(const double* v, const double* x, double t) {
+    const double r = ramp(t, v[torque_ramp_time]);
+    return v[motor_torque] + v[torque_amplitude] * r +
+           v[speed_gain] * (v[speed_setpoint] * r - x[w_m]);
 }
 
 double shaft(const double* v, const double* x) {  // N m, from the motor to the pulley
@@ -39,11 +45,11 @@ void initial_states(const double*, double* x) {
 void derivatives(const double* v, const double* x, double t, double* dx) {
     const double torque_in_shaft = shaft(v, x);
     dx[phi_m] = x[w_m];
-    dx[w_m] = (torque(v, t) - torque_in_shaft) / v[motor_inertia];
+    dx[w_m] = (torque(v, x, t) - torque_in_shaft) / v[motor_inertia];
     dx[phi_p] = x[w_p];
     dx[w_p] = (torque_in_shaft - v[pulley_radius] * load(v)) / v[pulley_inertia];
     dx[x_load_work] = load(v) * (v[pulley_radius] * x[w_p]);  // force x belt velocity
-    dx[x_drive_work] = torque(v, t) * x[w_m];
+    dx[x_drive_work] = torque(v, x, t) * x[w_m];
 }
 
 void outputs(double* v, const double* x, double t) {
@@ -76,6 +82,8 @@ const Model the_model{
         {"load_force", load_force, Causality::output, 0, "N", "Force of the body on the belt, friction_force x contact_width (opposing +x motion)"},
         {"load_work", load_work, Causality::output, 0, "J", "Work of the belt on the body since t0: int friction_force contact_width belt_velocity dt"},
         {"drive_work", drive_work, Causality::output, 0, "J", "Work of the motor torque since t0"},
+        {"speed_setpoint", speed_setpoint, Causality::parameter, 0, "rad/s", "Motor speed the controller holds (reached at torque_ramp_time, ramped like the torque); used with speed_gain > 0"},
+        {"speed_gain", speed_gain, Causality::parameter, 0, "N.m.s/rad", "Proportional speed control: adds speed_gain (setpoint - motor_speed) to the motor torque; 0 = none (a pure torque source)"},
     },
     6, 1e-6, initial_states, derivatives, outputs};
 

@@ -159,3 +159,15 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
     other.nx = 10;
     EXPECT_THROW(sim.stepper().restart(other), std::logic_error);
 }
+
+// Eigen's dense products block by the CPU's cache sizes, and the blocks decide the rounding:
+// the stepper fixes them, so that every machine computes the same bits. (Where the CPU has
+// other caches than these, e.g. an AMD EPYC's 48 KiB L1, this fails without the fix.)
+TEST(Stepper, FixesTheDenseBlockingWhateverTheCpu) {
+    SceneParameters p;
+    p.nx = p.ny = 4;
+    Stepper stepper(p);
+    EXPECT_EQ(Eigen::l1CacheSize(), 32 << 10);
+    EXPECT_EQ(Eigen::l2CacheSize(), 1 << 20);
+    EXPECT_EQ(Eigen::l3CacheSize(), 32 << 20);
+}

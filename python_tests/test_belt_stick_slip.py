@@ -49,6 +49,6 @@ def test_the_speed_controller_holds_the_drive_speed_less_its_droop(runs):
 
 def test_the_period_settles_under_the_coupling_step(runs):
     """Halving the coupling step from 5e-5 to 2.5e-5 s moves the mean period by less than 1 %
-    (examples/results/stick_slip.md: 46.20 and 46.40 ms over 0.5 s)."""
+    (examples/results/stick_slip.md: 46.27 and 46.38 ms over 1.5 s)."""
     coarse, fine = (summary(runs[h][0], 0.0)["period"] for h in (5e-5, 2.5e-5))
     assert abs(coarse - fine) < 0.01 * fine

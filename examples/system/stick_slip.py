@@ -33,7 +33,7 @@ LAW = {"friction_coefficient": 0.3, "static_friction_ratio": 2.0, "stribeck_velo
 BELT = {"pulley_inertia": 1e-3, "shaft_stiffness": 20.0, "speed_setpoint": 20.0,
         "speed_gain": 10.0, "torque_amplitude": 0.0, "torque_ramp_time": 5e-3}
 DRIVE_SPEED = 0.05 * BELT["speed_setpoint"]  # m/s: pulley_radius x setpoint
-STOP = 0.5
+STOP = 1.5
 BASE = {"step": 2.5e-5, "internal_step": 3.125e-6, "nx": 10}
 LADDERS = {"step": [1e-4, 5e-5, 2.5e-5, 1.25e-5, 6.25e-6],
            "internal_step": [6.25e-6, 3.125e-6, 1.5625e-6],

@@ -47,9 +47,9 @@ def analyse(nx, friction, variant=1, lift_off=True):
             "growth": [d["max_growth_rate"] for d in r["damped"]]}
 
 
-def critical_beta(growth):
-    """Smallest beta of the grid from which every larger one is stable (None if none, or if
-    there is no steady state: growth None)."""
+def first_stable(grid, growth):
+    """Smallest value of an ascending grid from which every larger one has growth < 0 (None
+    if the largest grows, or if there is no steady state: growth None)."""
     if growth is None:
         return None
     stable = np.asarray(growth) < 0
@@ -58,7 +58,20 @@ def critical_beta(growth):
     k = len(stable) - 1
     while k > 0 and stable[k - 1]:
         k -= 1
-    return float(BETAS[k])
+    return float(grid[k])
+
+
+def critical_beta(growth):
+    """Smallest beta of the grid from which every larger one is stable."""
+    return first_stable(BETAS, growth)
+
+
+def draw_growth(ax, x, y, growth):
+    """The growth rates (y x x) as a signed log colour map with the Re s = 0 contour."""
+    level = np.sign(growth) * np.log10(1 + np.abs(growth))
+    mesh = ax.pcolormesh(x, y, level, cmap="RdBu_r", vmin=-5, vmax=5, shading="nearest")
+    ax.contour(x, y, growth, levels=[0], colors="k", linewidths=1.5)
+    return mesh
 
 
 def main():
@@ -113,10 +126,7 @@ def main():
                      key=lambda r: r["friction"])
         F = [r["friction"] for r in sel]
         g = np.array([r["growth"] for r in sel]).T  # beta x F
-        level = np.sign(g) * np.log10(1 + np.abs(g))
-        mesh = ax.pcolormesh(F, BETAS * 1e6, level, cmap="RdBu_r", vmin=-5, vmax=5,
-                             shading="nearest")
-        ax.contour(F, BETAS * 1e6, g, levels=[0], colors="k", linewidths=1.5)
+        mesh = draw_growth(ax, F, BETAS * 1e6, g)
         ax.set_title(f"h = {100 * 0.1 / n:g} cm")
         ax.set_xlabel("F")
     np.atleast_1d(axes)[0].set_ylabel("β [µs]")

@@ -31,6 +31,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from damped_stability import draw_growth, first_stable  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PROGRAM = ROOT / "build" / "sliding_stability"
 FMU = ROOT / "build" / "ContactBody.fmu"
@@ -177,17 +179,6 @@ def settle_run(friction, beta, nx=10, stop=0.2):
     return row
 
 
-def critical_slope(slopes, growth):
-    """Smallest slope of the grid from which every larger one is stable (None if none)."""
-    stable = np.asarray(growth) < 0
-    if not stable[-1]:
-        return None
-    k = len(stable) - 1
-    while k > 0 and stable[k - 1]:
-        k -= 1
-    return slopes[k]
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--finest", type=int, default=20)
@@ -224,7 +215,7 @@ def main():
                     cells.append("")
                     continue
                 k = sel[0]["betas"].index(beta)
-                cs = critical_slope([r["slope"] for r in sel], [r["growth"][k] for r in sel])
+                cs = first_stable([r["slope"] for r in sel], [r["growth"][k] for r in sel])
                 cells.append("-" if cs is None else f"{cs:g}")
             lines.append(f"| {F:g} | {beta:g} | " + " | ".join(cells) + " |")
     lines += ["", "Largest growth rate Re s [1/s] at dF/dv = -0.1, 0, 0.05, 0.1 s/m:", "",
@@ -278,10 +269,7 @@ def main():
             slopes = [r["slope"] for r in sel]
             g = np.array([r["growth"] for r in sel]).T  # beta x slope
             betas = np.array(sel[0]["betas"]) * 1e6
-            level = np.sign(g) * np.log10(1 + np.abs(g))
-            mesh = ax.pcolormesh(slopes, betas, level, cmap="RdBu_r", vmin=-5, vmax=5,
-                                 shading="nearest")
-            ax.contour(slopes, betas, g, levels=[0], colors="k", linewidths=1.2)
+            mesh = draw_growth(ax, slopes, betas, g)
             ax.set_xscale("symlog", linthresh=0.05)
             ax.set_title(f"F = {F:g}, h = {10 / n:g} cm", fontsize=9)
             if i == len(FRICTIONS) - 1:

@@ -203,7 +203,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
     size_t nRequiredIntermediateVariables, fmi3InstanceEnvironment instanceEnvironment,
     fmi3LogMessageCallback logMessage, fmi3IntermediateUpdateCallback /*intermediateUpdate*/) {
     auto fail = [&](const std::string& message) -> fmi3Instance {
-        if (logMessage)
+        if (logMessage && loggingOn)  // FMI 3.0: no call while logging is off
             logMessage(instanceEnvironment, fmi3Error, "logStatusError",
                        ("fmi3InstantiateCoSimulation: " + message).c_str());
         return nullptr;
@@ -221,7 +221,8 @@ fmi3Instance fmi3InstantiateCoSimulation(
                                                        const char* message) {
                 logMessage(instanceEnvironment, static_cast<fmi3Status>(status), category, message);
             };
-        auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn);
+        auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn,
+                                                   LogRule::fmi3_settings_only);
         // A configured copy's start values (resources/start_values.txt).
         if (resourcePath && *resourcePath)
             instance->model.set_defaults(
@@ -235,10 +236,10 @@ fmi3Instance fmi3InstantiateCoSimulation(
 }
 
 fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String, fmi3String,
-                                          fmi3Boolean, fmi3Boolean,
+                                          fmi3Boolean, fmi3Boolean loggingOn,
                                           fmi3InstanceEnvironment instanceEnvironment,
                                           fmi3LogMessageCallback logMessage) {
-    if (logMessage)
+    if (logMessage && loggingOn)
         logMessage(instanceEnvironment, fmi3Error, "logStatusError",
                    "fmi3InstantiateModelExchange: this FMU supports Co-Simulation only");
     (void)instanceName;
@@ -246,13 +247,13 @@ fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String, f
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(fmi3String, fmi3String, fmi3String, fmi3Boolean,
-                                               fmi3Boolean,
+                                               fmi3Boolean loggingOn,
                                                fmi3InstanceEnvironment instanceEnvironment,
                                                fmi3LogMessageCallback logMessage,
                                                fmi3ClockUpdateCallback,
                                                fmi3LockPreemptionCallback,
                                                fmi3UnlockPreemptionCallback) {
-    if (logMessage)
+    if (logMessage && loggingOn)
         logMessage(instanceEnvironment, fmi3Error, "logStatusError",
                    "fmi3InstantiateScheduledExecution: this FMU supports Co-Simulation only");
     return nullptr;

@@ -19,17 +19,15 @@ const char* state_name(FmiState s) {
 
 }  // namespace
 
-Instance::Instance(std::string n, Logger l, bool on)
-    : name(std::move(n)), logger(std::move(l)), logging_on(on) {
+Instance::Instance(std::string n, Logger l, bool on, LogRule r)
+    : name(std::move(n)), logger(std::move(l)), logging_on(on), rule(r) {
     category_on.fill(on);
 }
 
 void Instance::log(int status, LogCategory category, const std::string& message) const {
     if (!logger) return;
     const auto index = static_cast<size_t>(category);
-    // Errors and warnings reach the user whatever the logging settings: a warning nobody sees
-    // would be a silent one.
-    const bool always = status != Status::ok;
+    const bool always = rule == LogRule::fmi2_errors_always && status != Status::ok;
     if (!always && !(logging_on && category_on[index])) return;
     logger(status, log_categories()[index].c_str(), message.c_str());
 }

@@ -35,13 +35,22 @@ using Logger = std::function<void(int, const char*, const char*)>;
 
 enum class LogCategory { events, warning, error, all, contact_solver };
 
+// Which messages reach the logger while logging is off or a category is disabled. FMI 2.0
+// says the logger "should" not be called then, and an error or warning nobody sees would be a
+// silent one: they always reach it. FMI 3.0 says logMessage is not called at all while
+// loggingOn is false, and only for enabled categories, errors included (2.3.1, "respecting
+// the current logging settings").
+enum class LogRule { fmi2_errors_always, fmi3_settings_only };
+
 struct Instance {
-    Instance(std::string name, Logger logger, bool logging_on);
+    Instance(std::string name, Logger logger, bool logging_on,
+             LogRule rule = LogRule::fmi2_errors_always);
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;
 
-    // Errors are always passed to the logger; other messages per the enabled categories.
+    // Per the LogRule: FMI 2.0 passes errors and warnings always, other messages per the
+    // enabled categories; FMI 3.0 passes every message per the enabled categories only.
     void log(int status, LogCategory category, const std::string& message) const;
     void error(const char* function, const std::string& message) const {
         log(Status::error, LogCategory::error, std::string(function) + ": " + message);
@@ -55,6 +64,7 @@ struct Instance {
     Logger logger;
     FmiState state = Instantiated;
     bool logging_on;
+    LogRule rule;
     std::array<bool, 5> category_on;
     double last_successful_time = 0;
     ContactBodyModel model;

@@ -58,7 +58,8 @@ class Instance3:
 
         self.slave = FMU3Slave(guid=md.guid, unzipDirectory=unzipped,
                                modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        self.slave.instantiate(logMessage=log)
+        # FMI 3.0: with logging off the FMU calls logMessage for nothing, errors included.
+        self.slave.instantiate(loggingOn=True, logMessage=log)
 
     def __getattr__(self, name):
         return getattr(self.slave, name)
@@ -333,7 +334,7 @@ def test_refusals_name_the_function_and_the_cause(make3, vr3, md3, unzipped3):
                       modelIdentifier="ContactBody", instanceName="events")
     messages = []
     with pytest.raises(Exception, match="Failed to instantiate"):
-        slave.instantiate(eventModeUsed=True,
+        slave.instantiate(eventModeUsed=True, loggingOn=True,
                           logMessage=lambda e, s, c, m: messages.append(m.decode()))
     assert "no event mode" in messages[-1]
 
@@ -391,3 +392,54 @@ def test_a_configured_copy_with_another_nx_runs_in_plain_fmpy(tmp_path):
     # Setting nx alone through fmpy's start values: the FMU's arrays grow, fmpy's stay at 21.
     with pytest.raises(FMICallException):
         fmpy.simulate_fmu(str(FMU3), stop_time=1e-3, output_interval=H, start_values={"nx": 10})
+
+
+@pytest.mark.parametrize("debug_logging", [False, True])
+def test_fmpy_receives_messages_only_while_logging_is_on(debug_logging):
+    """FMI 3.0.2, 2.3.1: while loggingOn is false the FMU does not call logMessage at all, and
+    otherwise only for enabled categories, errors included ("respecting the current logging
+    settings"). Through fmpy's simulate_fmu: the paper's undamped scene (F = 1.2, warned
+    about at initialization), then a refused start value (an error)."""
+    calls = []
+
+    def logger(env, status, category, message):
+        calls.append((status, category.decode(), message.decode()))
+
+    fmpy.simulate_fmu(str(FMU3), stop_time=2e-4, output_interval=1e-4, logger=logger,
+                      debug_logging=debug_logging, output=["energy"])
+    with pytest.raises(Exception):
+        fmpy.simulate_fmu(str(FMU3), stop_time=2e-4, output_interval=1e-4, logger=logger,
+                          debug_logging=debug_logging, start_values={"density": -1.0})
+    if not debug_logging:
+        assert calls == []
+        return
+    warnings = [m for s, c, m in calls if s == 1]
+    assert any("measured unstable region" in m for m in warnings), calls
+    assert all(c == "logStatusWarning" for s, c, m in calls if s == 1)
+    assert any(s == 3 and c == "logStatusError" and "density" in m for s, c, m in calls), calls
+
+
+def test_only_enabled_categories_reach_the_logger(md3, unzipped3):
+    """With logging on but only logEvents enabled, an FMI 3.0 instance passes its events and
+    neither the initialization warning nor an error; enabling logStatusError lets errors in."""
+    calls = []
+    slave = FMU3Slave(guid=md3.guid, unzipDirectory=unzipped3,
+                      modelIdentifier=md3.coSimulation.modelIdentifier, instanceName="cats")
+    slave.instantiate(loggingOn=True,
+                      logMessage=lambda e, s, c, m: calls.append((s, c.decode(), m.decode())))
+    try:
+        slave.setDebugLogging(False, [])
+        slave.setDebugLogging(True, ["logEvents"])
+        slave.enterInitializationMode(startTime=0.0)
+        slave.exitInitializationMode()
+        slave.doStep(0.0, 1e-4)
+        assert calls and {c for s, c, m in calls} == {"logEvents"}, calls
+        with pytest.raises(FMICallException):
+            slave.getFloat64([999999])
+        assert all(s == 0 for s, c, m in calls), calls
+        slave.setDebugLogging(True, ["logStatusError"])
+        with pytest.raises(FMICallException):
+            slave.getFloat64([999999])
+        assert calls[-1][:2] == (3, "logStatusError"), calls[-1]
+    finally:
+        slave.freeInstance()

@@ -45,20 +45,28 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
     if (std::string why = scheme_warning(params); !why.empty()) warnings_.push_back(std::move(why));
 }
 
-// A quasi-static load path: the top displacement goes from 0 to `top` in 10 substeps so long
-// (1e3 s) that the mass terms weigh 1e-15 of the stiffness, with the foundation at rest, so
-// that friction acts on each increment's slip; then one more substep at the final load, over
-// which nothing moves: its u^{k+1/2} = u^{k+1} is in static balance with contact and
-// friction, for every variant. The body is left there at rest.
-static State quasi_static_path(Stepper& stepper, double top) {
+// A quasi-static load path: the top displacement goes from `start` to `top` in 10 substeps so
+// long (1e3 s) that the mass terms weigh 1e-15 of the stiffness, with the foundation at rest,
+// so that friction acts on each increment's slip; then one more substep at the final load.
+// The body starts at rest translated rigidly to `start` (strain-free, so in balance).
+// The midpoint step puts u^{k+1/2} in balance and extrapolates u^{k+1} = 2 u^{k+1/2} - u^k,
+// which stays in balance only while the problem is linear or positively homogeneous along the
+// path: with contact and Coulomb friction that holds from an unloaded touching state, but not
+// across the load where a gap closes (u^{k+1} then overshoots the kink, and the final substep
+// cannot take it back: the midpoint rule does not damp). So a gap is closed first by the
+// rigid shift `start` = -gap, and the path loads the body from touching. Its final substep
+// then moves nothing: u^{k+1/2} = u^{k+1} is in static balance with contact and friction, for
+// every variant. The body is left there at rest.
+static State quasi_static_path(Stepper& stepper, double top, double start = 0) {
     constexpr int increments = 10;
     constexpr double quasi_static = 1e3;
     State s = stepper.initial_state(0.0);
     s.v.setZero();
+    for (Eigen::Index dof = 1; dof < s.u.size(); dof += 2) s.u[dof] = start;
     SubstepLoad load;
     for (int k = 1; k <= increments + 1; ++k) {
-        load.top_start = top * std::min(k - 1, increments) / increments;
-        load.top_end = top * std::min(k, increments) / increments;
+        load.top_start = start + (top - start) * std::min(k - 1, increments) / increments;
+        load.top_end = start + (top - start) * std::min(k, increments) / increments;
         try {
             stepper.substep(s, quasi_static, load);
         } catch (const ContactSolveError& e) {
@@ -81,7 +89,9 @@ void Simulation::static_initial_state(double top, double force) {
     const SceneParameters& p = stepper_->parameters();
     if (!p.force_control) {
         const double time = state_.time;
-        state_ = quasi_static_path(*stepper_, top);
+        // A top pressed below the gap touches: close the gap rigidly first (above).
+        const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
+        state_ = quasi_static_path(*stepper_, top, start);
         state_.time = time;
         return;
     }

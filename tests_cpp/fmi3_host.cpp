@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
         count += std::strtoul(pair.c_str() + colon + 1, nullptr, 10);
     }
 
-    fmi3Instance c = fmi3InstantiateCoSimulation("fmi3_host", argv[2], "", fmi3False, fmi3False,
+    // loggingOn: under FMI 3.0 the FMU says nothing, not even its errors, while it is off.
+    fmi3Instance c = fmi3InstantiateCoSimulation("fmi3_host", argv[2], "", fmi3False, fmi3True,
                                                  fmi3False, fmi3False, nullptr, 0, nullptr,
                                                  log_message, nullptr);
     if (!c) fail("fmi3InstantiateCoSimulation");

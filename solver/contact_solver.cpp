@@ -191,14 +191,13 @@ void ContactSolver::full_newton_direction(const ContactProblem& p) {
         J(t, i) += s * rate_F_[i];
         J(t, t) += 1;
     }
-    step_ = -phi_;
-    pivots_.resize(static_cast<size_t>(m));
-    int rows = static_cast<int>(m), lda = static_cast<int>(m), one = 1, info = 0;
-    dgetrf_(&rows, &rows, reduced_matrix_.data(), &lda, pivots_.data(), &info);
-    if (info != 0) throw ContactSolveError("contact solver: singular Newton matrix");
-    char no_transpose = 'N';
-    dgetrs_(&no_transpose, &rows, &one, reduced_matrix_.data(), &lda, pivots_.data(),
-            step_.data(), &rows, &info);
+    // Eigen's blocked LU: this matrix is refactored every iteration, and the reference BLAS
+    // under dgetrf made it most of a rate-law substep's cost. Sized once: no allocation.
+    full_lu_.compute(reduced_matrix_);
+    if ((full_lu_.matrixLU().diagonal().array() == 0).any())
+        throw ContactSolveError("contact solver: singular Newton matrix");
+    reduced_rhs_ = -phi_;
+    step_ = full_lu_.solve(reduced_rhs_);
 }
 
 ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
@@ -208,18 +207,36 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
     if (lambda.size() != m) lambda.setZero(m);
     r_ = p.W.diagonal().cwiseInverse();
     start_ = lambda;
+    const bool rate = p.has_friction() && p.rate_dependent() && p.rate.tangential_inertia;
+    ContactSolveInfo info;
     try {
-        return newton(p, options, lambda);
+        return newton(p, options, lambda, rate);
     } catch (const ContactSolveError& e) {
         // Newton can cycle where the step is badly conditioned (large F, large steps);
         // Gauss-Seidel is slower but does not cycle on these problems.
         lambda = start_;
-        ContactSolveInfo info;
         info.iterations = options.max_iterations;
-        if (gauss_seidel(p, options, lambda, info)) return info;
+        if (gauss_seidel(p, options, lambda, info, rate)) return info;
+        if (!rate) {
+            std::ostringstream msg;
+            msg << e.what() << "; Gauss-Seidel from the same start: relative residual "
+                << info.residual << " after " << info.sweeps << " sweeps";
+            throw ContactSolveError(msg.str());
+        }
+    }
+    // A rate law's last resort: where a substep has several solutions near each other (no
+    // tangential mass, velocity weakening) Newton's cycling can still land on one, given
+    // all its iterations.
+    lambda = start_;
+    try {
+        ContactSolveInfo last = newton(p, options, lambda, false);
+        last.sweeps = info.sweeps;
+        return last;
+    } catch (const ContactSolveError& e) {
         std::ostringstream msg;
-        msg << e.what() << "; Gauss-Seidel from the same start: relative residual "
-            << info.residual << " after " << info.sweeps << " sweeps";
+        msg << e.what() << " (after Newton stagnated and Gauss-Seidel from the same start "
+            << "reached a relative residual " << info.residual << " in " << info.sweeps
+            << " sweeps)";
         throw ContactSolveError(msg.str());
     }
 }
@@ -260,10 +277,98 @@ Local solve_node(double qN, double qT, double aNN, double aNT, double aTT, doubl
     return l;
 }
 
+// The same with a slip-rate law, F taken at the slip being solved for (not lagged: with a
+// Stribeck drop the lagged iteration F_k+1 = F(slip(F_k)) diverges once
+// |W_TT dF/dslip p| > 1, which at large pressures and substeps is the common case). Sticking
+// needs F(0); slipping with sign s is one equation in the slip sigma (s sigma > 0):
+//   r(sigma) = qT - origin + (aNT + s F(sigma) aTT) lN(sigma) - sigma,
+//   lN(sigma) = (gap - qN) / (aNN + s F(sigma) aNT),
+// continuous, with s r(0) > 0 where the node cannot stick, and s r -> -inf as |sigma| grows
+// (F bounded, or growing with the viscous term): a root is bracketed and bisected.
+Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double qT, double aNN,
+                      double aNT, double aTT, double current_slip) {
+    const double gap = p.gap_limit[i], origin = p.slip_origin[i];
+    if (qN <= gap) return {};
+    const double bN = gap - qN, bT = origin - qT;
+    const double det = aNN * aTT - aNT * aNT;
+    const Local stick{(aTT * bN - aNT * bT) / det, (aNN * bT - aNT * bN) / det};
+    const double F0 = p.coefficient(i, 0.0);
+    if (stick.lN <= 0 && std::abs(stick.lT) <= -F0 * stick.lN) return stick;
+    // s r at sigma = s t, and lN there; false where the node's problem is ill-posed.
+    auto signed_residual = [&](double s, double t, double& value, double& lN) {
+        const double F = p.coefficient(i, s * t);
+        const double slope = aNN + s * F * aNT;
+        if (!(slope > 0)) return false;
+        lN = bN / slope;
+        value = s * (qT - origin + (aNT + s * F * aTT) * lN) - t;
+        return std::isfinite(value);
+    };
+    // The direction the node slips in now first (continuity), else the one the sticking
+    // solution's excess points to: lT = s F lN with lN < 0.
+    const double first = current_slip != 0 ? (current_slip > 0 ? 1.0 : -1.0)
+                                           : (stick.lT > 0 ? -1.0 : 1.0);
+    for (const double s : {first, -first}) {
+        double r0, lN;
+        if (!signed_residual(s, 0.0, r0, lN) || !(r0 > 0)) continue;
+        // A bracket near the node's current slip, so that the sweeps follow one root where
+        // there are several: intervals [c 2^k, c 2^(k+1)] outward from c, alternately above
+        // and below it, then [0, the lowest].
+        const double c = std::max({s * current_slip, 1e-300, 1e-12 * (std::abs(qT) + std::abs(origin))});
+        double lo = 0, hi = 0, r_lo = 0, r_hi = 0;
+        bool bracketed = false;
+        double up = c, r_up, down = c, r_down;
+        if (!signed_residual(s, c, r_up, lN)) continue;
+        r_down = r_up;
+        bool up_ok = true, down_ok = true;
+        for (int k = 0; k < 2100 && !bracketed && (up_ok || down_ok); ++k) {
+            if (up_ok) {
+                double r;
+                if (!signed_residual(s, 2 * up, r, lN)) {
+                    up_ok = false;
+                } else if (r_up > 0 && !(r > 0)) {
+                    lo = up, hi = 2 * up, r_lo = r_up, r_hi = r, bracketed = true;
+                } else {
+                    up *= 2, r_up = r;
+                }
+            }
+            if (!bracketed && down_ok) {
+                double r;
+                const double next = 0.5 * down;
+                if (next < 1e-300 * c || !signed_residual(s, next, r, lN)) {
+                    down_ok = false;  // [0, down]: r0 > 0, so a root below iff r_down <= 0
+                    if (!(r_down > 0)) lo = 0, hi = down, r_lo = r0, r_hi = r_down, bracketed = true;
+                } else if (r > 0 && !(r_down > 0)) {
+                    lo = next, hi = down, r_lo = r, r_hi = r_down, bracketed = true;
+                } else {
+                    down = next, r_down = r;
+                }
+            }
+        }
+        if (!bracketed) continue;
+        for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            double r_mid;
+            if (!signed_residual(s, mid, r_mid, lN)) break;
+            if ((r_mid > 0) == (r_lo > 0)) lo = mid, r_lo = r_mid;
+            else hi = mid, r_hi = r_mid;
+        }
+        const double root = std::abs(r_lo) < std::abs(r_hi) ? lo : hi;
+        double r_root;
+        if (!signed_residual(s, root, r_root, lN)) continue;
+        return {lN, s * p.coefficient(i, s * root) * lN};
+    }
+    // No consistent local state: the cone projection of the sticking solution.
+    Local l;
+    l.lN = std::min(0.0, stick.lN);
+    l.lT = std::clamp(stick.lT, F0 * l.lN, -F0 * l.lN);
+    return l;
+}
+
 }  // namespace
 
 bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
-                                 Eigen::VectorXd& lambda, ContactSolveInfo& info) {
+                                 Eigen::VectorXd& lambda, ContactSolveInfo& info,
+                                 bool exact_rate) {
     const Eigen::Index n = p.gap_limit.size();
     const bool friction = p.has_friction();
     info.residual = residual(p, lambda, phi_);  // also sets u_hat_ = a + W lambda
@@ -279,13 +384,12 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
             const double aNT = friction ? p.W(i, t) : 0.0, aTT = friction ? p.W(t, t) : 1.0;
             const double qN = u_hat_[i] - p.W(i, i) * lN - aNT * lT;
             const double qT = friction ? u_hat_[t] - aNT * lN - aTT * lT : 0.0;
-            // A slip-rate law enters lagged, at the node's current slip: the sweeps iterate it
-            // to the fixed point the residual checks.
-            const double F = !friction ? 0.0
-                             : p.rate_dependent() ? p.coefficient(i, u_hat_[t] - p.slip_origin[i])
-                                                  : p.friction[i];
-            const Local l = solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
-                                       friction ? p.slip_origin[i] : 0.0, F, friction);
+            const Local l =
+                friction && p.rate_dependent() && exact_rate
+                    ? solve_rate_node(p, i, qN, qT, p.W(i, i), aNT, aTT, u_hat_[t] - p.slip_origin[i])
+                    : solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
+                                 friction ? p.slip_origin[i] : 0.0, !friction ? 0.0 : p.rate_dependent() ? p.coefficient(i, u_hat_[t] - p.slip_origin[i]) : p.friction[i],
+                                 friction);
             if (l.lN != lN) {
                 u_hat_.noalias() += (l.lN - lN) * p.W.col(i);
                 lambda[i] = l.lN;
@@ -306,11 +410,27 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
 
 ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
                                        const ContactSolverOptions& options,
-                                       Eigen::VectorXd& lambda) {
+                                       Eigen::VectorXd& lambda, bool stop_on_stagnation) {
     ContactSolveInfo info;
     info.residual = residual(p, lambda, phi_);
     double merit = phi_.squaredNorm();
+    // With a slip-rate law Newton can cycle among node states where the substep has several
+    // solutions or none near the start; the exact node-by-node fallback then solves it. So,
+    // asked to, it stops once `stagnation` iterations have not halved the best residual (a
+    // converging Newton halves it every iteration or two) instead of running to
+    // max_iterations.
+    const bool rate = p.has_friction() && p.rate_dependent();
+    constexpr int stagnation = 12;
+    double best = info.residual;
+    int best_iteration = 0;
     while (!(info.residual <= options.tolerance)) {
+        if (stop_on_stagnation && info.iterations - best_iteration >= stagnation) {
+            std::ostringstream msg;
+            msg << "contact solver stagnated: " << stagnation << " Newton iterations did not "
+                << "halve the relative residual " << best << " (tolerance " << options.tolerance
+                << ")";
+            throw ContactSolveError(msg.str());
+        }
         if (info.iterations >= options.max_iterations) {
             std::ostringstream msg;
             msg << "contact solver did not converge in " << options.max_iterations
@@ -321,7 +441,6 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         ++info.iterations;
         // The reduced Newton matrix is fixed by W and the node states: when the states of
         // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
-        const bool rate = p.has_friction() && p.rate_dependent();
         const bool reuse = !rate && p.revision != 0 && p.revision == lu_revision_ &&
                            pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_ &&
                            p.friction.size() == lu_friction_.size() && p.friction == lu_friction_;
@@ -361,6 +480,10 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             info.residual = residual(p, lambda, phi_);
         }
         merit = phi_.squaredNorm();
+        if (info.residual < 0.5 * best) {
+            best = info.residual;
+            best_iteration = info.iterations;
+        }
     }
     return info;
 }

@@ -33,6 +33,14 @@ struct ContactProblem {
         double stribeck_velocity = 0;  // m/s; 0: no Stribeck term
         double viscous = 0;            // s/m
         double slip_time = 1;          // s: v = slip / slip_time
+        // Whether the contact nodes keep their tangential inertia. Then the substep is unique
+        // once it is short enough, and the solver, when Newton stagnates, solves each node's
+        // problem exactly with F(v) (Gauss-Seidel). Without it (redistributed_both) the
+        // substep has several solutions at every size, and the solver keeps to Newton and
+        // Gauss-Seidel with F lagged, whose solutions lead its trajectories on (measured:
+        // examples/stribeck_bifurcation; the exact solves chose ones that ended in substeps
+        // nothing could solve).
+        bool tangential_inertia = true;
         bool active() const { return viscous > 0 || (stribeck_velocity > 0 && excess > 0); }
         // base + excess exp(-|v| / stribeck_velocity) + viscous |v| at this slip, and its
         // derivative with respect to the slip.
@@ -69,8 +77,10 @@ public:
 class ContactSolver {
 public:
     // Solves in place from the warm start in lambda: semi-smooth Newton, and if it does not
-    // converge, nonsmooth Gauss-Seidel from the same start. Throws ContactSolveError when
-    // both fail (lambda is then unspecified).
+    // converge, nonsmooth Gauss-Seidel from the same start. With a slip-rate law Newton first
+    // stops early when it stagnates, and if Gauss-Seidel fails too it runs again from the
+    // start with all its iterations. Throws ContactSolveError when all fail (lambda is then
+    // unspecified).
     ContactSolveInfo solve(const ContactProblem& problem, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda);
     // Node states of the last solution (open / sticking / slipping).
@@ -80,11 +90,11 @@ public:
 
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
-                           Eigen::VectorXd& lambda);
+                           Eigen::VectorXd& lambda, bool stop_on_stagnation);
     // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
     // the tolerance within options.max_sweeps.
     bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
-                      Eigen::VectorXd& lambda, ContactSolveInfo& info);
+                      Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     void newton_direction(const ContactProblem& p, bool reuse);
@@ -102,6 +112,7 @@ private:
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
     std::vector<int> pivots_;
+    Eigen::PartialPivLU<Eigen::MatrixXd> full_lu_;  // of the full Jacobian (slip-rate law)
     Eigen::VectorXd reduced_rhs_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
     // What the Jacobian depends on besides W: per node 0 open, 1 stick, +-2 slip direction.

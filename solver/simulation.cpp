@@ -219,6 +219,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         energies_current_ = false;
         check_finite(observables());  // no NaN under fmi2OK: every output, every step
         check_plausible();
+        warn_refinements(stats);
     } catch (...) {
         state_ = saved_;
         works_ = saved_works;
@@ -410,6 +411,31 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     stats.contact_iterations += r.contact_iterations;
     stats.max_contact_iterations = std::max(stats.max_contact_iterations, r.contact_iterations);
     stats.gauss_seidel_sweeps += r.contact_sweeps;
+}
+
+// Halvings are the rare path: a step where they pile up costs several times its nominal
+// substeps (each failed try runs the contact solver to its limits first), and says that
+// internal_step is too large for the contact problem here. Said once per such step.
+void Simulation::warn_refinements(const StepStatistics& stats) {
+    if (stats.refinements < refinement_warning_count ||
+        stats.refinements < refinement_warning_share * stats.substeps)
+        return;
+    const SceneParameters& p = stepper_->parameters();
+    std::ostringstream msg;
+    msg << "step to t = " << state_.time << ": " << stats.refinements << " substep halvings for "
+        << stats.substeps << " substeps of " << nominal_substep_ << " s (smallest substep "
+        << stats.smallest_substep << " s): the contact problem of a substep this large had no "
+        << "solution the solver could reach from its start, and the retries cost time";
+    const bool weakening = p.friction_coefficient > 0 && p.stribeck_velocity > 0 &&
+                           p.static_friction_ratio > 1;
+    if (weakening)
+        msg << ". With friction that drops with the slip rate (static_friction_ratio = "
+            << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity
+            << " m/s) a substep is uniquely solvable only below a size that shrinks as the "
+               "normal force grows (docs/contract.md, \"Friction that depends on the slip rate\")";
+    msg << ". To avoid the retries set internal_step <= " << stats.smallest_substep << " s";
+    if (weakening) msg << ", or soften the drop (a larger stribeck_velocity or a smaller static_friction_ratio)";
+    warnings_.push_back(msg.str());
 }
 
 std::string Simulation::growth_advice() const {

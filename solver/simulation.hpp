@@ -71,6 +71,10 @@ struct StepStatistics {
 // The share of E(0) + the work put in that the contact may create before a warning: sound
 // scenes stay below 5e-4 (recommended settings 4e-5), unsound ones pass 0.05 (docs/contract.md).
 constexpr double contact_work_warning = 0.01;
+// A step warns that its substep halvings pile up from this many, and this share of its
+// nominal substeps, on.
+constexpr int refinement_warning_count = 4;
+constexpr double refinement_warning_share = 0.05;
 
 class NumericalFailure : public std::runtime_error {
 public:
@@ -114,8 +118,9 @@ public:
     const StepStatistics& statistics() const { return statistics_; }
     // The bottom edge after the last step (before the first: the initial static reactions).
     const EdgeSnapshot& edge() const { return edge_; }
-    // Warnings since the last call (each kind once per run): a scene in a measured unstable
-    // region (at construction), the contact creating energy, the top moved beyond the height.
+    // Warnings since the last call: a scene in a measured unstable region (at construction),
+    // the contact creating energy, the top moved beyond the height (each once per run);
+    // substep halvings piling up (once per step where they do).
     std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
 
 private:
@@ -134,6 +139,7 @@ private:
     // the contact's created energy and a top moved beyond the height warn.
     void check_plausible();
     std::string growth_advice() const;              // what to change when E runs away
+    void warn_refinements(const StepStatistics& stats);  // halvings piled up in the step
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state (uses product_)
     std::pair<double, double> kinetic_and_strain_energy(const State& s);  // (uses product_)

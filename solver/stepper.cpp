@@ -93,9 +93,8 @@ void Stepper::restart(const SceneParameters& params) {
         throw std::logic_error("Stepper::restart: the parameters define another discretization");
     check_parameters(params);
     params_ = params;
-    spare_.clear();
-    for (auto& f : cache_)
-        if (f) spare_.push_back(std::move(f));
+    for (auto it = cache_.rbegin(); it != cache_.rend(); ++it)
+        if (*it) keep_spare(std::move(*it));
     start_run();
 }
 
@@ -129,9 +128,15 @@ Stepper::Factor& Stepper::factor_for(double dt) {
             return *cache_[0];
         }
     }
-    std::rotate(cache_.begin(), cache_.end() - 1, cache_.end());  // drops the oldest
+    std::rotate(cache_.begin(), cache_.end() - 1, cache_.end());  // the oldest to the front
+    if (cache_[0]) keep_spare(std::move(cache_[0]));
     cache_[0] = make_factor(dt);
     return *cache_[0];
+}
+
+void Stepper::keep_spare(std::unique_ptr<Factor> f) {
+    spare_.insert(spare_.begin(), std::move(f));
+    if (spare_.size() > spare_capacity) spare_.pop_back();
 }
 
 std::vector<double> Stepper::cached_substeps() const {
@@ -150,14 +155,17 @@ void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
             if (f && f->dt == sizes[k]) next[k] = std::move(f);
         if (!next[k]) next[k] = make_factor(sizes[k]);
     }
+    for (auto& f : cache_)
+        if (f) keep_spare(std::move(f));
     cache_ = std::move(next);
     problem_factor_ = 0;
 }
 
 std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
-    for (auto& spare : spare_) {
-        if (spare && spare->dt == dt) {
-            auto f = std::move(spare);
+    for (auto it = spare_.begin(); it != spare_.end(); ++it) {
+        if ((*it)->dt == dt) {
+            auto f = std::move(*it);
+            spare_.erase(it);
             f->id = ++factor_ids_;
             return f;
         }
@@ -259,6 +267,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         problem_.rate.stribeck_velocity = params_.stribeck_velocity;
         problem_.rate.viscous = params_.viscous_friction;
         problem_.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
+        problem_.rate.tangential_inertia = params_.mass_matrix != MassVariant::redistributed_both;
     }
     // Without a Stribeck velocity the static coefficient is a memory: the nodes that stuck in
     // the last substep hold with F_s. With one, F_s is the law's value at zero slip rate.

@@ -152,8 +152,14 @@ private:
     // factor a substep reuses decides its last bits, and the paper's figures are kept bit for
     // bit (a refined substep refactors its sizes; refinement is the rare path).
     std::array<std::unique_ptr<Factor>, factor_cache_size> cache_;
-    // Factors kept by restart, most recent first: make_factor takes one of exactly its size.
+    // Factors no longer in cache_ (kept by restart, or dropped from it), most recent first, at
+    // most spare_capacity: make_factor takes one of exactly its size instead of refactoring,
+    // which gives the same bits (a factor depends only on the discretization and its size).
+    // A refined substep's halves use them: without, a run that halves often refactored the
+    // nominal size and every half each time (the 2-entry cache thrashed).
     std::vector<std::unique_ptr<Factor>> spare_;
+    static constexpr size_t spare_capacity = 8;
+    void keep_spare(std::unique_ptr<Factor> f);
     std::unique_ptr<Factor> make_factor(double dt);
     void start_run();  // the state of a new stepper, but for the discretization and factors
     int factor_ids_ = 0;  // factors built or taken from spare_: problem_factor_ names one

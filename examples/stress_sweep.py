@@ -1,6 +1,7 @@
-"""Stability stress test (scenes issue, item 5): random scenes over friction, foundation
-velocity, substep size, mesh and aspect ratio, lambda/mu, top load from compression to tension,
-initial gap, damping and all five mass_matrix variants. Each scene runs in its own process
+"""Stability stress test: random scenes over friction (and on half the frictional scenes a
+slip-rate law: a Stribeck drop, a viscous term or both), foundation velocity, substep size,
+mesh and aspect ratio, lambda/mu, top load from compression to tension, initial gap, damping
+and all five mass_matrix variants. Each scene runs in its own process
 (so that a crash or a hang is recorded, not fatal) for STOP seconds at 1e-4 s steps.
 
 Recorded per scene: status (ok, error: the FMU's message, refused at initialization, crash,
@@ -10,8 +11,9 @@ the FMU's log). Blow-up: max E above 1e3 x the work put in. Both top controls (w
 from tension to compression and plate masses 0.1-10 kg/m), and three motions (MOTIONS): on
 the foundation (a quarter from the static initial state), free flight, hanging from the clamp.
 
-Writes OUT/stress_sweep.json and .md (per variant: the fraction that fails, blows up or
-refines, and the worst cases).
+A scene with a slip-rate law also runs with the constant law (its twin), for the cost the law
+adds. Writes OUT/stress_sweep.json and .md (per variant: the fraction that fails, blows up or
+refines, and the worst cases; the slip-rate scenes' CPU time against their twins').
 
     .venv/bin/python examples/stress_sweep.py [--scenes 200] [--seed 1] [--stop 2e-3] [--out DIR]
 """
@@ -74,7 +76,22 @@ def random_scene(rng, variant, motion="on the foundation"):
         scene.update(initial_state=1)
         if scene["top_control"] == 1:  # the static state under force control needs a load
             scene["top_force"] = abs(scene["top_force"])
+    # A slip-rate law on half the scenes with friction: a Stribeck drop, a viscous term or both.
+    if scene["friction_coefficient"] > 0 and rng.uniform() < 0.5:
+        kind = rng.integers(0, 3)  # 0: Stribeck, 1: viscous, 2: both
+        if kind != 1:
+            scene.update(static_friction_ratio=float(rng.uniform(1, 3)),
+                         stribeck_velocity=float(np.exp(rng.uniform(np.log(0.01), np.log(1)))))
+        if kind != 0:
+            scene["viscous_friction"] = float(np.exp(rng.uniform(np.log(1e-3), np.log(0.1))))
     return scene
+
+
+CONSTANT_LAW = {"stribeck_velocity": 0.0, "viscous_friction": 0.0, "static_friction_ratio": 1.0}
+
+
+def has_rate_law(scene):
+    return scene.get("stribeck_velocity", 0) > 0 or scene.get("viscous_friction", 0) > 0
 
 
 # Below this (J/m) the balance error is taken absolute: a static start under tension lifts the
@@ -86,8 +103,11 @@ def run_scene(scene, stop, fmu):
     """In this process: the scene's record (called in a child process by sweep())."""
     from contactbody.fmu import Model, SimulationFailed
 
+    import time
+
     record = {"scene": scene, "status": "ok", "message": ""}
     with Model(fmu, name="sweep") as model:
+        tic = time.process_time()
         try:
             rows, _ = model.run(scene, stop, 1e-4, OUTPUTS)
         except SimulationFailed as e:
@@ -96,6 +116,8 @@ def run_scene(scene, stop, fmu):
                 return record
             record.update(status="error", message=str(e))
             rows = e.series
+        record["cpu_s"] = time.process_time() - tic
+        record["warnings"] = [m[2] for m in model.instance.messages if m[0] == 1]
     energy, last = rows["energy"], {n: rows[n][-1] for n in OUTPUTS}
     put_in = energy[0] + abs(last["clamp_work"]) + abs(last["foundation_work"])
     balance = (last["energy"] - energy[0] - last["clamp_work"] - last["normal_contact_work"]
@@ -111,23 +133,61 @@ def run_scene(scene, stop, fmu):
     return record
 
 
-def sweep(scenes, stop, fmu=FMU, timeout=120):
+def run_in_child(scene, stop, fmu, timeout):
+    code = (f"import json, sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); "
+            f"import stress_sweep; print(json.dumps(stress_sweep.run_scene("
+            f"json.loads(sys.argv[1]), {stop!r}, {str(fmu)!r})))")
+    try:
+        out = subprocess.run([sys.executable, "-c", code, json.dumps(scene)],
+                             capture_output=True, text=True, timeout=timeout)
+        if out.returncode != 0:
+            return {"scene": scene, "status": "crash",
+                    "message": out.stderr.strip().splitlines()[-1:] or [""]}
+        return json.loads(out.stdout.strip().splitlines()[-1])
+    except subprocess.TimeoutExpired:
+        return {"scene": scene, "status": "timeout", "message": f"> {timeout} s"}
+
+
+def sweep(scenes, stop, fmu=FMU, timeout=120, twins=False):
+    """Each scene's record; with twins, a scene with a slip-rate law also runs with the
+    constant law (its twin), and its record keeps the twin's CPU time."""
     records = []
     for scene in scenes:
-        code = (f"import json, sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); "
-                f"import stress_sweep; print(json.dumps(stress_sweep.run_scene("
-                f"json.loads(sys.argv[1]), {stop!r}, {str(fmu)!r})))")
-        try:
-            out = subprocess.run([sys.executable, "-c", code, json.dumps(scene)],
-                                 capture_output=True, text=True, timeout=timeout)
-            if out.returncode != 0:
-                records.append({"scene": scene, "status": "crash",
-                                "message": out.stderr.strip().splitlines()[-1:] or [""]})
-            else:
-                records.append(json.loads(out.stdout.strip().splitlines()[-1]))
-        except subprocess.TimeoutExpired:
-            records.append({"scene": scene, "status": "timeout", "message": f"> {timeout} s"})
+        record = run_in_child(scene, stop, fmu, timeout)
+        if twins and has_rate_law(scene) and "cpu_s" in record:
+            twin = run_in_child({**scene, **CONSTANT_LAW}, stop, fmu, timeout)
+            record["twin_status"] = twin["status"]
+            if "cpu_s" in twin:
+                record["twin_cpu_s"] = twin["cpu_s"]
+        records.append(record)
     return records
+
+
+def cost_table(records, rows=8):
+    """The slip-rate scenes' CPU time against their constant-law twins, the costliest first
+    (ratios of runs under 0.05 s are mostly the clock's noise)."""
+    pairs = [r for r in records if "twin_cpu_s" in r]
+    if not pairs:
+        return "No scene with a slip-rate law ran with its twin."
+    ratio = lambda r: r["cpu_s"] / max(r["twin_cpu_s"], 1e-3)  # noqa: E731
+    pairs.sort(key=ratio, reverse=True)
+    law = lambda s: ", ".join(f"{k} = {s[k]:.3g}" for k in  # noqa: E731
+                              ("static_friction_ratio", "stribeck_velocity", "viscous_friction")
+                              if k in s)
+    lines = [f"{len(pairs)} scenes with a slip-rate law, each also run with the constant law "
+             f"(its twin). CPU time / twin's: median {sorted(map(ratio, pairs))[len(pairs) // 2]:.2f}, "
+             f"largest {ratio(pairs[0]):.2f}; in the slowest scene "
+             f"{max(pairs, key=lambda r: r['cpu_s'])['cpu_s']:.2f} s against "
+             f"{max(pairs, key=lambda r: r['cpu_s'])['twin_cpu_s']:.2f} s.", "",
+             "| variant | F | law | status | CPU [s] | twin's CPU [s] | ratio | halvings | halving warnings |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for r in pairs[:rows]:
+        s = r["scene"]
+        lines.append(f"| {VARIANTS[s['mass_matrix']]} | {s['friction_coefficient']:.3g} | {law(s)} "
+                     f"| {r['status']} | {r['cpu_s']:.3f} | {r['twin_cpu_s']:.3f} | {ratio(r):.2f} "
+                     f"| {r.get('refinements', '')} "
+                     f"| {sum('substep halvings' in w for w in r.get('warnings', []))} |")
+    return "\n".join(lines)
 
 
 BALANCE_PROMISE = 1e-9  # docs/contract.md: the balance closes to round-off
@@ -171,7 +231,7 @@ def main():
     rng = np.random.default_rng(args.seed)
     motions = [MOTIONS[(k // len(VARIANTS)) % len(MOTIONS)] for k in range(args.scenes)]
     scenes = [random_scene(rng, k % len(VARIANTS), motions[k]) for k in range(args.scenes)]
-    records = sweep(scenes, args.stop)
+    records = sweep(scenes, args.stop, twins=True)
     for record, motion in zip(records, motions):
         record["motion"] = motion
     (args.out / "stress_sweep.json").write_text(json.dumps(records, indent=1))
@@ -181,6 +241,7 @@ def main():
              "balance error is |E - E(0) - works| / max(|E|, work put in, 1e-20 J/m) at the end of every "
              "run that produced finite outputs (a run that fails a step keeps its rows up to "
              "there).", "", table, "", summary(records, "motion", MOTIONS), "",
+             "Cost of the slip-rate law:", "", cost_table(records), "",
              "Failures and their messages:", ""]
     lines += [f"- {VARIANTS[r['scene']['mass_matrix']]}: {r['status']}: "
               f"{str(r['message'])[:300]}" for r in errors]

@@ -168,6 +168,7 @@ std::vector<char> serialize(const FmuState& s) {
         w.vector(sim.state.lambda);
         w.vector(sim.state.sticking);
         Works::for_each(sim.works, sim.works, [&](double x, double) { w.value(x); });
+        w.value(sim.initial_energy);
         w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
         for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction,
@@ -274,6 +275,8 @@ FmuState deserialize(const char* bytes, size_t size) {
         sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
         sim.state.sticking = r.vector("sticking nodes", nc);
         Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
+        sim.initial_energy = r.finite("initial energy");
+        if (sim.initial_energy < 0) r.fail("initial energy is negative");
         sim.factor_substeps = r.finite_doubles("cached substep sizes");
         if (sim.factor_substeps.size() > Stepper::factor_cache_size)
             r.fail("more cached substep sizes than the factor cache holds");

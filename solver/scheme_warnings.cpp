@@ -60,7 +60,7 @@ std::string friction_warning(const SceneParameters& p) {
         paper_height / std::sqrt((paper_lambda + 2 * paper_mu) / paper_density);
     const double scale = p.height / p_wave_speed(p) / paper_time;
     const int c = nearest_column(p.ny);
-    if (p.friction_coefficient >= stability_map::damped_no_steady_state[c]) {
+    if (p.friction_coefficient >= wedging_friction(p)) {
         std::ostringstream msg;
         msg << "friction_coefficient = " << p.friction_coefficient << ": no steady sliding state "
             << "exists here (foundation_velocity != 0): the clamped body wedges, its normal force "
@@ -127,6 +127,10 @@ std::string frictionless_warning(const SceneParameters& p) {
 }
 
 }  // namespace
+
+double wedging_friction(const SceneParameters& p) {
+    return stability_map::damped_no_steady_state[nearest_column(p.ny)];
+}
 
 std::string scheme_warning(const SceneParameters& p) {
     const std::string why = p.friction_coefficient > 0 ? friction_warning(p) : frictionless_warning(p);

@@ -21,6 +21,10 @@ namespace contactbody {
 // the height, lambda/mu, the Courant number c_p dt / h, and beta in units of H / c_p.
 std::string scheme_warning(const SceneParameters& p);
 
+// The smallest friction coefficient from which the damped stability map found no steady
+// sliding state (the clamped body wedges) on the mesh nearest this body's; inf where none.
+double wedging_friction(const SceneParameters& p);
+
 // "Gains energy": more than 10 % in 20 ms without friction and with the top held.
 constexpr double frictionless_growth_limit = 1.1;
 

@@ -42,6 +42,7 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
     edge_.state.setZero(nc);
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
+    initial_energy_ = energy(state_);
     if (std::string why = scheme_warning(params); !why.empty()) warnings_.push_back(std::move(why));
 }
 
@@ -277,8 +278,7 @@ void Simulation::check_plausible() {
     const Discretization& d = stepper_->discretization();
     const double energy = observables().energy;
     const Works& w = works_;
-    // E(0) from the balance (to its round-off), so that a restored state needs nothing more.
-    const double initial = energy - (w.clamp + w.normal_contact + w.friction - w.damping);
+    const double initial = initial_energy_;
     const double put_in = initial + std::abs(w.clamp) + std::abs(w.foundation);
     const bool over_ratio = p.max_energy_ratio > 0 && energy > 0 && energy > p.max_energy_ratio * put_in;
     if (over_ratio || (p.max_energy > 0 && energy > p.max_energy)) {
@@ -442,7 +442,13 @@ std::string Simulation::growth_advice() const {
     const SceneParameters& p = stepper_->parameters();
     std::ostringstream msg;
     msg << ". What to change:";
-    if (p.friction_coefficient > 0)
+    const double wedge = wedging_friction(p);
+    if (p.friction_coefficient >= wedge)
+        msg << " with F = " << p.friction_coefficient << " no steady sliding exists (from F = "
+            << wedge << " on the damped stability map the clamped body wedges and its normal "
+            << "force grows without bound), so no damping_stiffness helps: lower "
+               "friction_coefficient below " << wedge << ";";
+    else if (p.friction_coefficient > 0)
         msg << " with friction (F = " << p.friction_coefficient << ") steady sliding is "
             << "unstable unless damped: set damping_stiffness (4e-6 s stabilizes F <= 0.3 on "
                "the paper's scene);";
@@ -504,6 +510,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     stepper_->set_cached_substeps(snapshot.factor_substeps);
     state_ = s;
     works_ = snapshot.works;
+    initial_energy_ = snapshot.initial_energy;
     observables_ = snapshot.observables;
     edge_.pressure = e.pressure;  // x stays the mesh's
     edge_.friction = e.friction;

@@ -52,6 +52,7 @@ struct StepInputs {
 struct SimulationSnapshot {
     State state;
     Works works;              // since t0
+    double initial_energy = 0;  // E(0), J/m
     Observables observables;  // the last step's averages
     std::vector<double> factor_substeps;  // Stepper::cached_substeps()
     EdgeSnapshot edge;        // the last step's edge (its x is the mesh's)
@@ -111,7 +112,7 @@ public:
     int substeps_for(double h) const;
 
     SimulationSnapshot snapshot() const {
-        return {state_, works_, observables_, stepper_->cached_substeps(), edge_};
+        return {state_, works_, initial_energy_, observables_, stepper_->cached_substeps(), edge_};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -148,6 +149,9 @@ private:
     std::unique_ptr<Stepper> stepper_;  // owned by pointer: restart hands it on
     State state_, saved_;
     Works works_;  // since t0
+    // E(0), kept: rebuilt from the balance (E - works) it is round-off where E is 1e15-1e17
+    // and the guard's message printed -65 for 22.99.
+    double initial_energy_ = 0;
     Observables observables_;
     StepStatistics statistics_;
     bool energies_current_ = false;

@@ -37,7 +37,6 @@ if(CONTACTBODY_PORTABLE)
       CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/${toolchain}.cmake
                  -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCONTACTBODY_FMU_BINARIES_ONLY=ON
                  -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
-                 -DFMI_HEADERS_DIR=${FMI_HEADERS_DIR} -DSTABILITY_MAP_DIR=${STABILITY_MAP_DIR}
       INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
     list(APPEND binary_targets binaries_${platform})
   endforeach()
@@ -55,10 +54,13 @@ else()
   set(license_names LICENSE)
 endif()
 
-# add_fmu(NAME GENERATOR target [GENERATOR_ARGS args] BINARIES platform file ... SOURCES files
-#         LICENSES files LICENSE_NAMES names): one .fmu in the build folder.
+# add_fmu(NAME GENERATOR target [GENERATOR_ARGS args] BINARIES platform file ...
+#         LICENSES files LICENSE_NAMES names): one .fmu in the build folder. No sources/: a
+# source FMU that an importer could compile would need Eigen, the SuiteSparse subset and the
+# Fortran LAPACK routines, which fmpy's compile step (C) cannot build, and FMI 3.0 ties
+# sources/ to a buildDescription.xml; the sources are this repository (docs/building.md).
 function(add_fmu name)
-  cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;SOURCES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
   set(dir ${CMAKE_BINARY_DIR}/fmu/${name})
   set(file ${CMAKE_BINARY_DIR}/${name}.fmu)
   set(commands)
@@ -75,12 +77,11 @@ function(add_fmu name)
   endforeach()
   add_custom_command(OUTPUT ${file}
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${dir}
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/sources ${dir}/documentation/licenses
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/documentation/licenses
     COMMAND ${FMU_GENERATOR} ${FMU_GENERATOR_ARGS} ${dir}/modelDescription.xml
     ${commands}
-    COMMAND ${CMAKE_COMMAND} -E copy ${FMU_SOURCES} ${dir}/sources/
     COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${dir} ${file}
-    DEPENDS ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${FMU_GENERATOR} ${FMU_DEPENDS} ${binary_files} ${FMU_SOURCES} ${FMU_LICENSES}
+    DEPENDS ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${FMU_GENERATOR} ${FMU_DEPENDS} ${binary_files} ${FMU_LICENSES}
     COMMENT "Packaging ${name}.fmu")
   add_custom_target(${name}_fmu ALL DEPENDS ${file})
 endfunction()
@@ -97,12 +98,9 @@ set(contactbody_license_names ${license_names}
     CHOLMOD-License.txt CHOLMOD-LGPL-2.1.txt AMD-License.txt CAMD-License.txt COLAMD-License.txt
     CCOLAMD-License.txt SuiteSparse-LICENSE.txt METIS-LICENSE.txt LAPACK-LICENSE.txt
     Eigen-MPL-2.0.txt README.md)
-file(GLOB contactbody_sources CONFIGURE_DEPENDS
-  ${PROJECT_SOURCE_DIR}/fmu_src/*.cpp ${PROJECT_SOURCE_DIR}/fmu_src/*.hpp
-  ${PROJECT_SOURCE_DIR}/solver/*.cpp ${PROJECT_SOURCE_DIR}/solver/*.hpp)
 add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_binaries}
-        SOURCES ${contactbody_sources} LICENSES ${contactbody_licenses}
-        LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
+        LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}
+        DEPENDS ${binary_targets})
 # The FMI 3.0 FMU: the same binaries under FMI 3.0's platform tuples.
 set(platform_tuple_linux64 x86_64-linux)
 set(platform_tuple_win64 x86_64-windows)
@@ -113,12 +111,9 @@ while(list)
   list(APPEND fmi3_binaries ${platform_tuple_${platform}} ${binary})
 endwhile()
 add_fmu(ContactBody_fmi3 GENERATOR generate_model_description GENERATOR_ARGS --fmi3
-        BINARIES ${fmi3_binaries} SOURCES ${contactbody_sources} LICENSES ${contactbody_licenses}
+        BINARIES ${fmi3_binaries} LICENSES ${contactbody_licenses}
         LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
 foreach(companion IN LISTS COMPANIONS)
   add_fmu(${companion} GENERATOR ${companion}_model_description BINARIES ${${companion}_binaries}
-          SOURCES ${PROJECT_SOURCE_DIR}/system_fmus/companion.hpp
-                  ${PROJECT_SOURCE_DIR}/system_fmus/companion_fmi2.cpp
-                  ${PROJECT_SOURCE_DIR}/${${companion}_model}
           LICENSES ${licenses} LICENSE_NAMES ${license_names} DEPENDS ${binary_targets})
 endforeach()

@@ -26,6 +26,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from contactbody.stability import first_stable  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PROGRAM = ROOT / "build" / "sliding_stability"
 BETAS = np.linspace(0, 1e-5, 101)
@@ -45,20 +47,6 @@ def analyse(nx, friction, variant=1, lift_off=True):
             "steady_state": True, "lifted_nodes": r["lifted_nodes"],
             "normal_force": r["normal_force"],
             "growth": [d["max_growth_rate"] for d in r["damped"]]}
-
-
-def first_stable(grid, growth):
-    """Smallest value of an ascending grid from which every larger one has growth < 0 (None
-    if the largest grows, or if there is no steady state: growth None)."""
-    if growth is None:
-        return None
-    stable = np.asarray(growth) < 0
-    if not stable[-1]:
-        return None
-    k = len(stable) - 1
-    while k > 0 and stable[k - 1]:
-        k -= 1
-    return float(grid[k])
 
 
 def critical_beta(growth):

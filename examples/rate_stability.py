@@ -31,7 +31,9 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from damped_stability import draw_growth, first_stable  # noqa: E402
+from damped_stability import draw_growth  # noqa: E402
+
+from contactbody.stability import first_stable  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PROGRAM = ROOT / "build" / "sliding_stability"

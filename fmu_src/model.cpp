@@ -164,11 +164,12 @@ void ContactBodyModel::build_simulation(const Values& values) {
     const SceneParameters scene = values.scene();
     try {
         if (sim_ && same_discretization(sim_->stepper().parameters(), scene)) {
-            sim_->restart(scene, values.top_displacement, start_time_, values.top_force);
+            sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
+                          values.foundation_velocity);
         } else {
             sim_.reset();  // before the new one: never two discretizations in memory
             sim_ = std::make_unique<Simulation>(scene, values.top_displacement, start_time_,
-                                                values.top_force);
+                                                values.top_force, values.foundation_velocity);
         }
     } catch (const std::invalid_argument& e) {
         sim_.reset();

@@ -136,6 +136,16 @@ def test_fmu_is_small_and_carries_the_licences():
         assert name in licences, name
 
 
+@pytest.mark.parametrize("name", ["ContactBody", "ContactBody_fmi3", "BeltDrive", "Press"])
+def test_no_fmu_carries_sources(name):
+    """No sources/ (docs/building.md): a complete source FMU would need Eigen, SuiteSparse and
+    Fortran LAPACK, which an importer's C compile cannot build, and FMI 3.0 ties sources/ to
+    a buildDescription.xml; an incomplete sources/ promised what it could not do."""
+    with zipfile.ZipFile(FMU.with_name(f"{name}.fmu")) as z:
+        assert not [n for n in z.namelist() if n.startswith("sources/")]
+        assert "<SourceFiles" not in z.read("modelDescription.xml").decode()
+
+
 # Scenes recorded by running this file (`.venv/bin/python python_tests/test_portable.py FMU OUT`):
 # NATIVE with this project built by the machine's gcc (-DCONTACTBODY_PORTABLE=OFF), BEFORE with
 # the FMU before the portable build (commit 406a316: gcc 12 with Debian's SuiteSparse 5.12,

@@ -30,6 +30,16 @@ SparseMatrix selector(const std::vector<int>& rows, int n) {
 
 }  // namespace
 
+ContactProblem::RateLaw rate_law(const SceneParameters& p) {
+    ContactProblem::RateLaw law;
+    if (p.stribeck_velocity > 0) law.excess = (p.static_friction_ratio - 1) * p.friction_coefficient;
+    law.stribeck_velocity = p.stribeck_velocity;
+    law.viscous = p.viscous_friction;
+    law.slip_time = 1;
+    law.tangential_inertia = p.mass_matrix != MassVariant::redistributed_both;
+    return law;
+}
+
 bool redistributes_normal(MassVariant v) {
     return v == MassVariant::redistributed_normal || v == MassVariant::redistributed_both ||
            v == MassVariant::redistributed_implicit_contact;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "assembly.hpp"
+#include "contact_solver.hpp"
 
 namespace contactbody {
 
@@ -61,6 +62,10 @@ struct SceneParameters {
     double max_energy = 0, max_energy_ratio = 1e6;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 };
+
+// The slip-rate law of p as the contact solver takes it, with slip_time 1 (so that its slip is
+// a slip rate: coefficient(F_d, v, &dF) gives F(v) and dF/dv); the stepper sets the substep's.
+ContactProblem::RateLaw rate_law(const SceneParameters& p);
 
 // Limits shared by the solver and the FMI layer (which also writes them as min/max).
 constexpr int max_cells_per_direction = 4096;

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "stability_map_data.hpp"
 
@@ -54,11 +55,15 @@ double largest_stabilized_friction(int c) {
     return largest;
 }
 
-std::string friction_warning(const SceneParameters& p) {
-    // beta scales with the time H / c_p (the problem's only time at fixed lambda/mu and mesh)
+// beta scales with the time H / c_p (the problem's only time at fixed lambda/mu and mesh)
+double beta_scale(const SceneParameters& p) {
     const double paper_time =
         paper_height / std::sqrt((paper_lambda + 2 * paper_mu) / paper_density);
-    const double scale = p.height / p_wave_speed(p) / paper_time;
+    return p.height / p_wave_speed(p) / paper_time;
+}
+
+std::string friction_warning(const SceneParameters& p) {
+    const double scale = beta_scale(p);
     const int c = nearest_column(p.ny);
     if (p.friction_coefficient >= wedging_friction(p)) {
         std::ostringstream msg;
@@ -126,15 +131,153 @@ std::string frictionless_warning(const SceneParameters& p) {
     return msg.str();
 }
 
+// The rate map's growth at (column nx, F, slope, beta index); nan where not measured.
+double rate_growth(int nx, double friction, double slope, size_t beta) {
+    for (const auto& row : stability_map::rate)
+        if (row.nx == nx && row.friction == friction && row.slope == slope) return row.growth[beta];
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Whether every measured point the setting lies between is stable: the measured F at or
+// around it (the larger growth of the two, as for the damped map), the largest measured
+// dF/dv at or below it and the largest measured beta at or below it (growth falls with both,
+// so the point is judged no better than it is).
+struct RatePlace {
+    bool covered = false;
+    int nx = 0;
+    double f_below = 0, f_above = 0, slope = 0;
+    size_t beta = 0;
+};
+
+RatePlace place_on_rate_map(const SceneParameters& p, double F, double dF, double beta) {
+    RatePlace r;
+    std::vector<int> columns;
+    double f_min = stability_map::inf, f_max = -stability_map::inf;
+    double s_min = stability_map::inf, s_max = -stability_map::inf;
+    for (const auto& row : stability_map::rate) {
+        if (std::find(columns.begin(), columns.end(), row.nx) == columns.end()) columns.push_back(row.nx);
+        f_min = std::min(f_min, row.friction), f_max = std::max(f_max, row.friction);
+        s_min = std::min(s_min, row.slope), s_max = std::max(s_max, row.slope);
+    }
+    r.nx = columns.front();
+    for (int nx : columns)
+        if (std::abs(std::log(double(nx) / p.ny)) < std::abs(std::log(double(r.nx) / p.ny))) r.nx = nx;
+    if (!(F >= f_min && F <= f_max && dF >= s_min && dF <= s_max)) return r;
+    r.f_below = f_min, r.f_above = f_max, r.slope = s_min;
+    for (const auto& row : stability_map::rate) {
+        if (row.nx != r.nx) continue;
+        if (row.friction <= F) r.f_below = std::max(r.f_below, row.friction);
+        if (row.friction >= F) r.f_above = std::min(r.f_above, row.friction);
+        if (row.slope <= dF) r.slope = std::max(r.slope, row.slope);
+    }
+    for (size_t b = 0; b < std::size(stability_map::rate_betas); ++b)
+        if (stability_map::rate_betas[b] <= beta &&
+            !std::isnan(rate_growth(r.nx, r.f_below, r.slope, b)) &&
+            !std::isnan(rate_growth(r.nx, r.f_above, r.slope, b)))
+            r.beta = b;
+    r.covered = !std::isnan(rate_growth(r.nx, r.f_below, r.slope, r.beta)) &&
+                !std::isnan(rate_growth(r.nx, r.f_above, r.slope, r.beta));
+    return r;
+}
+
+double rate_map_growth(const RatePlace& r, double slope, size_t beta) {
+    return std::max(rate_growth(r.nx, r.f_below, slope, beta), rate_growth(r.nx, r.f_above, slope, beta));
+}
+
+// The largest measured dF/dv < 0 at which every measured point of the rate map grows (0: none).
+double every_point_grows() {
+    double largest = 0;
+    for (const auto& row : stability_map::rate) {
+        if (!(row.slope < 0)) continue;
+        bool all = true;
+        for (const auto& other : stability_map::rate)
+            if (other.slope == row.slope)
+                for (double g : other.growth) all = all && (std::isnan(g) || g > 0);
+        if (all && (largest == 0 || row.slope > largest)) largest = row.slope;
+    }
+    return largest;
+}
+
+std::string rate_warning(const SceneParameters& p, double speed) {
+    double dF = 0;
+    const double F = rate_law(p).coefficient(p.friction_coefficient, speed, &dF);
+    const double scale = beta_scale(p);
+    std::ostringstream law;
+    law << "with the slip-rate law at the sliding speed |foundation_velocity| = " << speed
+        << " m/s, F = " << F << " and dF/dv = " << dF << " s/m";
+    const RatePlace r = place_on_rate_map(p, F, dF, p.damping_stiffness / scale);
+    if (!r.covered) {
+        // Outside the rate map: the constant-F map at F(V), which knows nothing of dF/dv.
+        SceneParameters at_speed = p;
+        at_speed.friction_coefficient = F;
+        const std::string constant = friction_warning(at_speed);
+        if (constant.empty() && dF >= 0) return "";  // dF/dv >= 0 only damps the interface
+        double f_min = stability_map::inf, f_max = 0, s_min = stability_map::inf, s_max = -s_min;
+        for (const auto& row : stability_map::rate) {
+            f_min = std::min(f_min, row.friction), f_max = std::max(f_max, row.friction);
+            s_min = std::min(s_min, row.slope), s_max = std::max(s_max, row.slope);
+        }
+        std::ostringstream msg;
+        msg << "settings outside the measured maps: " << law.str()
+            << " lie outside the rate map (F " << f_min << " to " << f_max << ", dF/dv " << s_min
+            << " to " << s_max << " s/m; examples/results/rate_stability.md), so this judges the "
+               "map of constant F at F(V) alone, which ignores dF/dv";
+        if (dF < 0) {
+            msg << " (dF/dv < 0 destabilizes";
+            if (const double s = every_point_grows(); s < 0)
+                msg << ": on the rate map dF/dv = " << s << " s/m made every measured point grow, "
+                    << "up to damping_stiffness = " << stability_map::rate_betas[std::size(stability_map::rate_betas) - 1]
+                    << " s on the paper's body";
+            msg << ")";
+        }
+        msg << (constant.empty() ? ": that map sees no growth" : ": " + constant);
+        return msg.str();
+    }
+    const double beta_grid = stability_map::rate_betas[r.beta];
+    if (rate_map_growth(r, r.slope, r.beta) < 0) return "";
+    std::ostringstream msg;
+    msg << law.str() << ", damping_stiffness = " << p.damping_stiffness
+        << " s: steady sliding is unstable on the rate map (nx = " << r.nx
+        << " cells across the height, measured F " << r.f_below;
+    if (r.f_above != r.f_below) msg << " and " << r.f_above;
+    msg << ", dF/dv " << r.slope << " s/m, beta " << beta_grid * scale << " s)";
+    // What would do: a larger measured dF/dv at this beta, or a larger measured beta.
+    double slope_needed = stability_map::inf;
+    for (const auto& row : stability_map::rate)
+        if (row.nx == r.nx && row.friction == r.f_below && row.slope > r.slope &&
+            rate_map_growth(r, row.slope, r.beta) < 0)
+            slope_needed = std::min(slope_needed, row.slope);
+    double beta_needed = stability_map::inf;
+    for (size_t b = r.beta + 1; b < std::size(stability_map::rate_betas); ++b)
+        if (rate_map_growth(r, r.slope, b) < 0) {
+            beta_needed = stability_map::rate_betas[b] * scale;
+            break;
+        }
+    if (std::isfinite(slope_needed) || std::isfinite(beta_needed)) msg << ": stable with";
+    if (std::isfinite(slope_needed)) msg << " dF/dv >= " << slope_needed << " s/m at this damping";
+    if (std::isfinite(slope_needed) && std::isfinite(beta_needed)) msg << ", or";
+    if (std::isfinite(beta_needed)) msg << " damping_stiffness >= " << beta_needed << " s at this dF/dv";
+    if (!std::isfinite(slope_needed) && !std::isfinite(beta_needed))
+        msg << ": no measured dF/dv or damping_stiffness stabilizes it";
+    msg << " (measured on the paper's body, lambda/mu = 2; beta scaled by H / c_p";
+    if (std::abs(p.lambda / p.mu - 2) > 0.5) msg << "; lambda/mu here = " << p.lambda / p.mu << ", not measured";
+    msg << ")";
+    return msg.str();
+}
+
 }  // namespace
 
 double wedging_friction(const SceneParameters& p) {
     return stability_map::damped_no_steady_state[nearest_column(p.ny)];
 }
 
-std::string scheme_warning(const SceneParameters& p) {
-    const std::string why = p.friction_coefficient > 0 ? friction_warning(p) : frictionless_warning(p);
-    return why.empty() ? why : "settings in a measured unstable region: " + why;
+std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
+    const bool rate = p.friction_coefficient > 0 && rate_law(p).active();
+    const std::string why = rate ? rate_warning(p, sliding_speed)
+                            : p.friction_coefficient > 0 ? friction_warning(p)
+                                                         : frictionless_warning(p);
+    if (why.empty() || why.rfind("settings ", 0) == 0) return why;
+    return "settings in a measured unstable region: " + why;
 }
 
 }  // namespace contactbody

@@ -19,7 +19,10 @@ namespace contactbody {
 // The maps are measured on the paper's square body (lambda/mu = 2 for the damped one); other
 // bodies are placed on them by the dimensionless numbers that decide the scheme: cells across
 // the height, lambda/mu, the Courant number c_p dt / h, and beta in units of H / c_p.
-std::string scheme_warning(const SceneParameters& p);
+// - with a slip-rate law: F and dF/dv at the sliding speed placed on the rate map
+//   (examples/rate_stability.py: F x dF/dv x beta), where it covers them; where it does not,
+//   the message says so and judges the damped map at F(sliding speed), which ignores dF/dv.
+std::string scheme_warning(const SceneParameters& p, double sliding_speed = 0);
 
 // The smallest friction coefficient from which the damped stability map found no steady
 // sliding state (the clamped body wedges) on the mesh nearest this body's; inf where none.

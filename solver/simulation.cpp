@@ -12,20 +12,24 @@
 namespace contactbody {
 
 Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
-                       double start_time, double initial_top_force)
+                       double start_time, double initial_top_force,
+                       double initial_foundation_velocity)
     : Simulation(std::make_unique<Stepper>(params), initial_top_displacement, start_time,
-                 initial_top_force) {}
+                 initial_top_force, initial_foundation_velocity) {}
 
 void Simulation::restart(const SceneParameters& params, double initial_top_displacement,
-                         double start_time, double initial_top_force) {
+                         double start_time, double initial_top_force,
+                         double initial_foundation_velocity) {
     stepper_->restart(params);
     *this = Simulation(std::move(stepper_), initial_top_displacement, start_time,
-                       initial_top_force);
+                       initial_top_force, initial_foundation_velocity);
 }
 
 Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
-                       double start_time, double initial_top_force)
-    : stepper_(std::move(stepper)), state_(stepper_->initial_state(initial_top_displacement)) {
+                       double start_time, double initial_top_force,
+                       double initial_foundation_velocity)
+    : stepper_(std::move(stepper)), state_(stepper_->initial_state(initial_top_displacement)),
+      sliding_speed_(std::abs(initial_foundation_velocity)) {
     const SceneParameters& params = stepper_->parameters();
     state_.time = start_time;
     product_.resize(state_.u.size());
@@ -43,7 +47,8 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
     initial_energy_ = energy(state_);
-    if (std::string why = scheme_warning(params); !why.empty()) warnings_.push_back(std::move(why));
+    if (std::string why = scheme_warning(params, sliding_speed_); !why.empty())
+        warnings_.push_back(std::move(why));
 }
 
 // A quasi-static load path: the top displacement goes from `start` to `top` in 10 substeps so
@@ -299,7 +304,7 @@ void Simulation::check_plausible() {
             msg << "; likely cause: the contact created normal_contact_work = " << w.normal_contact
                 << " J/m of it (the midpoint contact of mass_matrix = "
                 << static_cast<int>(p.mass_matrix) << ")";
-        else if (const std::string why = scheme_warning(p); !why.empty())
+        else if (const std::string why = scheme_warning(p, sliding_speed_); !why.empty())
             msg << "; likely cause: " << why;
         msg << growth_advice();
         throw NumericalFailure(msg.str());

@@ -85,15 +85,19 @@ public:
 class Simulation {
 public:
     // The initial load: the top displacement (top_control = displacement) or the force on the
-    // plate (force), which initial_state = static puts the body in balance with.
+    // plate (force), which initial_state = static puts the body in balance with. The initial
+    // foundation velocity is the sliding speed at which the initialization warning evaluates a
+    // slip-rate law.
     Simulation(const SceneParameters& params, double initial_top_displacement,
-               double start_time = 0, double initial_top_force = 0);
+               double start_time = 0, double initial_top_force = 0,
+               double initial_foundation_velocity = 0);
     // Starts over from t0 with new parameters of the same discretization
     // (same_discretization): the same bits as a new Simulation, without rebuilding the
     // discretization or the factors it already made (Stepper::restart). If it throws, the
     // simulation is unusable and must be discarded.
     void restart(const SceneParameters& params, double initial_top_displacement,
-                 double start_time = 0, double initial_top_force = 0);
+                 double start_time = 0, double initial_top_force = 0,
+                 double initial_foundation_velocity = 0);
 
     // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
     // fails is redone from its start as two halves, recursively down to min_internal_step
@@ -126,7 +130,7 @@ public:
 
 private:
     Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
-               double start_time, double initial_top_force);
+               double start_time, double initial_top_force, double initial_foundation_velocity);
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static
@@ -152,6 +156,7 @@ private:
     // E(0), kept: rebuilt from the balance (E - works) it is round-off where E is 1e15-1e17
     // and the guard's message printed -65 for 22.99.
     double initial_energy_ = 0;
+    double sliding_speed_ = 0;  // |V| at t0: where the warnings evaluate a slip-rate law
     Observables observables_;
     StepStatistics statistics_;
     bool energies_current_ = false;

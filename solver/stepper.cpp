@@ -263,11 +263,8 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // v^{k+1} - V for the implicit-contact variants (slip / slip_time, docs/contract.md).
     const bool stribeck = friction && params_.stribeck_velocity > 0;
     if (friction) {
-        problem_.rate.excess = stribeck ? (params_.static_friction_ratio - 1) * params_.friction_coefficient : 0;
-        problem_.rate.stribeck_velocity = params_.stribeck_velocity;
-        problem_.rate.viscous = params_.viscous_friction;
+        problem_.rate = rate_law(params_);
         problem_.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
-        problem_.rate.tangential_inertia = params_.mass_matrix != MassVariant::redistributed_both;
     }
     // Without a Stribeck velocity the static coefficient is a memory: the nodes that stuck in
     // the last substep hold with F_s. With one, F_s is the law's value at zero slip rate.

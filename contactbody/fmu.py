@@ -39,6 +39,31 @@ def find_fmu(path: str | os.PathLike | None = None) -> pathlib.Path:
     return candidate
 
 
+def simulate_fmi3(fmu: str | os.PathLike | None = None, start_values: dict | None = None,
+                  **kwargs):
+    """fmpy.simulate_fmu for the FMI 3.0 FMU (ContactBody_fmi3.fmu beside find_fmu()'s), with
+    any mesh. fmpy 0.3.32 neither enters Configuration Mode nor sizes the edge arrays by the
+    structural parameter: it takes their size from the modelDescription's start of
+    `edge_nodes`, so `start_values={"nx": 40}` alone makes the FMU refuse the first array read
+    (rightly: its arrays hold 41 values). Here a new nx or ny goes into a configured copy
+    (contactbody.system.configured_copy: nx, ny and edge_nodes = nx + 1 as start values), which
+    is run and removed; the other start values and keyword arguments pass to simulate_fmu."""
+    from .system import configured_copy
+
+    path = pathlib.Path(fmu) if fmu else find_fmu().with_name("ContactBody_fmi3.fmu")
+    start_values = dict(start_values or {})
+    mesh = {k: start_values.pop(k) for k in ("nx", "ny") if k in start_values}
+    if not mesh:
+        return fmpy.simulate_fmu(str(path), start_values=start_values, **kwargs)
+    directory = tempfile.mkdtemp(prefix="ContactBody_fmi3_")
+    try:
+        copy = pathlib.Path(directory) / path.name
+        copy.write_bytes(configured_copy(path, mesh))
+        return fmpy.simulate_fmu(str(copy), start_values=start_values, **kwargs)
+    finally:
+        shutil.rmtree(directory, ignore_errors=True)
+
+
 # fmpy's native logger proxy (which formats the variadic message) holds one Python callback
 # for the whole process: messages are routed to their instance by instance name.
 _messages_by_instance: dict[str, list] = {}

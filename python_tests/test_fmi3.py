@@ -394,6 +394,21 @@ def test_a_configured_copy_with_another_nx_runs_in_plain_fmpy(tmp_path):
         fmpy.simulate_fmu(str(FMU3), stop_time=1e-3, output_interval=H, start_values={"nx": 10})
 
 
+def test_simulate_fmi3_runs_another_mesh_in_one_call():
+    """contactbody.fmu.simulate_fmi3 hides the configured copy: nx = 10 and ny = 8 through
+    start values record 11-node arrays, the same bits as the configured copy run by hand."""
+    from contactbody.fmu import simulate_fmi3
+    start = {"nx": 10, "ny": 8, "friction_coefficient": 0.2}
+    r = simulate_fmi3(FMU3, start_values=start, stop_time=1e-3, output_interval=H)
+    assert r["edge_pressure"].shape == (11, 11) and r["normal_force"][-1] > 0
+    sums = r["edge_pressure"] @ edge_shares(r["edge_x"][0])
+    assert np.abs(sums - r["normal_force"]).max() <= 1e-12 * r["normal_force"].max()
+    reference = fmpy.simulate_fmu(str(FMU3), stop_time=1e-3, output_interval=H,
+                                  start_values={"ny": 8, "friction_coefficient": 0.2,
+                                                "nx": 20})  # another mesh: must differ
+    assert not np.array_equal(r["normal_force"], reference["normal_force"])
+
+
 @pytest.mark.parametrize("debug_logging", [False, True])
 def test_fmpy_receives_messages_only_while_logging_is_on(debug_logging):
     """FMI 3.0.2, 2.3.1: while loggingOn is false the FMU does not call logMessage at all, and

@@ -7,6 +7,7 @@ import fmpy
 
 from conftest import FMU, ROOT
 from contactbody.docs import variable_table
+from contactbody.quotes import documents, quotes
 
 DOCUMENTS = [ROOT / "README.md", ROOT / "examples" / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 
@@ -53,3 +54,24 @@ def test_readme_is_the_front_door():
     for document in ("docs/contract.md", "docs/user_guide.md", "docs/studies.md",
                      "docs/system_models.md", "docs/decisions.md"):
         assert f"]({document})" in text, document
+
+
+def test_numbers_quoted_from_results_files_hold():
+    """Issue 31, item 4: a number that prose quotes from a results file carries a marker naming
+    the file and the value (contactbody/quotes.py); each is the value rounded as shown."""
+    found = {document: quotes(document) for document in documents()}
+    wrong = [f"{d.relative_to(ROOT)}:{line}: {shown} against {value}"
+             for d, entries in found.items() for line, shown, value, holds in entries if not holds]
+    assert not wrong, "\n".join(wrong)
+    assert sum(map(len, found.values())) >= 15
+
+
+def test_quote_checker_catches_a_wrong_number(tmp_path, monkeypatch):
+    results = tmp_path / "r.json"
+    results.write_text('{"runs": [{"n": 1, "ratio": 7.129}, {"n": 2, "ratio": 0.7649}]}')
+    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    page = tmp_path / "p.md"
+    page.write_text("a 7.1 ×<!-- r.json: runs/n=1/ratio --> b 0.77<!-- r.json: runs/n=2/ratio -->"
+                    " c 7.12<!-- r.json: runs/0/ratio --> d <!-- r.json: runs/1/ratio -->"
+                    " e 3<!-- r.json: runs/n=3/ratio -->")
+    assert [holds for _, _, _, holds in quotes(page)] == [True, False, False, False, False]

@@ -126,6 +126,9 @@ def test_windows_binary_imports_only_system_dlls(fmu, tmp_path):
 
 def test_fmu_is_small_and_carries_the_licences():
     assert FMU.stat().st_size <= 3 * 1024 * 1024, FMU.stat().st_size
+    quoted = re.search(r"The FMU is ([\d.]+) MB zipped", (ROOT / "README.md").read_text())
+    assert quoted and float(quoted[1]) == round(FMU.stat().st_size / 1e6, 1), \
+        f"README quotes {quoted and quoted[1]} MB, the FMU has {FMU.stat().st_size / 1e6:.2f}"
     with zipfile.ZipFile(FMU) as z:
         licences = {pathlib.PurePosixPath(n).name for n in z.namelist()
                     if n.startswith("documentation/licenses/")}

@@ -34,18 +34,10 @@ uint64_t fnv1a(const char* data, size_t size) {
     return h;
 }
 
-// The observables' fields, listed once for writing and reading.
+// The observables' fields in Observables::for_each's order, for writing and reading.
 template <class O, class F>
 void visit(O& o, F&& f) {
-    for (auto* x : {&o.energy, &o.kinetic_energy, &o.strain_energy, &o.friction_work,
-                    &o.energy_minus_friction_work, &o.normal_force, &o.friction_force,
-                    &o.corner_pressure, &o.corner_friction, &o.top_reaction_x, &o.top_reaction_y,
-                    &o.max_penetration, &o.damping_work, &o.clamp_work, &o.normal_contact_work,
-                    &o.friction_dissipation, &o.foundation_work, &o.top_position, &o.top_velocity})
-        f(*x);
-    for (auto* x : {&o.active_contact_nodes, &o.slipping_contact_nodes, &o.substeps,
-                    &o.substep_refinements, &o.contact_iterations, &o.gauss_seidel_sweeps})
-        f(*x);
+    Observables::for_each([&](const char*, auto& x) { f(x); }, o);
 }
 
 class Writer {

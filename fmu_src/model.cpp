@@ -32,9 +32,7 @@ void as_model_error(F&& f) {
 
 void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std::string>>& values) {
     for (const auto& [name, text] : values) {
-        const Variable* v = nullptr;
-        for (const Variable& candidate : variables())
-            if (name == candidate.name) v = &candidate;
+        const Variable* v = find_variable(name);
         if (!v || v->causality == Causality::output)
             throw ModelError(concat("resources/start_values.txt: ", name,
                                     " is not a parameter or input of this FMU"));
@@ -86,10 +84,11 @@ void ContactBodyModel::set_real(const Variable& v, double value, bool initialize
     check_settable(v, value, initialized);
     v.real(values_) = value;
     if (input_index(v) >= 0) input_rates_[input_index(v)] = 0;  // a new value is held
+    if (v.after_set) v.after_set(values_);
     if (!initialized) {
         rebuild_ = true;  // parameters and initial inputs define the initial state
-    } else if (sim_ && &v.real(values_) == &values_.friction_coefficient) {
-        sim_->set_friction_coefficient(value);
+    } else if (sim_ && v.tune) {
+        v.tune(*sim_, value);
     }
 }
 
@@ -98,7 +97,7 @@ void ContactBodyModel::set_integer(const Variable& v, int value, bool initialize
         throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     check_settable(v, value, initialized);
     v.integer(values_) = value;
-    if (&v.integer(values_) == &values_.nx) values_.edge_nodes = value + 1;  // the arrays follow
+    if (v.after_set) v.after_set(values_);
     if (!initialized) rebuild_ = true;
 }
 
@@ -135,7 +134,7 @@ size_t ContactBodyModel::size(const Variable& v) const {
 void ContactBodyModel::get_edge(const Variable& v, double* out) {
     if (!v.edge_real) throw ModelError(concat("variable ", v.name, " is not a Float64 array"));
     refresh_outputs();
-    const Eigen::VectorXd& x = v.edge_real(sim_->edge());
+    const Eigen::VectorXd& x = sim_->edge().*v.edge_real;
     std::copy(x.data(), x.data() + x.size(), out);
 }
 
@@ -337,10 +336,6 @@ void ContactBodyModel::do_step(double current_time, double h) {
         std::abs(current_time - t) > 1e-9 * std::max(1.0, std::abs(t)) + 1e-12)
         throw ModelError(concat("currentCommunicationPoint ", current_time,
                                 " does not match the FMU's time ", t));
-    const double steps = h / values_.internal_step;
-    if (steps > 1e8)
-        throw ModelError(concat("communicationStepSize ", h, " needs ", steps,
-                                " substeps of internal_step; use smaller steps"));
     // Each input's value at the step's start and its rate across the step: the derivative the
     // master set, or with input_interpolation = ramp and no derivative, the line from the
     // value at the previous communication point to the one set now.

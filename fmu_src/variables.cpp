@@ -5,7 +5,9 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <unordered_map>
+#include <algorithm>
 
 namespace contactbody::fmu {
 
@@ -14,131 +16,276 @@ namespace {
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-// Argument order of Variable after the description: start, min, max, accessors. FMI limits are
-// inclusive: where a value must be > 0, min is the smallest meaningful positive value.
-#define ACCESS_REAL(field) [](Values& v) -> double& { return v.field; }, nullptr
-#define ACCESS_INT(field) nullptr, [](Values& v) -> int& { return v.field; }
-#define ACCESS_STRING(field) nullptr, nullptr, [](Values& v) -> std::string& { return v.field; }
-#define ACCESS_ENUM(field, type) \
-    nullptr, [](Values& v) -> int& { return v.field; }, nullptr, type
-// FMI 3.0 structural parameters (UInt64), in both FMUs or in the FMI 3.0 one only.
-#define ACCESS_STRUCTURAL(field, standard) \
-    nullptr, [](Values& v) -> int& { return v.field; }, nullptr, nullptr, true, standard
-// FMI 3.0 outputs along the contact edge.
-#define ACCESS_EDGE(field) \
-    nullptr, nullptr, nullptr, nullptr, false, Standard::fmi3, \
-        [](const EdgeSnapshot& e) -> const Eigen::VectorXd& { return e.field; }
-#define ACCESS_EDGE_STATE \
-    nullptr, nullptr, nullptr, "ContactState", false, Standard::fmi3, nullptr, true
-
 using T = Type;
 using C = Causality;
 using V = Variability;
 
-const std::vector<Variable> table = {
-    // Parameters (docs/variables.md lists them)
-    {"width", 1, T::Real, C::parameter, V::fixed, "m", "Width W of the body", 0.1, 1e-6, inf, ACCESS_REAL(width)},
-    {"height", 2, T::Real, C::parameter, V::fixed, "m", "Height H of the body", 0.1, 1e-6, inf, ACCESS_REAL(height)},
-    {"nx", 3, T::Integer, C::parameter, V::fixed, "", "Cells along x", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(nx, Standard::both)},
-    {"ny", 4, T::Integer, C::parameter, V::fixed, "", "Cells along y", 20, 1, max_cells_per_direction, ACCESS_STRUCTURAL(ny, Standard::both)},
-    {"edge_nodes", 31, T::Integer, C::parameter, V::fixed, "", "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused when Configuration Mode ends and at initialization)", 21, 2, max_cells_per_direction + 1, ACCESS_STRUCTURAL(edge_nodes, Standard::fmi3)},
-    {"density", 5, T::Real, C::parameter, V::fixed, "kg/m3", "Density rho", 1000, 1e-3, inf, ACCESS_REAL(density)},
-    {"lambda", 6, T::Real, C::parameter, V::fixed, "Pa", "First Lame coefficient (lambda + mu > 0)", 300e6, none, none, ACCESS_REAL(lambda)},
-    {"mu", 7, T::Real, C::parameter, V::fixed, "Pa", "Shear modulus", 150e6, 1, inf, ACCESS_REAL(mu)},
-    {"friction_coefficient", 8, T::Real, C::parameter, V::tunable, "", "Coulomb friction coefficient F", 1.2, 0, max_friction_coefficient, ACCESS_REAL(friction_coefficient)},
-    {"mass_matrix", 9, T::Enumeration, C::parameter, V::fixed, "", "Mass matrix and contact treatment: 0 standard, 1 redistributed_normal (the paper), 2 redistributed_both, 3 standard_implicit_contact, 4 redistributed_implicit_contact (M_r, contact at the end of the step: cannot gain energy at contact)", 1, 0, num_mass_variants - 1, ACCESS_ENUM(mass_matrix, "MassMatrix")},
-    {"internal_step", 10, T::Real, C::parameter, V::fixed, "s", "Largest midpoint substep", 4e-6, 1e-12, inf, ACCESS_REAL(internal_step)},
-    {"contact_tolerance", 11, T::Real, C::parameter, V::fixed, "", "Relative tolerance of each substep's contact solve (at least the resolution of a double, 2.2e-16)", 1e-10, std::numeric_limits<double>::epsilon(), 0.5, ACCESS_REAL(contact_tolerance)},
-    {"initial_gap", 12, T::Real, C::parameter, V::fixed, "m", "Initial gap between the body and the foundation", 0, 0, inf, ACCESS_REAL(initial_gap)},
-    {"result_directory", 13, T::String, C::parameter, V::fixed, "", "Directory for field output (.vtu files and a .pvd collection); empty = none", 0, none, none, ACCESS_STRING(result_directory)},
-    {"field_output_interval", 14, T::Real, C::parameter, V::fixed, "s", "Time between field output files (written at the first communication point at or after each multiple)", 1e-4, 1e-9, inf, ACCESS_REAL(field_output_interval)},
-    {"edge_output_interval", 28, T::Real, C::parameter, V::fixed, "s", "Time between the records of the edge history (result_directory/contactbody_edge.npy: per bottom node and output time, the step-averaged contact pressure and friction density, slip velocity, gap and state); 0 = none", 0, 0, inf, ACCESS_REAL(edge_output_interval)},
-    {"damping_mass", 15, T::Real, C::parameter, V::fixed, "1/s", "Rayleigh damping: alpha of C = alpha M + beta A (M: the variant's mass matrix)", 0, 0, inf, ACCESS_REAL(damping_mass)},
-    {"damping_stiffness", 16, T::Real, C::parameter, V::fixed, "s", "Rayleigh damping: beta of C = alpha M + beta A", 0, 0, inf, ACCESS_REAL(damping_stiffness)},
-    {"min_internal_step", 17, T::Real, C::parameter, V::fixed, "s", "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)", 1e-9, 1e-15, inf, ACCESS_REAL(min_internal_step)},
-    {"input_interpolation", 18, T::Enumeration, C::parameter, V::fixed, "", "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)", 0, 0, 1, ACCESS_ENUM(input_interpolation, "InputInterpolation")},
-    {"top_control", 19, T::Enumeration, C::parameter, V::fixed, "", "Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)", 0, 0, 1, ACCESS_ENUM(top_control, "TopControl")},
-    {"top_mass", 23, T::Real, C::parameter, V::fixed, "kg/m", "Mass of the top plate (top_control = force)", 1.0, 1e-9, inf, ACCESS_REAL(top_mass)},
-    {"initial_velocity_x", 24, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, x (the clamped dofs excepted)", 0, none, none, ACCESS_REAL(initial_velocity_x)},
-    {"initial_velocity_y", 25, T::Real, C::parameter, V::fixed, "m/s", "Uniform initial velocity of the body, y (with the plate under force control)", 0, none, none, ACCESS_REAL(initial_velocity_y)},
-    {"initial_state", 26, T::Enumeration, C::parameter, V::fixed, "", "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)", 0, 0, 1, ACCESS_ENUM(initial_state, "InitialState")},
-    {"max_energy", 29, T::Real, C::parameter, V::fixed, "J/m", "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit", 0, 0, inf, ACCESS_REAL(max_energy)},
-    {"max_energy_ratio", 30, T::Real, C::parameter, V::fixed, "", "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with an error status, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is 4x above the largest growth in the paper's Figs. 7-8 (2.3e5: variant 0, F = 1.2, internal_step 1e-6 s)", 1e6, 0, inf, ACCESS_REAL(max_energy_ratio)},
-    {"static_friction_ratio", 27, T::Real, C::parameter, V::fixed, "", "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)", 1, 1, max_static_friction_ratio, ACCESS_REAL(static_friction_ratio)},
-    {"stribeck_velocity", 32, T::Real, C::parameter, V::fixed, "m/s", "Slip-rate law: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity) + viscous_friction |v| with F_d = friction_coefficient, F_s = static_friction_ratio x F_d and v the scheme's slip rate, taken implicitly in the step; 0 = no Stribeck term (F_s is then the stick memory of static_friction_ratio)", 0, 0, inf, ACCESS_REAL(stribeck_velocity)},
-    {"viscous_friction", 33, T::Real, C::parameter, V::fixed, "s/m", "Slip-rate law: the viscous term c_v |v| of F(v) (see stribeck_velocity); 0 = none", 0, 0, max_viscous_friction, ACCESS_REAL(viscous_friction)},
-    // Inputs
-    {"foundation_velocity", 20, T::Real, C::input, V::continuous, "m/s", "Horizontal velocity V of the rigid foundation", 20, none, none, ACCESS_REAL(foundation_velocity)},
-    {"top_displacement", 21, T::Real, C::input, V::continuous, "m", "Prescribed vertical displacement of the top edge", -2.5e-5, none, none, ACCESS_REAL(top_displacement)},
-    {"top_force", 22, T::Real, C::input, V::continuous, "N/m", "Force pressing the top plate down (top_control = force), positive downwards", 0, none, none, ACCESS_REAL(top_force)},
-    // Outputs
-    {"energy", 100, T::Real, C::output, V::continuous, "J/m", "Total energy E = kinetic + strain (paper eq. 19, with the variant's mass matrix; the plate's kinetic energy under force control), per metre of thickness, at the end of the step", none, none, none, ACCESS_REAL(out.energy)},
-    {"kinetic_energy", 101, T::Real, C::output, V::continuous, "J/m", "Kinetic part of E", none, none, none, ACCESS_REAL(out.kinetic_energy)},
-    {"strain_energy", 102, T::Real, C::output, V::continuous, "J/m", "Strain part of E", none, none, none, ACCESS_REAL(out.strain_energy)},
-    {"friction_work", 103, T::Real, C::output, V::continuous, "J/m", "Work xi of friction on the body since the start", none, none, none, ACCESS_REAL(out.friction_work)},
-    {"energy_minus_friction_work", 104, T::Real, C::output, V::continuous, "J/m", "E - xi (paper Fig. 8)", none, none, none, ACCESS_REAL(out.energy_minus_friction_work)},
-    {"normal_force", 105, T::Real, C::output, V::continuous, "N/m", "Total normal contact force on the body, a magnitude (>= 0): the average over the last communication step of its substeps' forces", none, none, none, ACCESS_REAL(out.normal_force)},
-    {"friction_force", 106, T::Real, C::output, V::continuous, "N/m", "Total friction force on the body, signed x component (> 0: the foundation drags the body towards +x): the average over the last communication step", none, none, none, ACCESS_REAL(out.friction_force)},
-    {"corner_pressure", 107, T::Real, C::output, V::continuous, "Pa", "Contact pressure at node (0,0), averaged over the last step", none, none, none, ACCESS_REAL(out.corner_pressure)},
-    {"corner_friction", 108, T::Real, C::output, V::continuous, "Pa", "Friction force density at node (0,0), averaged over the last step", none, none, none, ACCESS_REAL(out.corner_friction)},
-    {"top_reaction_x", 109, T::Real, C::output, V::continuous, "N/m", "Force of the clamp (or plate) on the body, signed x component, averaged over the last communication step", none, none, none, ACCESS_REAL(out.top_reaction_x)},
-    {"top_reaction_y", 110, T::Real, C::output, V::continuous, "N/m", "Force of the clamp (or plate) on the body, signed y component (< 0 while it presses the body down), averaged over the last communication step", none, none, none, ACCESS_REAL(out.top_reaction_y)},
-    {"active_contact_nodes", 111, T::Integer, C::output, V::discrete, "", "Contact nodes in contact at the last substep", none, none, none, ACCESS_INT(out.active_contact_nodes)},
-    {"slipping_contact_nodes", 112, T::Integer, C::output, V::discrete, "", "Contact nodes slipping at the last substep", none, none, none, ACCESS_INT(out.slipping_contact_nodes)},
-    {"max_penetration", 113, T::Real, C::output, V::continuous, "m", "Largest penetration of the bottom nodes at the ends u^{k+1} of the last step's substeps. Contact is imposed at the midpoints u^{k+1/2}, so this is the scheme's overshoot between midpoints (about dt/2 x the normal velocity), not a violated contact condition", none, none, none, ACCESS_REAL(out.max_penetration)},
-    {"damping_work", 114, T::Real, C::output, V::continuous, "J/m", "Energy dissipated by the Rayleigh damping since the start (>= 0)", none, none, none, ACCESS_REAL(out.damping_work)},
-    {"clamp_work", 115, T::Real, C::output, V::continuous, "J/m", "Work of the clamp's reaction on the body since the start, jumps of a held top_displacement included", none, none, none, ACCESS_REAL(out.clamp_work)},
-    {"normal_contact_work", 116, T::Real, C::output, V::continuous, "J/m", "Work of the normal contact forces on the body since the start", none, none, none, ACCESS_REAL(out.normal_contact_work)},
-    {"friction_dissipation", 117, T::Real, C::output, V::continuous, "J/m", "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)", none, none, none, ACCESS_REAL(out.friction_dissipation)},
-    {"foundation_work", 118, T::Real, C::output, V::continuous, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)", none, none, none, ACCESS_REAL(out.foundation_work)},
-    {"top_position", 119, T::Real, C::output, V::continuous, "m", "Vertical displacement u_y of the top edge (the plate under force control)", none, none, none, ACCESS_REAL(out.top_position)},
-    {"top_velocity", 120, T::Real, C::output, V::continuous, "m/s", "Vertical velocity of the top edge", none, none, none, ACCESS_REAL(out.top_velocity)},
-    {"substeps", 121, T::Integer, C::output, V::discrete, "", "Midpoint substeps taken in the last communication step (ceil(step / internal_step), plus one per refinement)", none, none, none, ACCESS_INT(out.substeps)},
-    {"substep_refinements", 122, T::Integer, C::output, V::discrete, "", "Substeps of the last communication step redone as two halves after a failed contact solve", none, none, none, ACCESS_INT(out.substep_refinements)},
-    {"contact_iterations", 123, T::Integer, C::output, V::discrete, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed", none, none, none, ACCESS_INT(out.contact_iterations)},
-    {"gauss_seidel_sweeps", 124, T::Integer, C::output, V::discrete, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)", none, none, none, ACCESS_INT(out.gauss_seidel_sweeps)},
-    // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
-    {"edge_x", 130, T::Real, C::output, V::discrete, "m", "Position x of each bottom node (reference configuration)", none, none, none, ACCESS_EDGE(x)},
-    {"edge_pressure", 131, T::Real, C::output, V::continuous, "Pa", "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)", none, none, none, ACCESS_EDGE(pressure)},
-    {"edge_friction", 132, T::Real, C::output, V::continuous, "Pa", "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)", none, none, none, ACCESS_EDGE(friction)},
-    {"edge_slip_velocity", 133, T::Real, C::output, V::continuous, "m/s", "Velocity x of each bottom node relative to the foundation over the last substep", none, none, none, ACCESS_EDGE(slip_velocity)},
-    {"edge_gap", 134, T::Real, C::output, V::continuous, "m", "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)", none, none, none, ACCESS_EDGE(gap)},
-    {"edge_state", 135, T::Enumeration, C::output, V::discrete, "", "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)", none, none, none, ACCESS_EDGE_STATE},
-};
+Variable declare(const char* name, unsigned vr, Type type, Causality causality,
+                 Variability variability, const char* unit, double start, double min, double max,
+                 const char* description) {
+    Variable v{name, vr, type, causality, variability, unit, description, start, min, max};
+    return v;
+}
+
+Variable real(const char* name, unsigned vr, double Values::*field, const char* unit,
+              double start, double min, double max, const char* description) {
+    Variable v = declare(name, vr, T::Real, C::parameter, V::fixed, unit, start, min, max, description);
+    v.real = [field](Values& values) -> double& { return values.*field; };
+    return v;
+}
+
+Variable integer(const char* name, unsigned vr, int Values::*field, double start, double min,
+                 double max, const char* description) {
+    Variable v = declare(name, vr, T::Integer, C::parameter, V::fixed, "", start, min, max, description);
+    v.integer = [field](Values& values) -> int& { return values.*field; };
+    return v;
+}
+
+Variable enumeration(const char* name, unsigned vr, int Values::*field, const char* type,
+                     double start, const char* description) {
+    Variable v = integer(name, vr, field, start, 0, 0, description);
+    v.type = T::Enumeration;
+    v.enumeration = type;
+    v.max = static_cast<double>(enumeration_type(v).items.size() - 1);
+    return v;
+}
+
+Variable string(const char* name, unsigned vr, std::string Values::*field, const char* description) {
+    Variable v = declare(name, vr, T::String, C::parameter, V::fixed, "", 0, none, none, description);
+    v.string = [field](Values& values) -> std::string& { return values.*field; };
+    return v;
+}
+
+// The field of `out` that Observables::for_each names `name`, as T&.
+template <class T>
+T& observable(Observables& out, const std::string& name) {
+    T* found = nullptr;
+    Observables::for_each(
+        [&](const char* field_name, auto& x) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(x)>, T>)
+                if (name == field_name) found = &x;
+        },
+        out);
+    if (!found) throw std::logic_error("no observable " + name + " of this type");
+    return *found;
+}
+
+// An output: Observables' field of the same name (Real and continuous for a double, Integer
+// and discrete for an int).
+Variable output(const char* name, unsigned vr, const char* unit, const char* description) {
+    bool is_integer = false, found = false;
+    Observables probe;
+    Observables::for_each(
+        [&](const char* field_name, const auto& x) {
+            if (std::string(field_name) != name) return;
+            found = true;
+            is_integer = std::is_same_v<std::decay_t<decltype(x)>, int>;
+        },
+        probe);
+    if (!found) throw std::logic_error(std::string("output ") + name + " is no Observables field");
+    Variable v = declare(name, vr, is_integer ? T::Integer : T::Real, C::output,
+                         is_integer ? V::discrete : V::continuous, unit, none, none, none, description);
+    const std::string key = name;
+    if (is_integer)
+        v.integer = [key](Values& values) -> int& { return observable<int>(values.out, key); };
+    else
+        v.real = [key](Values& values) -> double& { return observable<double>(values.out, key); };
+    return v;
+}
+
+// FMI 3.0 outputs along the contact edge.
+Variable edge_output(const char* name, unsigned vr, const char* unit,
+                     const Eigen::VectorXd EdgeSnapshot::*field, const char* description) {
+    Variable v = declare(name, vr, T::Real, C::output, V::continuous, unit, none, none, none, description);
+    v.edge_real = field;
+    v.standard = Standard::fmi3;
+    return v;
+}
+
+Variable edge_state_output(const char* name, unsigned vr, const char* description) {
+    Variable v = declare(name, vr, T::Enumeration, C::output, V::discrete, "", none, none, none, description);
+    v.enumeration = "ContactState";
+    v.edge_state = true;
+    v.standard = Standard::fmi3;
+    return v;
+}
+
+void follow_nx(Values& v) { v.edge_nodes = v.nx + 1; }  // the edge arrays follow nx
+void retune_friction(Simulation& s, double friction) { s.set_friction_coefficient(friction); }
+
+std::vector<Variable> checked(std::vector<Variable> rows) {
+    check_variable_table(rows);
+    return rows;
+}
 
 }  // namespace
 
+void check_variable_table(const std::vector<Variable>& rows) {
+    const auto fail = [](const std::string& what) {
+        throw std::logic_error("variable table: " + what);
+    };
+    const auto named = [&](const std::string& name) -> const Variable* {
+        for (const Variable& v : rows)
+            if (name == v.name) return &v;
+        return nullptr;
+    };
+    std::unordered_map<unsigned, const char*> references;
+    for (const Variable& v : rows)
+        if (!references.emplace(v.value_reference, v.name).second)
+            fail(std::string(v.name) + " repeats the value reference of " +
+                 references[v.value_reference]);
+    SceneParameters scene;
+    std::vector<std::string> scene_names;
+    SceneParameters::for_each(
+        [&](const char* name, Reuse, const auto&) {
+            const Variable* v = named(name);
+            if (!v || v->causality != C::parameter || v->fmu_only)
+                fail(std::string("SceneParameters' ") + name + " is set by no parameter");
+            scene_names.push_back(name);
+        },
+        scene);
+    for (const Variable& v : rows)
+        if (v.causality == C::parameter && !v.fmu_only &&
+            std::find(scene_names.begin(), scene_names.end(), v.name) == scene_names.end())
+            fail(std::string("parameter ") + v.name +
+                 " reaches no SceneParameters field (SceneParameters::for_each) and is not "
+                 "declared FMU-only");
+    Observables probe;
+    Observables::for_each(
+        [&](const char* name, const auto&) {
+            const Variable* v = named(name);
+            if (!v || v->causality != C::output) fail(std::string("Observables' ") + name + " is no output");
+        },
+        probe);
+}
+
+Variable& Variable::as_input(Input slot) {
+    causality = C::input;
+    variability = V::continuous;
+    input = slot;
+    return *this;
+}
+Variable& Variable::as_tunable(void (*apply)(Simulation&, double)) {
+    variability = V::tunable;
+    tune = apply;
+    return *this;
+}
+Variable& Variable::as_structural(Standard in) {
+    structural = true;
+    standard = in;
+    return *this;
+}
+Variable& Variable::as_fmu_only() {
+    fmu_only = true;
+    return *this;
+}
+Variable& Variable::as_discrete() {
+    variability = V::discrete;
+    return *this;
+}
+Variable& Variable::then(void (*follow)(Values&)) {
+    after_set = follow;
+    return *this;
+}
+
+namespace {
+
+// The rows. FMI limits are inclusive: where a value must be > 0, min is the smallest meaningful
+// positive value. Enumerations take their range from their type.
+const std::vector<Variable>& table() {
+    static const std::vector<Variable> rows = checked({
+        // Parameters (docs/variables.md lists them)
+        real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"),
+        real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"),
+        integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx),
+        integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both),
+        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused when Configuration Mode ends and at initialization)").as_structural(Standard::fmi3).as_fmu_only(),
+        real("density", 5, &Values::density, "kg/m3", 1000, 1e-3, inf, "Density rho"),
+        real("lambda", 6, &Values::lambda, "Pa", 300e6, none, none, "First Lame coefficient (lambda + mu > 0)"),
+        real("mu", 7, &Values::mu, "Pa", 150e6, 1, inf, "Shear modulus"),
+        real("friction_coefficient", 8, &Values::friction_coefficient, "", 1.2, 0, max_friction_coefficient, "Coulomb friction coefficient F").as_tunable(retune_friction),
+        enumeration("mass_matrix", 9, &Values::mass_matrix, "MassMatrix", 1, "Mass matrix and contact treatment: 0 standard, 1 redistributed_normal (the paper), 2 redistributed_both, 3 standard_implicit_contact, 4 redistributed_implicit_contact (M_r, contact at the end of the step: cannot gain energy at contact)"),
+        real("internal_step", 10, &Values::internal_step, "s", 4e-6, 1e-12, inf, "Largest midpoint substep"),
+        real("contact_tolerance", 11, &Values::contact_tolerance, "", 1e-10, std::numeric_limits<double>::epsilon(), 0.5, "Relative tolerance of each substep's contact solve (at least the resolution of a double, 2.2e-16)"),
+        real("initial_gap", 12, &Values::initial_gap, "m", 0, 0, inf, "Initial gap between the body and the foundation"),
+        string("result_directory", 13, &Values::result_directory, "Directory for field output (.vtu files and a .pvd collection); empty = none").as_fmu_only(),
+        real("field_output_interval", 14, &Values::field_output_interval, "s", 1e-4, 1e-9, inf, "Time between field output files (written at the first communication point at or after each multiple)").as_fmu_only(),
+        real("edge_output_interval", 28, &Values::edge_output_interval, "s", 0, 0, inf, "Time between the records of the edge history (result_directory/contactbody_edge.npy: per bottom node and output time, the step-averaged contact pressure and friction density, slip velocity, gap and state); 0 = none").as_fmu_only(),
+        real("damping_mass", 15, &Values::damping_mass, "1/s", 0, 0, inf, "Rayleigh damping: alpha of C = alpha M + beta A (M: the variant's mass matrix)"),
+        real("damping_stiffness", 16, &Values::damping_stiffness, "s", 0, 0, inf, "Rayleigh damping: beta of C = alpha M + beta A"),
+        real("min_internal_step", 17, &Values::min_internal_step, "s", 1e-9, 1e-15, inf, "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)"),
+        enumeration("input_interpolation", 18, &Values::input_interpolation, "InputInterpolation", 0, "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)").as_fmu_only(),
+        enumeration("top_control", 19, &Values::top_control, "TopControl", 0, "Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)"),
+        real("top_mass", 23, &Values::top_mass, "kg/m", 1.0, 1e-9, inf, "Mass of the top plate (top_control = force)"),
+        real("initial_velocity_x", 24, &Values::initial_velocity_x, "m/s", 0, none, none, "Uniform initial velocity of the body, x (the clamped dofs excepted)"),
+        real("initial_velocity_y", 25, &Values::initial_velocity_y, "m/s", 0, none, none, "Uniform initial velocity of the body, y (with the plate under force control)"),
+        enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0, "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)"),
+        real("max_energy", 29, &Values::max_energy, "J/m", 0, 0, inf, "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit"),
+        real("max_energy_ratio", 30, &Values::max_energy_ratio, "", 1e6, 0, inf, "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with an error status, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is 4x above the largest growth in the paper's Figs. 7-8 (2.3e5: variant 0, F = 1.2, internal_step 1e-6 s)"),
+        real("static_friction_ratio", 27, &Values::static_friction_ratio, "", 1, 1, max_static_friction_ratio, "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)"),
+        real("stribeck_velocity", 32, &Values::stribeck_velocity, "m/s", 0, 0, inf, "Slip-rate law: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity) + viscous_friction |v| with F_d = friction_coefficient, F_s = static_friction_ratio x F_d and v the scheme's slip rate, taken implicitly in the step; 0 = no Stribeck term (F_s is then the stick memory of static_friction_ratio)"),
+        real("viscous_friction", 33, &Values::viscous_friction, "s/m", 0, 0, max_viscous_friction, "Slip-rate law: the viscous term c_v |v| of F(v) (see stribeck_velocity); 0 = none"),
+        // Inputs
+        real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, "Horizontal velocity V of the rigid foundation").as_input(Input::foundation_velocity),
+        real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, "Prescribed vertical displacement of the top edge").as_input(Input::top_displacement),
+        real("top_force", 22, &Values::top_force, "N/m", 0, none, none, "Force pressing the top plate down (top_control = force), positive downwards").as_input(Input::top_force),
+        // Outputs
+        output("energy", 100, "J/m", "Total energy E = kinetic + strain (paper eq. 19, with the variant's mass matrix; the plate's kinetic energy under force control), per metre of thickness, at the end of the step"),
+        output("kinetic_energy", 101, "J/m", "Kinetic part of E"),
+        output("strain_energy", 102, "J/m", "Strain part of E"),
+        output("friction_work", 103, "J/m", "Work xi of friction on the body since the start"),
+        output("energy_minus_friction_work", 104, "J/m", "E - xi (paper Fig. 8)"),
+        output("normal_force", 105, "N/m", "Total normal contact force on the body, a magnitude (>= 0): the average over the last communication step of its substeps' forces"),
+        output("friction_force", 106, "N/m", "Total friction force on the body, signed x component (> 0: the foundation drags the body towards +x): the average over the last communication step"),
+        output("corner_pressure", 107, "Pa", "Contact pressure at node (0,0), averaged over the last step"),
+        output("corner_friction", 108, "Pa", "Friction force density at node (0,0), averaged over the last step"),
+        output("top_reaction_x", 109, "N/m", "Force of the clamp (or plate) on the body, signed x component, averaged over the last communication step"),
+        output("top_reaction_y", 110, "N/m", "Force of the clamp (or plate) on the body, signed y component (< 0 while it presses the body down), averaged over the last communication step"),
+        output("active_contact_nodes", 111, "", "Contact nodes in contact at the last substep"),
+        output("slipping_contact_nodes", 112, "", "Contact nodes slipping at the last substep"),
+        output("max_penetration", 113, "m", "Largest penetration of the bottom nodes at the ends u^{k+1} of the last step's substeps. Contact is imposed at the midpoints u^{k+1/2}, so this is the scheme's overshoot between midpoints (about dt/2 x the normal velocity), not a violated contact condition"),
+        output("damping_work", 114, "J/m", "Energy dissipated by the Rayleigh damping since the start (>= 0)"),
+        output("clamp_work", 115, "J/m", "Work of the clamp's reaction on the body since the start, jumps of a held top_displacement included"),
+        output("normal_contact_work", 116, "J/m", "Work of the normal contact forces on the body since the start"),
+        output("friction_dissipation", 117, "J/m", "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)"),
+        output("foundation_work", 118, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)"),
+        output("top_position", 119, "m", "Vertical displacement u_y of the top edge (the plate under force control)"),
+        output("top_velocity", 120, "m/s", "Vertical velocity of the top edge"),
+        output("substeps", 121, "", "Midpoint substeps taken in the last communication step (ceil(step / internal_step), plus one per refinement)"),
+        output("substep_refinements", 122, "", "Substeps of the last communication step redone as two halves after a failed contact solve"),
+        output("contact_iterations", 123, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed"),
+        output("gauss_seidel_sweeps", 124, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)"),
+        // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
+        edge_output("edge_x", 130, "m", &EdgeSnapshot::x, "Position x of each bottom node (reference configuration)").as_discrete(),
+        edge_output("edge_pressure", 131, "Pa", &EdgeSnapshot::pressure, "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)"),
+        edge_output("edge_friction", 132, "Pa", &EdgeSnapshot::friction, "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)"),
+        edge_output("edge_slip_velocity", 133, "m/s", &EdgeSnapshot::slip_velocity, "Velocity x of each bottom node relative to the foundation over the last substep"),
+        edge_output("edge_gap", 134, "m", &EdgeSnapshot::gap, "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)"),
+        edge_state_output("edge_state", 135, "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)"),
+    });
+    return rows;
+}
+
+}  // namespace
+
+// Each SceneParameters field from the parameter of its name (checked: every field has one).
 SceneParameters Values::scene() const {
+    Values values = *this;  // the accessors take Values&
     SceneParameters p;
-    p.width = width;
-    p.height = height;
-    p.nx = nx;
-    p.ny = ny;
-    p.density = density;
-    p.lambda = lambda;
-    p.mu = mu;
-    p.friction_coefficient = friction_coefficient;
-    p.static_friction_ratio = static_friction_ratio;
-    p.stribeck_velocity = stribeck_velocity;
-    p.viscous_friction = viscous_friction;
-    p.mass_matrix = static_cast<MassVariant>(mass_matrix);
-    p.internal_step = internal_step;
-    p.contact_tolerance = contact_tolerance;
-    p.initial_gap = initial_gap;
-    p.damping_mass = damping_mass;
-    p.damping_stiffness = damping_stiffness;
-    p.min_internal_step = min_internal_step;
-    p.force_control = top_control == static_cast<int>(TopControl::force);
-    p.top_mass = top_mass;
-    p.initial_velocity_x = initial_velocity_x;
-    p.initial_velocity_y = initial_velocity_y;
-    p.max_energy = max_energy;
-    p.max_energy_ratio = max_energy_ratio;
-    p.static_initial_state = initial_state == static_cast<int>(InitialState::static_equilibrium);
+    SceneParameters::for_each(
+        [&](const char* name, Reuse, auto& field) {
+            const Variable& v = *find_variable(name);
+            using Field = std::decay_t<decltype(field)>;
+            if constexpr (std::is_floating_point_v<Field>)
+                field = v.real(values);
+            else  // int, a bool (0 or 1) or an enumeration
+                field = static_cast<Field>(v.integer(values));
+        },
+        p);
     return p;
 }
 
-const std::vector<Variable>& variables() { return table; }
+const std::vector<Variable>& variables() { return table(); }
 
 void check_string(const Variable& v, const char* value) {
     if (!value) throw std::invalid_argument(std::string("variable ") + v.name + " cannot be NULL");
@@ -166,12 +313,6 @@ void check_range(const Variable& v, double value) {
     }
 }
 
-int input_index(const Variable& v) {
-    if (v.causality != Causality::input) return -1;
-    const std::string name = v.name;
-    return name == "foundation_velocity" ? 0 : name == "top_displacement" ? 1 : 2;
-}
-
 const char* fmi3_type(const Variable& v) {
     switch (v.type) {
         case Type::Real: return "Float64";
@@ -185,16 +326,22 @@ const char* fmi3_type(const Variable& v) {
 const Variable* find_variable(unsigned value_reference, Standard standard) {
     static const std::unordered_map<unsigned, const Variable*> index = [] {
         std::unordered_map<unsigned, const Variable*> m;
-        for (const Variable& v : table) m.emplace(v.value_reference, &v);
+        for (const Variable& v : table()) m.emplace(v.value_reference, &v);
         return m;
     }();
     const auto it = index.find(value_reference);
     return it == index.end() || !it->second->in(standard) ? nullptr : it->second;
 }
 
+const Variable* find_variable(const std::string& name) {
+    for (const Variable& v : table())
+        if (name == v.name) return &v;
+    return nullptr;
+}
+
 Values start_values() {
     Values values{};
-    for (const Variable& v : table) {
+    for (const Variable& v : table()) {
         if (v.causality == Causality::output) continue;
         if (v.real) v.real(values) = v.start;
         else if (v.integer) v.integer(values) = static_cast<int>(v.start);

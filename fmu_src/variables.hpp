@@ -2,6 +2,7 @@
 // table and generate_model_description writes modelDescription.xml from it.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,15 @@ enum class Variability { fixed, tunable, continuous, discrete };
 // the structural parameter that sizes them).
 enum class Standard : unsigned { fmi2 = 1, fmi3 = 2, both = 3 };
 
+// The inputs, in the order of StepInputs' values (Variable::input).
+enum class Input : int { none = -1, foundation_velocity = 0, top_displacement = 1, top_force = 2 };
+constexpr int num_inputs = 3;
+
+// One variable, declared once in variables.cpp's table with the builders there (real,
+// integer, enumeration, string, output, edge_output and the as_... modifiers). Everything else
+// follows from it: the modelDescriptions, docs/variables.md, get/set and range checks, the
+// saved state (every non-array variable, in table order), the SceneParameters it sets (by
+// name: SceneParameters::for_each), the output it reads (by name: Observables::for_each).
 struct Variable {
     const char* name;
     unsigned value_reference;
@@ -52,17 +62,25 @@ struct Variable {
     const char* description;
     double start;      // for parameters and inputs (String variables start empty)
     double min, max;   // inclusive limits written to the XML; NaN for none
-    double& (*real)(Values&);  // exactly one of real / integer / string is set, by type
-    int& (*integer)(Values&);
-    std::string& (*string)(Values&) = nullptr;
+    // Exactly one of real / integer / string is set, by type (none for the arrays).
+    std::function<double&(Values&)> real;
+    std::function<int&(Values&)> integer;
+    std::function<std::string&(Values&)> string;
     const char* enumeration = nullptr;  // the EnumerationType's name, for Enumeration variables
     // FMI 3.0: causality structuralParameter, type UInt64 (FMI 2.0: an Integer parameter).
     bool structural = false;
     Standard standard = Standard::both;
     // FMI 3.0 arrays along the contact edge, edge_nodes values each: a field of the edge
     // snapshot (Float64), or its contact states (edge_state: an Enumeration array).
-    const Eigen::VectorXd& (*edge_real)(const EdgeSnapshot&) = nullptr;
+    const Eigen::VectorXd EdgeSnapshot::*edge_real = nullptr;
     bool edge_state = false;
+    Input input = Input::none;
+    // A parameter that no SceneParameters field takes (it configures the FMU layer).
+    bool fmu_only = false;
+    // A tunable parameter: how a running simulation takes a new value.
+    void (*tune)(Simulation&, double) = nullptr;
+    // What else changes with this variable (nx sets edge_nodes).
+    void (*after_set)(Values&) = nullptr;
 
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
@@ -71,9 +89,21 @@ struct Variable {
         return static_cast<unsigned>(standard) & static_cast<unsigned>(s);
     }
     bool is_array() const { return edge_real || edge_state; }
+
+    // Modifiers for the table's rows.
+    Variable& as_input(Input slot);
+    Variable& as_tunable(void (*apply)(Simulation&, double));
+    Variable& as_structural(Standard in);
+    Variable& as_fmu_only();
+    Variable& as_discrete();
+    Variable& then(void (*follow)(Values&));
 };
 
 const std::vector<Variable>& variables();
+// The table's consistency, checked when it is built: value references unique, every parameter
+// reaching a SceneParameters field or declared FMU-only, every SceneParameters field set by a
+// parameter, every Observables field an output. Throws std::logic_error naming what is wrong.
+void check_variable_table(const std::vector<Variable>& rows);
 // Throws std::invalid_argument naming the variable if value is not finite or out of range.
 void check_range(const Variable& v, double value);
 // Longest accepted String value (bytes).
@@ -81,9 +111,8 @@ constexpr size_t max_string_length = 4096;
 // Throws std::invalid_argument naming the variable if value is NULL, too long or not printable.
 void check_string(const Variable& v, const char* value);
 
-// The inputs' index: 0 = foundation_velocity, 1 = top_displacement, 2 = top_force; -1 else.
-constexpr int num_inputs = 3;
-int input_index(const Variable& v);
+// The input's index in StepInputs' order, -1 for other variables.
+inline int input_index(const Variable& v) { return static_cast<int>(v.input); }
 
 // The variable's FMI 3.0 type: Float64, Int32, UInt64 (structural parameters), Int64
 // (enumerations, as FMI 3.0 accesses them) or String.
@@ -93,6 +122,8 @@ constexpr unsigned time_value_reference = 0;
 
 // nullptr when no variable of this standard has this reference.
 const Variable* find_variable(unsigned value_reference, Standard standard);
+// nullptr when no variable has this name.
+const Variable* find_variable(const std::string& name);
 // Values with every start value.
 Values start_values();
 

@@ -176,11 +176,13 @@ Discretization discretize(const SceneParameters& p) {
 }
 
 bool same_discretization(const SceneParameters& a, const SceneParameters& b) {
-    const auto read = [](const SceneParameters& p) {
-        return std::tie(p.width, p.height, p.nx, p.ny, p.density, p.lambda, p.mu, p.mass_matrix,
-                        p.force_control, p.top_mass, p.damping_mass, p.damping_stiffness);
-    };
-    return read(a) == read(b);
+    bool same = true;
+    SceneParameters::for_each(
+        [&](const char*, Reuse reuse, const auto& x, const auto& y) {
+            if (reuse == Reuse::rebuilds_discretization) same = same && x == y;
+        },
+        a, b);
+    return same;
 }
 
 void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {

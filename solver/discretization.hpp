@@ -28,6 +28,10 @@ constexpr int num_mass_variants = 5;
 bool redistributes_normal(MassVariant v);
 bool contact_at_end_of_step(MassVariant v);
 
+// Whether a scene parameter changes the Discretization (A, M, C, the unknowns) and so the
+// factors, or only what a run does with them.
+enum class Reuse { rebuilds_discretization, keeps_discretization };
+
 struct SceneParameters {
     double width = 0.1, height = 0.1;
     int nx = 20, ny = 20;
@@ -61,6 +65,41 @@ struct SceneParameters {
     // The blow-up guard (J/m, and a multiple of E(0) + the work put in); 0 turns each off.
     double max_energy = 0, max_energy_ratio = 1e6;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
+
+    // Every field once: f(name, reuse, the field of each p...) with the FMU variable that sets
+    // it (a bool or an enumeration takes the variable's integer value) and whether the
+    // discretization, and so its factors, depend on it. same_discretization follows this list,
+    // and the FMU's Values::scene() fills the fields through it (refusing a parameter that
+    // reaches no field and is not declared FMU-only).
+    template <class F, class... P>
+    static void for_each(F&& f, P&... p) {
+        constexpr Reuse rebuild = Reuse::rebuilds_discretization, keep = Reuse::keeps_discretization;
+        f("width", rebuild, p.width...);
+        f("height", rebuild, p.height...);
+        f("nx", rebuild, p.nx...);
+        f("ny", rebuild, p.ny...);
+        f("density", rebuild, p.density...);
+        f("lambda", rebuild, p.lambda...);
+        f("mu", rebuild, p.mu...);
+        f("friction_coefficient", keep, p.friction_coefficient...);
+        f("static_friction_ratio", keep, p.static_friction_ratio...);
+        f("stribeck_velocity", keep, p.stribeck_velocity...);
+        f("viscous_friction", keep, p.viscous_friction...);
+        f("mass_matrix", rebuild, p.mass_matrix...);
+        f("internal_step", keep, p.internal_step...);  // factors are kept per substep size
+        f("min_internal_step", keep, p.min_internal_step...);
+        f("contact_tolerance", keep, p.contact_tolerance...);
+        f("initial_gap", keep, p.initial_gap...);
+        f("damping_mass", rebuild, p.damping_mass...);
+        f("damping_stiffness", rebuild, p.damping_stiffness...);
+        f("top_control", rebuild, p.force_control...);
+        f("top_mass", rebuild, p.top_mass...);
+        f("initial_velocity_x", keep, p.initial_velocity_x...);
+        f("initial_velocity_y", keep, p.initial_velocity_y...);
+        f("initial_state", keep, p.static_initial_state...);
+        f("max_energy", keep, p.max_energy...);
+        f("max_energy_ratio", keep, p.max_energy_ratio...);
+    }
 };
 
 // The slip-rate law of p as the contact solver takes it, with slip_time 1 (so that its slip is
@@ -125,7 +164,7 @@ struct Discretization {
 Discretization discretize(const SceneParameters& p);
 
 // Whether a and b define the same Discretization (and so the same factors): they agree on
-// every parameter discretize reads.
+// every parameter SceneParameters::for_each marks as rebuilding it.
 bool same_discretization(const SceneParameters& a, const SceneParameters& b);
 
 }  // namespace contactbody

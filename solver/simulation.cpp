@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -177,7 +178,12 @@ int Simulation::substeps_for(double h) const {
     // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off, and
     // despite masters that add up time and send steps a few 1e-12 too long.
     const double ratio = h / stepper_->parameters().internal_step;
-    if (!(ratio <= 1e9)) throw std::invalid_argument("step needs more than 1e9 substeps");
+    if (!(ratio <= max_substeps_per_step)) {
+        std::ostringstream msg;
+        msg << "communication step " << h << " needs " << ratio << " substeps of internal_step "
+            << "(at most " << max_substeps_per_step << "); use smaller steps";
+        throw std::invalid_argument(msg.str());
+    }
     return std::max(1, static_cast<int>(std::ceil(ratio * (1 - 1e-9))));
 }
 
@@ -261,21 +267,17 @@ double Simulation::plate_kinetic_energy(const State& s) const {
 }
 
 void Simulation::check_finite(const Observables& o) const {
-    const std::pair<const char*, double> outputs[] = {
-        {"energy", o.energy}, {"kinetic_energy", o.kinetic_energy},
-        {"strain_energy", o.strain_energy}, {"normal_force", o.normal_force},
-        {"friction_force", o.friction_force}, {"top_reaction_x", o.top_reaction_x},
-        {"top_reaction_y", o.top_reaction_y}, {"max_penetration", o.max_penetration},
-        {"friction_work", o.friction_work}, {"normal_contact_work", o.normal_contact_work},
-        {"clamp_work", o.clamp_work}, {"damping_work", o.damping_work},
-        {"foundation_work", o.foundation_work}};
-    for (const auto& [name, value] : outputs) {
-        if (std::isfinite(value)) continue;
-        std::ostringstream msg;
-        msg << "output " << name << " = " << value << " at t = " << state_.time
-            << ": the solution grows without bound" << growth_advice();
-        throw NumericalFailure(msg.str());
-    }
+    Observables::for_each(
+        [&](const char* name, const auto& value) {
+            if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>) {
+                if (std::isfinite(value)) return;
+                std::ostringstream msg;
+                msg << "output " << name << " = " << value << " at t = " << state_.time
+                    << ": the solution grows without bound" << growth_advice();
+                throw NumericalFailure(msg.str());
+            }
+        },
+        o);
 }
 
 void Simulation::check_plausible() {
@@ -457,10 +459,7 @@ std::string Simulation::growth_advice() const {
         msg << " with friction (F = " << p.friction_coefficient << ") steady sliding is "
             << "unstable unless damped: set damping_stiffness (4e-6 s stabilizes F <= 0.3 on "
                "the paper's scene);";
-    const bool midpoint_contact = p.mass_matrix == MassVariant::redistributed_normal ||
-                                  p.mass_matrix == MassVariant::redistributed_both ||
-                                  p.mass_matrix == MassVariant::standard;
-    if (midpoint_contact && (p.lambda >= 5 * p.mu || works_.normal_contact > 0))
+    if (!contact_at_end_of_step(p.mass_matrix) && (p.lambda >= 5 * p.mu || works_.normal_contact > 0))
         msg << " the midpoint contact gains energy (lambda/mu = " << p.lambda / p.mu
             << "; normal_contact_work = " << works_.normal_contact << " J/m): mass_matrix = 4 "
             << "(redistributed_implicit_contact) cannot;";

@@ -10,6 +10,10 @@
 
 namespace contactbody {
 
+// Substeps one communication step may take: beyond, the step is refused (an int counts them,
+// and a master that sends such a step has almost surely mistaken its units).
+constexpr double max_substeps_per_step = 1e8;
+
 struct Observables {
     double energy = 0, kinetic_energy = 0, strain_energy = 0;
     double friction_work = 0, energy_minus_friction_work = 0;
@@ -26,6 +30,38 @@ struct Observables {
     // What the last communication step cost (StepStatistics): substeps taken (a refined one
     // counts once per piece), refinements, Newton iterations and Gauss-Seidel sweeps.
     int substeps = 0, substep_refinements = 0, contact_iterations = 0, gauss_seidel_sweeps = 0;
+
+    // Every field once, with the FMU output it is: f(name, the field of each o...). The
+    // finiteness check, the FMU's output variables and its saved state follow this list (the
+    // state's bytes in this order).
+    template <class F, class... O>
+    static void for_each(F&& f, O&... o) {
+        f("energy", o.energy...);
+        f("kinetic_energy", o.kinetic_energy...);
+        f("strain_energy", o.strain_energy...);
+        f("friction_work", o.friction_work...);
+        f("energy_minus_friction_work", o.energy_minus_friction_work...);
+        f("normal_force", o.normal_force...);
+        f("friction_force", o.friction_force...);
+        f("corner_pressure", o.corner_pressure...);
+        f("corner_friction", o.corner_friction...);
+        f("top_reaction_x", o.top_reaction_x...);
+        f("top_reaction_y", o.top_reaction_y...);
+        f("max_penetration", o.max_penetration...);
+        f("damping_work", o.damping_work...);
+        f("clamp_work", o.clamp_work...);
+        f("normal_contact_work", o.normal_contact_work...);
+        f("friction_dissipation", o.friction_dissipation...);
+        f("foundation_work", o.foundation_work...);
+        f("top_position", o.top_position...);
+        f("top_velocity", o.top_velocity...);
+        f("active_contact_nodes", o.active_contact_nodes...);
+        f("slipping_contact_nodes", o.slipping_contact_nodes...);
+        f("substeps", o.substeps...);
+        f("substep_refinements", o.substep_refinements...);
+        f("contact_iterations", o.contact_iterations...);
+        f("gauss_seidel_sweeps", o.gauss_seidel_sweeps...);
+    }
 };
 
 // The bottom edge after a communication step, node by node (the edge history output).

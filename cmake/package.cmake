@@ -14,41 +14,67 @@ endforeach()
 
 set(fmus ContactBody ${COMPANIONS})
 set(licenses ${PROJECT_SOURCE_DIR}/LICENSE)
+# The platform table (platforms.json): name (the FMI 2.0 folder), FMI 3.0 tuple, toolchain file,
+# library suffix, the hosts built for it, the licences of the runtime linked in.
+file(READ ${PROJECT_SOURCE_DIR}/platforms.json platform_table)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/platforms.json)
+string(JSON platform_count LENGTH ${platform_table} platforms)
+math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
   python_package_file(ZIG ziglang zig)
-  get_filename_component(zig_lib ${ZIG} DIRECTORY)
-  foreach(platform linux64 win64)
-    if(platform STREQUAL "linux64")
-      set(toolchain zig-x86_64-linux-gnu.2.17)
-      set(suffix .so)
-    else()
-      set(toolchain mingw-w64-x86_64)
-      set(suffix .dll)
+  get_filename_component(ZIG_LIB ${ZIG} DIRECTORY)
+  set(license_names LICENSE)
+  foreach(i RANGE ${platform_last})
+    string(JSON platform GET ${platform_table} platforms ${i} name)
+    string(JSON tuple GET ${platform_table} platforms ${i} fmi3_tuple)
+    string(JSON toolchain GET ${platform_table} platforms ${i} toolchain)
+    string(JSON suffix GET ${platform_table} platforms ${i} library_suffix)
+    string(JSON host_count LENGTH ${platform_table} platforms ${i} hosts)
+    set(hosts)
+    if(host_count GREATER 0)
+      math(EXPR host_last "${host_count} - 1")
+      foreach(h RANGE ${host_last})
+        string(JSON host GET ${platform_table} platforms ${i} hosts ${h})
+        list(APPEND hosts ${host})
+      endforeach()
     endif()
+    string(JSON runtime_count LENGTH ${platform_table} platforms ${i} runtime_licenses)
+    if(runtime_count GREATER 0)
+      math(EXPR runtime_last "${runtime_count} - 1")
+      foreach(r RANGE ${runtime_last})
+        string(JSON license_name MEMBER ${platform_table} platforms ${i} runtime_licenses ${r})
+        string(JSON license_path GET ${platform_table} platforms ${i} runtime_licenses ${license_name})
+        string(REPLACE "\${ZIG_LIB}" "${ZIG_LIB}" license_path "${license_path}")
+        list(APPEND licenses ${license_path})
+        list(APPEND license_names ${license_name})
+      endforeach()
+    endif()
+    set(platform_tuple_${platform} ${tuple})
     set(dir ${CMAKE_BINARY_DIR}/${platform})
     set(products)
     foreach(fmu IN LISTS fmus)
       list(APPEND products ${dir}/${fmu}${suffix})
       set(${fmu}_binaries ${${fmu}_binaries} ${platform} ${dir}/${fmu}${suffix})
     endforeach()
+    string(REPLACE ";" "|" hosts_arg "${hosts}")
     ExternalProject_Add(binaries_${platform}
       SOURCE_DIR ${PROJECT_SOURCE_DIR} BINARY_DIR ${dir}
-      CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/cmake/${toolchain}.cmake
+      LIST_SEPARATOR |
+      CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/${toolchain}
                  -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCONTACTBODY_FMU_BINARIES_ONLY=ON
+                 -DCONTACTBODY_HOSTS=${hosts_arg}
                  -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
       INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
     list(APPEND binary_targets binaries_${platform})
   endforeach()
-  # The runtimes linked into the binaries: libc++ (zig, linux64), MinGW-w64's (win64).
-  list(APPEND licenses ${zig_lib}/lib/libcxx/LICENSE.TXT ${zig_lib}/lib/libcxxabi/LICENSE.TXT
-       ${zig_lib}/lib/libunwind/LICENSE.TXT /usr/share/doc/mingw-w64-common/copyright)
-  set(license_names LICENSE libcxx-LICENSE.txt libcxxabi-LICENSE.txt libunwind-LICENSE.txt
-      mingw-w64-copyright.txt)
 else()
+  # The native build's binary, in the table's first platform's folders (linux64).
   include(cmake/fmu_binaries.cmake)
+  string(JSON native GET ${platform_table} platforms 0 name)
+  string(JSON platform_tuple_${native} GET ${platform_table} platforms 0 fmi3_tuple)
   foreach(fmu IN LISTS fmus)
-    set(${fmu}_binaries linux64 $<TARGET_FILE:${fmu}>)
+    set(${fmu}_binaries ${native} $<TARGET_FILE:${fmu}>)
     list(APPEND binary_targets ${fmu})
   endforeach()
   set(license_names LICENSE)
@@ -102,8 +128,6 @@ add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_
         LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}
         DEPENDS ${binary_targets})
 # The FMI 3.0 FMU: the same binaries under FMI 3.0's platform tuples.
-set(platform_tuple_linux64 x86_64-linux)
-set(platform_tuple_win64 x86_64-windows)
 set(fmi3_binaries)
 set(list ${ContactBody_binaries})
 while(list)

@@ -10,6 +10,8 @@ import time
 import fmpy
 import pytest
 
+from contactbody import platforms
+
 # An fmpy FMU2Slave that keeps its log messages in .messages (status, category, text).
 from contactbody.fmu import Instance  # noqa: F401
 
@@ -20,7 +22,7 @@ SANITIZED = os.environ.get("CONTACTBODY_SANITIZED") == "1"
 # CONTACTBODY_PLATFORM=win64 (scripts/test.sh's Windows job): the fixtures below give a copy of
 # the FMU that holds only binaries/win64, run under wine through fmpy's remoting.
 PLATFORM = os.environ.get("CONTACTBODY_PLATFORM", "linux64")
-assert PLATFORM in ("linux64", "win64"), PLATFORM
+assert PLATFORM in platforms.names(), f"CONTACTBODY_PLATFORM={PLATFORM} is not in platforms.json"
 if PLATFORM == "win64":
     # fmpy starts `wine64` from PATH; ours (scripts/wine/wine64 says why) keeps the server up.
     os.environ["PATH"] = f"{ROOT / 'scripts' / 'wine'}{os.pathsep}{os.environ['PATH']}"

@@ -17,6 +17,7 @@ from elftools.elf.elffile import ELFFile
 from elftools.elf.gnuversions import GNUVerNeedSection
 
 from conftest import FMU, ROOT, SANITIZED
+from contactbody import platforms
 
 # The sanitizer job packs its native instrumented binary instead: nothing here applies.
 pytestmark = pytest.mark.skipif(SANITIZED, reason="the sanitizer build is not the portable one")
@@ -24,7 +25,7 @@ pytestmark = pytest.mark.skipif(SANITIZED, reason="the sanitizer build is not th
 FMU3 = FMU.with_name("ContactBody_fmi3.fmu")
 FMUS = [FMU, FMU3, FMU.with_name("BeltDrive.fmu"), FMU.with_name("Press.fmu")]
 # FMI 3.0 names the platform folders by tuple.
-PLATFORM_TUPLES = {"linux64": "x86_64-linux", "win64": "x86_64-windows"}
+PLATFORM_TUPLES = {p["name"]: p["fmi3_tuple"] for p in platforms.platforms()}
 GLIBC_LIBRARIES = {"libc.so.6", "libm.so.6", "libpthread.so.0", "libdl.so.2", "librt.so.1",
                    "ld-linux-x86-64.so.2"}
 WINDOWS_SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll", "ws2_32.dll",
@@ -34,6 +35,19 @@ WINDOWS_SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll
 def folder(fmu, platform):
     three = fmpy.read_model_description(str(fmu)).fmiVersion.startswith("3")
     return PLATFORM_TUPLES[platform] if three else platform
+
+
+@pytest.mark.parametrize("fmu", FMUS, ids=lambda f: f.stem)
+def test_fmu_holds_the_platform_tables_folders(fmu):
+    """platforms.json is the one list of platforms: every FMU carries exactly its folders, one
+    binary each, with the row's suffix."""
+    with zipfile.ZipFile(fmu) as z:
+        found = {n.split("/")[1]: n for n in z.namelist()
+                 if n.startswith("binaries/") and not n.endswith("/")}
+    expected = {folder(fmu, p["name"]): p["library_suffix"] for p in platforms.platforms()}
+    assert set(found) == set(expected)
+    for name, path in found.items():
+        assert path.endswith(expected[name]), path
 
 
 def exports_only_fmi(fmu, exported):
@@ -51,7 +65,7 @@ def binaries(fmu, platform):
 def only_binary(fmu, platform, tmp_path):
     files = binaries(fmu, platform)
     identifier = fmpy.read_model_description(str(fmu)).coSimulation.modelIdentifier
-    suffix = ".so" if platform == "linux64" else ".dll"
+    suffix = platforms.platform(platform)["library_suffix"]
     assert list(files) == [f"binaries/{folder(fmu, platform)}/{identifier}{suffix}"], files.keys()
     path = tmp_path / f"{identifier}{suffix}"
     path.write_bytes(next(iter(files.values())))

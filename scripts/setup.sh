@@ -6,20 +6,25 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build gfortran libeigen3-dev libgtest-dev valgrind
           python3 python3-venv python3-dev
-          # the win64 binaries, and wine to test them through fmpy's remoting
-          g++-mingw-w64-x86-64-posix gfortran-mingw-w64-x86-64-posix wine64
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
           python3-getfem)  # the work-precision benchmark's GetFEM series and its test
-missing=()
-for p in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
-    apt-get install -y -qq "${missing[@]}"
-fi
+install_missing() {
+    local missing=()
+    for p in "$@"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    if [ ${#missing[@]} -gt 0 ]; then
+        export DEBIAN_FRONTEND=noninteractive
+        apt-get update -qq
+        apt-get install -y -qq "${missing[@]}"
+    fi
+}
+install_missing "${packages[@]}"
+# What each platform of platforms.json needs to be built and tested here (win64: MinGW-w64, and
+# wine to run it through fmpy's remoting).
+read -r -a platform_packages <<< "$(/usr/bin/python3 -c 'import json; print(" ".join(a for p in json.load(open("platforms.json"))["platforms"] for a in p["apt_packages"]))')"
+install_missing "${platform_packages[@]}"
 
 # Debian's interpreter, not whatever python3 comes first on PATH.
 if [ ! -x .venv/bin/python ] || ! cmp -s requirements.txt .venv/requirements.installed; then

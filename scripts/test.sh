@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets everything up (scripts/setup.sh), then runs the C++ solver tests and the pytest suite on
 # the FMU users get (build/ContactBody.fmu: its linux64 binary), then the Windows job (its win64
-# binary under wine, through fmpy's remoting), then the C++ tests and the pytest suite against
+# binary under wine, through fmpy's remoting: platforms.json), then the C++ tests and the pytest suite against
 # a native build with AddressSanitizer and UndefinedBehaviorSanitizer.
 # SKIP_WINDOWS=1 and SKIP_SANITIZERS=1 skip those jobs (for a quick local run).
 set -euo pipefail
@@ -11,11 +11,9 @@ scripts/setup.sh
 .venv/bin/python -m pytest python_tests "$@"
 
 if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
-    echo "== Windows job: the win64 binary under wine, through fmpy's remoting =="
-    CONTACTBODY_PLATFORM=win64 .venv/bin/python -m pytest python_tests/test_windows.py \
-        python_tests/test_bad_input.py python_tests/test_energy_balance.py \
-        python_tests/test_portable.py -k "test_windows or test_bad_input or \
-        (test_energy_balance_closes and held) or paper_scene_equals_the_native_build" "$@"
+    # Each other platform's job, as platforms.json says (win64: its binary under wine, through
+    # fmpy's remoting).
+    .venv/bin/python -m contactbody.platforms test-jobs "$@"
 fi
 
 if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then

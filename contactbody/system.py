@@ -27,7 +27,7 @@ from xml.sax.saxutils import quoteattr
 
 from fmpy import read_model_description
 
-from .fmu import ROOT
+from .fmu import find_fmu
 from .master import System
 
 WIDTH = 0.01  # m: the body's thickness, the companions' contact_width
@@ -40,7 +40,9 @@ BODY = {"nx": 10, "ny": 10, "friction_coefficient": 0.3, "damping_stiffness": 4e
 
 
 def fmu(name):
-    return ROOT / "build" / f"{name}.fmu"
+    """The FMU `name` beside the body's (find_fmu: $CONTACTBODY_FMU, else this checkout's
+    build/), so that the system models run on the FMUs the user points at."""
+    return find_fmu().with_name(f"{name}.fmu")
 
 
 def belt_system(**body) -> System:

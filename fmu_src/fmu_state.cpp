@@ -7,7 +7,7 @@
 #include <string>
 #include <type_traits>
 
-#include "instance.hpp"
+#include "fmi_states.hpp"
 
 namespace contactbody::fmu {
 

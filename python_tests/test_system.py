@@ -247,3 +247,15 @@ def test_a_configured_copy_is_valid_and_keeps_its_values_across_reset(tmp_path):
         F.Instance(fmpy.read_model_description(str(broken)), unzipped, "broken")
     said = [m[2] for k, v in F._messages_by_instance.items() if k not in before for m in v]
     assert any("start_values.txt, line 1: expected 'name = value'" in m for m in said), said
+
+
+def test_system_models_take_the_fmus_beside_contactbody_fmu(tmp_path, monkeypatch):
+    """The package finds its FMUs outside a checkout's build/ too: the system models use the
+    companions beside $CONTACTBODY_FMU."""
+    import shutil
+    from conftest import FMU
+    for name in ("ContactBody", "BeltDrive", "Press"):
+        shutil.copy(FMU.with_name(f"{name}.fmu"), tmp_path)
+    monkeypatch.setenv("CONTACTBODY_FMU", str(tmp_path / "ContactBody.fmu"))
+    for system in (S.belt_system(), S.press_system()):
+        assert {p.parent for p in system.components.values()} == {tmp_path.resolve()}

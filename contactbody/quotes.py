@@ -93,7 +93,8 @@ def quotes(document):
         holds = abs(value - shown) <= half_unit * (1 + 1e-9)
         found.append((line, match["number"], value, holds))
     for marker in MARKER.finditer(text):
-        if marker.start() not in covered:
+        in_code = marker.start() > 0 and text[marker.start() - 1] == "`"  # shown, not used
+        if marker.start() not in covered and not in_code:
             line = text.count("\n", 0, marker.start()) + 1
             found.append((line, "", "no number right before the marker", False))
     return found

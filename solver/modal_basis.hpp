@@ -1,0 +1,45 @@
+// The basis of the reduced body (docs/decisions.md, "The reduced body"): the lowest modes of
+// the free dofs, the residual attachment modes of the contact dofs, and the clamp's static
+// lift. Built once from a Discretization; nothing here depends on the substep size.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "discretization.hpp"
+
+namespace contactbody {
+
+struct ModalBasis {
+    // m modes of A phi = omega^2 M phi on the free dofs, ascending: modes^T M modes = I,
+    // modes^T A modes = diag(omega2). M is the variant's: M_r's massless contact normal dofs
+    // take part in each mode statically.
+    Eigen::VectorXd omega2;
+    Eigen::MatrixXd modes;     // n_f x m
+    // Psi' = (A^-1 - modes omega2^-1 modes^T) B^T V g^-1/2 for the contact unknowns (N, T),
+    // where G = B (A^-1 - ...) B^T = V g V^T has rank: residual^T A residual = I,
+    // modes^T A residual = 0, modes^T M residual = 0. Taken massless in the reduced body;
+    // with every finite mode kept only the massless contact dofs' columns remain, and
+    // residual^T M residual = 0 there.
+    Eigen::MatrixXd residual;  // n_f x k
+    // -A_ff^-1 A_fc e: the free dofs' static response to a unit top displacement (displacement
+    // control: every clamped y dof moves by 1, the x ones stay).
+    Eigen::VectorXd lift;
+    // What it cost: wall seconds, and the eigensolver's restarts and operator applications
+    // (0 for the dense path).
+    double setup_seconds = 0;
+    int eigensolver_iterations = 0, operator_applications = 0;
+    bool dense = false;  // true when the modes came from a dense solve (small bodies)
+};
+
+// The modes of the lowest `modes` frequencies (at most the number of finite ones: the free
+// dofs less the massless ones). Bodies of at most dense_limit free dofs are solved densely,
+// others with Spectra's Lanczos on L^-1 P M P^T L^-T (P A P^T = L L^T, CHOLMOD), whose
+// largest eigenvalues are 1 / omega^2. Throws std::invalid_argument for a count out of range
+// or force control (A_ff is then singular: the plate and body translate freely), and
+// std::runtime_error naming the cause when the eigensolver does not converge.
+ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit = 400);
+
+// Free dofs minus those without mass: the number of finite modes.
+int finite_mode_count(const Discretization& d);
+
+}  // namespace contactbody

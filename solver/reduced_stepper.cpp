@@ -6,8 +6,7 @@
 namespace contactbody {
 
 ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
-    : params_(params), disc_(discretize(params)), basis_(build_modal_basis(disc_, modes)),
-      modes_(modes) {
+    : params_(params), disc_(discretize(params)), basis_(build_modal_basis(disc_, modes)) {
     const Discretization& d = disc_;
     const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols(), n = m + k;
     omega2_.resize(n);

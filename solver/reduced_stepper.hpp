@@ -58,7 +58,6 @@ private:
     SceneParameters params_;
     Discretization disc_;
     ModalBasis basis_;
-    int modes_ = 0;
     Eigen::VectorXd omega2_;   // diag(A_hat): modal omega^2, then 1 for the residual
     Eigen::VectorXd mass_;     // diag(M_hat): 1 for the modes, 0 for the residual
     Eigen::MatrixXd Bhat_;     // B T: signed rows of the basis at the contact unknowns (N, T)

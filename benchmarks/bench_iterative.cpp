@@ -1,4 +1,4 @@
-// Issue 4, target 3's experiment: can a preconditioned iterative solve, warm-started from the
+// An experiment: can a preconditioned iterative solve, warm-started from the
 // previous substep, beat the sparse direct solve (the floor) at large n?
 // It runs the paper scene and, at every substep, solves the same linear system the stepper's
 // solve ends on, K u^{k+1/2} = b with b = K u^{k+1/2} (free dofs, contact forces included), by

@@ -1,4 +1,4 @@
-// Issue 4, "no refactorization while the substep size is unchanged": a master that alternates
+// "No refactorization while the substep size is unchanged": a master that alternates
 // two communication step sizes (1e-4 and 7e-5 s) against one that keeps one, and against one
 // whose step changes every time (what alternation costs without a cache: a factorization of
 // K = 4/dt^2 M_r + A and its Delassus block per step). Same number of steps, same scene.

@@ -1,4 +1,4 @@
-"""The increment form (issue 23) against the absolute form before it, in one run.
+"""The increment form against the absolute form before it, in one run.
 
 Before, a substep solved for u^{k+1/2} and formed the velocity 4/dt (u^{k+1/2} - u^k) - v^k
 from absolute displacements; now it solves for w = u^{k+1/2} - u^k. "Before" is commit 3f3fd08,
@@ -95,7 +95,7 @@ def main():
 
 
 def report(r):
-    lines = ["# The increment form against the absolute form before it (issue 23)", "",
+    lines = ["# The increment form against the absolute form before it", "",
              f"`.venv/bin/python benchmarks/increment_form.py`; before = {r['before_commit']}.", "",
              "What it shows:",
              "- Before, the balance of a body moving as a whole was off by up to 2.7e-6 and grew "

@@ -1,4 +1,4 @@
-"""The portable FMU against the one before it (issue 20), in one run: size, simulate_fmu's
+"""The portable FMU against the one before it, in one run: size, simulate_fmu's
 start-up share and where it goes, and the cost per substep against its floor at nx = 20..160.
 
 "Before" is commit 406a316 built as it was (gcc 12, Debian's SuiteSparse, METIS and LAPACK as
@@ -157,7 +157,7 @@ def main():
 def report(r):
     s, st = r["size"], r["startup"]
     lines = [
-        "# The portable FMU against the one before it (issue 20)", "",
+        "# The portable FMU against the one before it", "",
         f"`.venv/bin/python benchmarks/portable_benchmark.py --rounds {r['rounds']}`; before = "
         f"commit {r['before_commit']} as it was built (gcc 12, Debian's shared libraries "
         "bundled), after = build/ (linux64: zig, glibc 2.17; win64: MinGW-w64). Medians over "

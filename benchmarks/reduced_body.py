@@ -1,11 +1,12 @@
-"""The reduced body against the full body (issue 32's work-precision, first cut: the solver's
+"""The reduced body against the full body (work-precision, first cut: the solver's
 steppers, not yet through the FMU): the damped sliding scene (the paper's body, F = 0.3,
 beta = 4e-6 s, 20 m/s, the top held, redistributed_normal) over 5 ms, at nx = 20, 40, 80
 (and 160 with --fine), each mesh's usual step (4e-6 s x 20 / nx) and 4x it, for a ladder of
 mode counts. Errors: L2 over the 1e-4 s communication steps of the step-averaged normal
 force and of the energy, relative to the full body on the same mesh at its usual step.
 Times: wall seconds per simulated second of both, measured in one run
-(build/bench_reduced_body).
+(build/bench_reduced_body), and a reduced substep's cost pressed (a contact solve on every
+node) against lifted off (none): what the contact solve costs.
 
     .venv/bin/python benchmarks/reduced_body.py [--fine] [--out benchmarks/results]
 """
@@ -31,14 +32,15 @@ def table(results):
              "(`benchmarks/reduced_body.py`; wall seconds per simulated second, both measured in "
              "one run; errors relative to the full body on the same mesh at its step):", "",
              "| nx | full [s/s] | modes | residual | dt [s] | reduced [s/s] | speed-up | "
-             "normal force error | energy error | set-up [s] |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "normal force error | energy error | set-up [s] | substep pressed / lifted [µs] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         for x in r["reduced"]:
             lines.append(f"| {r['nx']} | {r['full']['wall_per_simulated_s']:.3g} | {x['modes']} | "
                          f"{x['residual']} | {x['dt']:.3g} | {x['wall_per_simulated_s']:.3g} | "
                          f"{x['speedup']:.1f} | {x['error_normal_force']:.2e} | "
-                         f"{x['error_energy']:.2e} | {x['setup_s']:.2f} |")
+                         f"{x['error_energy']:.2e} | {x['setup_s']:.2f} | "
+                         f"{x['substep_us_pressed']:.0f} / {x['substep_us_lifted']:.0f} |")
     return "\n".join(lines) + "\n"
 
 

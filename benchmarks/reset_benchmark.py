@@ -1,4 +1,4 @@
-"""What a parameter-study point costs beside its doSteps, piece by piece (issue 13), on the
+"""What a parameter-study point costs beside its doSteps, piece by piece, on the
 default scene in this process:
 
   initialization: fmi2Reset + setupExperiment + enter/exitInitializationMode, and the first

@@ -1,4 +1,4 @@
-"""Speed benchmarks (issue 4): time per substep against the floor (one bare CHOLMOD solve with
+"""Speed benchmarks: time per substep against the floor (one bare CHOLMOD solve with
 the same factor, measured in the same run), its split, contact iterations, setup and memory,
 for the paper scene at nx = ny in {10, 20, 40, 80, 160} with the paper's dt ladder; rows that
 show what skipping unneeded work saves; and the default scene through fmpy.simulate_fmu.

@@ -1,4 +1,4 @@
-"""Cost of a parameter study (issue 13): 64 points of the default scene (the paper's body,
+"""Cost of a parameter study: 64 points of the default scene (the paper's body,
 F = 1.2, 0.02 s at a 1e-4 s communication step; foundation_velocity from 10 to 30 m/s so
 that every point differs), measured in one run:
 

@@ -1,4 +1,4 @@
-"""Work-precision benchmark (issue 10, item 5): solver run time against error on scenes that
+"""Work-precision benchmark: solver run time against error on scenes that
 converge, for every mass_matrix variant, along the Table 2 ladder (h and dt halved together)
 and along dt at h = 0.5 cm.
 

@@ -1,12 +1,12 @@
-"""Stability map of steady sliding with Rayleigh damping C = beta A (issue 10, item 3): the
+"""Stability map of steady sliding with Rayleigh damping C = beta A: the
 largest growth rate of the linearized semi-discrete problem over F x beta, for h = 2, 1, 0.5
 and 0.25 cm (redistributed_normal, the paper's scene). build/sliding_stability computes the
 undamped eigenvalues once per (h, F); the damped rates follow exactly from them (see the top
 of sliding_stability.cpp), so the beta axis costs nothing.
 
 The steady state linearized about is the admissible one (--lift-off: the nodes that the full
-contact state would pull on are lifted, issue 22 item 4); --full-contact gives the map of
-issue 10, which linearized about every node touching. Where no admissible steady sliding state
+contact state would pull on are lifted); --full-contact gives the earlier map, which
+linearized about every node touching. Where no admissible steady sliding state
 exists (F >= 1.3 here: the clamped body wedges) the row has no growth rates.
 About 30 min on 2 cores (the nx = 40 eigenvalues dominate).
 
@@ -67,7 +67,7 @@ def main():
     parser.add_argument("--finest", type=int, default=40, help="finest nx (dense eigenvalues)")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
     parser.add_argument("--full-contact", action="store_true",
-                        help="linearize about every node touching (issue 10's map)")
+                        help="linearize about every node touching (the full-contact map)")
     parser.add_argument("--replot", action="store_true",
                         help="redo the table and figure from OUT/damped_stability.json")
     args = parser.parse_args()

@@ -4,7 +4,7 @@
 // against the closed forms S1-S4 on the sets sigma_1-sigma_4.
 //   elementary_maps LAME MU DT M1 M2 FRICTION U_TAU_OLD FN_MIN FN_MAX FT_MIN FT_MAX N OUT.csv
 //                   [EXCESS STRIBECK_VELOCITY VISCOUS]
-// Writes one CSV row per grid point and prints a JSON summary. With the last three (issue 22)
+// Writes one CSV row per grid point and prints a JSON summary. With the last three
 // friction depends on the slip rate v = slip / (DT / 2): F(v) = FRICTION + EXCESS
 // exp(-|v| / STRIBECK_VELOCITY) + VISCOUS |v|, and the reference set is rate_solutions()
 // (the slip equation's roots) instead of the closed forms.

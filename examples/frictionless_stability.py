@@ -1,4 +1,4 @@
-"""Energy growth without friction (issue 12): the default scene with F = 0 and the top held,
+"""Energy growth without friction: the default scene with F = 0 and the top held,
 so that no work enters the body and E should stay at E(0), over lambda/mu x the Courant number
 c_p dt / h, for each mass_matrix variant, through the FMU.
 

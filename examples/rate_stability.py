@@ -1,5 +1,5 @@
-"""Stability of steady sliding with a slip-rate dependent friction coefficient (issue 22, item
-4): the largest growth rate of the linearized semi-discrete problem over F x dF/dv x beta on the
+"""Stability of steady sliding with a slip-rate dependent friction coefficient: the
+largest growth rate of the linearized semi-discrete problem over F x dF/dv x beta on the
 mesh ladder h = 2, 1, 0.5 cm (redistributed_normal, the paper's body, top_displacement
 -2.5e-5 m), and two points of it checked against the FMU.
 
@@ -149,7 +149,7 @@ def fmu_check(nx=10, friction=0.5, beta=4e-6, speeds=(5.0, 1.0), slopes=(0.05, -
 
 
 # Constant-F points where the FMU is run from the static start for 0.2 s and compared with the
-# admissible steady state and its least stable rate (issue 10's full-contact map called the
+# admissible steady state and its least stable rate (the full-contact map called the
 # first two unstable at every beta <= 1e-5 s; the third is unstable; the fourth has no state).
 SETTLE_POINTS = ((0.8, 4e-6), (1.2, 1e-5), (0.4, 4e-6), (1.5, 1e-5))
 

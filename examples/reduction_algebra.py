@@ -1,4 +1,4 @@
-"""The algebra of the reduced body (issue 32's construction, docs/decisions.md), checked on a
+"""The algebra of the reduced body (the construction in docs/decisions.md), checked on a
 random symmetric stiffness A and a mass M with massless rows (the paper's M_r) before any of
 it is built into the solver: numpy only, 1 s.
 

@@ -1,4 +1,4 @@
-// Linear stability of steady sliding (issue 3's "what we already know"): every contact node in
+// Linear stability of steady sliding: every contact node in
 // contact (u_y = 0 on the bottom edge) and slipping against the foundation moving in +x, so
 // the friction force on the body is F times the normal reaction p at each contact node.
 // With p = (M u'' + A u) on the contact y rows, the x rows read M_x u'' + A_x u = F p, and on
@@ -19,7 +19,7 @@
 // For each BETA given (alpha = 0) the output's "damped" list has the largest Re s over all
 // modes, negative when every mode decays.
 //
-// Slip-rate dependent friction (--slope=DFDV, s/m: F'(v) at the sliding speed, issue 22 item 4):
+// Slip-rate dependent friction (--slope=DFDV, s/m: F'(v) at the sliding speed):
 // the x row's friction is F(v) p with v = V - u_x' the slip rate, so its first variation is
 // F dp - F' p_i du_x': an interface damping D = diag(F' p_i) on the contact x dofs (velocity
 // strengthening, F' > 0, damps). p_i is the steady sliding reaction under the clamp's

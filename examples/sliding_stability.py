@@ -1,4 +1,4 @@
-"""Linear stability of steady sliding on the paper scene (issue 3): the largest growth rate of
+"""Linear stability of steady sliding on the paper scene: the largest growth rate of
 the linearized semi-discrete problem about the state where every contact node is in contact and
 slips (build/sliding_stability; the derivation is at the top of sliding_stability.cpp), for
 F in {0, 0.2, 1.2} along the Table 2 mesh ladder.

@@ -1,4 +1,4 @@
-// Issue 22 item 3: does one step of the full body have several solutions with velocity-
+// Does one step of the full body have several solutions with velocity-
 // weakening friction? Runs the body with one substep per step and, after each, solves that
 // substep's contact problem (Stepper::last_contact_problem) again from a family of starting
 // multipliers; counts the distinct converged solutions. At the first substep with several,

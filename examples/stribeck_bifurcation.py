@@ -1,4 +1,4 @@
-"""Issue 22 item 3: the bifurcation example in the full body. The paper's body, statically
+"""The bifurcation example in the full body. The paper's body, statically
 preloaded (top at -25 um), on a foundation moving at V = 0.2 m/s, with velocity-weakening
 friction F(v) = 0.5 + 0.5 exp(-|v| / 0.1 m/s) and beta = 4e-6 s, 0.8 ms, one substep per step.
 build/stribeck_bifurcation solves every substep's contact problem again from 27 starting

@@ -1,4 +1,4 @@
-"""Issue 22 item 2: one midpoint step of section 6's one-triangle example with friction that
+"""One midpoint step of section 6's one-triangle example with friction that
 weakens with the slip rate, F(v) = F_d + (F_s - F_d) exp(-|v| / v_s), v = slip / (dt / 2):
 how many solutions the step has, over (dt, F_s - F_d, v_s), with the tangential mass kept
 (redistributed_normal: m1 = 0, m2 = 1) or removed too (redistributed_both: m1 = m2 = 0).

@@ -1,4 +1,4 @@
-"""One degree of freedom with a switching stiffness (issue 12): the smallest model of what the
+"""One degree of freedom with a switching stiffness: the smallest model of what the
 paper's scheme does without friction. With M_r the normal contact dofs are massless, so the
 semi-discrete problem is M q'' + grad Phi(q) = 0 for the massive dofs q, with Phi the strain
 energy condensed over the contact dofs under the unilateral condition: convex and piecewise

@@ -1,4 +1,4 @@
-"""Bad input never crashes the host (issue 2 item 7): each bad call returns
+"""Bad input never crashes the host: each bad call returns
 fmi2Error (a step that cannot be completed too: test_step_failures.py), logs a message naming the
 function and the cause, and leaves the instance usable."""
 import math
@@ -216,7 +216,7 @@ def limited_parameters(model_description):
 
 def test_ranges_in_the_model_description_are_what_the_fmu_refuses(model_description, unzipped,
                                                                    vr):
-    """Issue 23, item 6: every written limit is the FMU's own. min and max are accepted (and
+    """Every written limit is the FMU's own. min and max are accepted (and
     initialize alone), the next representable value beyond each is refused, naming it. Where
     a value must be > 0, min is the smallest meaningful positive value, not 0."""
     checked = 0

@@ -1,4 +1,4 @@
-"""Issue 22 item 5: a stick-slip limit cycle in the belt-drive system (examples/system/
+"""A stick-slip limit cycle in the belt-drive system (examples/system/
 stick_slip.py): BeltDrive's speed-controlled motor drives the belt under the body through a
 compliant shaft, the interface is a Stribeck law (F_s = 0.6 -> F_d = 0.3 over 0.3 m/s)."""
 import pathlib

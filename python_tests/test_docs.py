@@ -1,4 +1,4 @@
-"""Documentation that stands alone (issue 15): the variable table matches the build, every
+"""Documentation that stands alone: the variable table matches the build, every
 document the READMEs link exists in the repository, and no variable description points to
 files a user does not have."""
 import re
@@ -44,7 +44,7 @@ def test_descriptions_point_to_no_missing_files():
 
 
 def test_readme_is_the_front_door():
-    """Issue 24, item 8: what it is, the two commands, a quick start, which settings, where to
+    """What it is, the two commands, a quick start, which settings, where to
     read on; the depth is in docs/ (whose links the test above checks)."""
     text = (ROOT / "README.md").read_text()
     assert len(text.splitlines()) <= 150
@@ -57,7 +57,7 @@ def test_readme_is_the_front_door():
 
 
 def test_numbers_quoted_from_results_files_hold():
-    """Issue 31, item 4: a number that prose quotes from a results file carries a marker naming
+    """A number that prose quotes from a results file carries a marker naming
     the file and the value (contactbody/quotes.py); each is the value rounded as shown."""
     found = {document: quotes(document) for document in documents()}
     wrong = [f"{d.relative_to(ROOT)}:{line}: {shown} against {value}"

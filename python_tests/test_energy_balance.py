@@ -1,4 +1,4 @@
-"""Rayleigh damping and the energy bookkeeping (issue 10, items 1-2): every force's exact
+"""Rayleigh damping and the energy bookkeeping: every force's exact
 discrete work, a balance that closes to round-off for every variant and input mode, and the
 undamped scheme unchanged bit for bit."""
 import hashlib
@@ -17,7 +17,7 @@ WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work",
 
 
 # The scheme's outputs, recorded (hex floats, SHA-256 of hex floats) with the increment form
-# (issue 23): with them, later changes must leave the undamped scheme unchanged bit for bit.
+#: with them, later changes must leave the undamped scheme unchanged bit for bit.
 # The increment form itself changed the last bits of the builds before it (cd498db .. 3f3fd08);
 # how far, and why that is round-off: benchmarks/results/increment_form.md.
 

@@ -1,4 +1,4 @@
-"""Field output (issue 3): .vtu snapshots and a .pvd collection, readable by meshio, carrying
+"""Field output: .vtu snapshots and a .pvd collection, readable by meshio, carrying
 the same state as a run without field output; an unwritable directory fails initialization."""
 import pathlib
 import sys

@@ -1,4 +1,4 @@
-"""Issue 21: the same body as an FMI 3.0 Co-Simulation FMU (build/ContactBody_fmi3.fmu), from
+"""The same body as an FMI 3.0 Co-Simulation FMU (build/ContactBody_fmi3.fmu), from
 the same variable table and the same binary, with the contact edge as arrays sized by the
 structural parameter edge_nodes = nx + 1."""
 import pathlib

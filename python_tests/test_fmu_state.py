@@ -1,4 +1,4 @@
-"""Issue 5: FMU state save/restore/serialize, reset, variable step sizes, input derivatives,
+"""FMU state save/restore/serialize, reset, variable step sizes, input derivatives,
 threads."""
 import json
 import struct

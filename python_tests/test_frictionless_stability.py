@@ -1,4 +1,4 @@
-"""Without friction (issue 12): where the paper's midpoint contact gains energy, the energy
+"""Without friction: where the paper's midpoint contact gains energy, the energy
 comes in as work of the normal contact forces, and redistributed_implicit_contact (mass_matrix
 = 4: M_r, contact at the end of the step) cannot gain any."""
 import fmpy

@@ -1,4 +1,4 @@
-"""Issue 5 item 2: random sequences of FMI calls, values, value references and step sizes.
+"""Random sequences of FMI calls, values, value references and step sizes.
 Every call returns a status (an exception here would be a crash of the host), every failure
 is logged, and a failed call changes nothing: replaying only the calls that succeeded on a
 fresh instance gives the same outputs."""

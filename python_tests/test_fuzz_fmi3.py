@@ -1,4 +1,4 @@
-"""Issue 21: test_fuzz_fmi.py's property for the FMI 3.0 layer. Random sequences of FMI 3.0
+"""test_fuzz_fmi.py's property for the FMI 3.0 layer. Random sequences of FMI 3.0
 calls (typed setters with bad values and wrong types, array reads with wrong sizes,
 Configuration Mode, steps, states): every call returns a status (an exception here would be
 a crash of the host), every failure is logged, and a failed call changes nothing: replaying

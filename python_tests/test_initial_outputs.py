@@ -1,4 +1,4 @@
-"""Honest t0 (issue 23, item 2): before the first step the outputs describe the initial state,
+"""Honest t0: before the first step the outputs describe the initial state,
 for every initial state x top control x gap (docs/contract.md, "Initial state")."""
 import itertools
 

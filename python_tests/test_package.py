@@ -1,5 +1,5 @@
 """The FMU as a file: valid, self-contained, and its modelDescription matches the table
-(issue 2 item 1)."""
+."""
 import pathlib
 import subprocess
 

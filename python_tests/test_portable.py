@@ -1,4 +1,4 @@
-"""Issue 20: the FMUs users get are portable. Each platform folder holds one binary; the
+"""The FMUs users get are portable. Each platform folder holds one binary; the
 linux64 one needs nothing beyond glibc 2.17 (checked here and by PyPA's auditwheel), the win64
 one only Windows' own DLLs; both export the FMI functions and nothing else (ContactBody's
 library: fmi2 and fmi3, the same file in ContactBody.fmu and ContactBody_fmi3.fmu)."""
@@ -167,7 +167,7 @@ def test_no_fmu_carries_sources(name):
 # NATIVE with this project built by the machine's gcc (-DCONTACTBODY_PORTABLE=OFF), BEFORE with
 # the FMU before the portable build (commit 406a316: gcc 12 with Debian's SuiteSparse 5.12,
 # METIS and reference LAPACK 3.11 as shared libraries), which also solved for u^{k+1/2} itself,
-# not the increment (issue 23). "metis": a mesh whose factor takes the METIS ordering (it has
+# not the increment. "metis": a mesh whose factor takes the METIS ordering (it has
 # less fill than CAMD's from 120 x 120 on; 80 x 80 takes CAMD's) and whose contact systems
 # exceed LAPACK's block size 64 (blocked dgetrf; 81 unknowns at 80 x 80).
 SCENES = {"default": dict(stop_time=0.02, output_interval=1e-4, start_values={}),

@@ -1,4 +1,4 @@
-"""Precision that does not depend on where the body is (issue 23, item 1): the balance
+"""Precision that does not depend on where the body is: the balance
 E - E(0) = clamp + normal contact + friction - damping closes to 1e-9 of E for bodies that
 move as a whole, at every substep size down to 2.5e-7 s, and the strain energy is >= 0.
 

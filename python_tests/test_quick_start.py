@@ -1,4 +1,4 @@
-"""README's quick start runs as printed and stays in the stable region (issue 24, item 6); the
+"""README's quick start runs as printed and stays in the stable region; the
 material helpers give the paper's material back."""
 import contextlib
 import io

@@ -1,4 +1,4 @@
-"""Issue 22 item 4: stability of steady sliding with dF/dv (build/sliding_stability --slope,
+"""Stability of steady sliding with dF/dv (build/sliding_stability --slope,
 examples/rate_stability.py), about the admissible steady state (--lift-off), and two points of
 the map checked against the FMU."""
 import json
@@ -25,7 +25,7 @@ def analyse(*args):
 
 
 def test_the_full_contact_state_pulls_on_nodes_and_the_admissible_one_does_not():
-    """Issue 10's linearization kept every node touching; with friction its steady reactions
+    """The full-contact linearization kept every node touching; with friction its steady reactions
     pull (F = 0.3: the last node; F = 0.8: half the edge). --lift-off lifts them."""
     for F, lifted in ((0.0, 0), (0.3, 1), (0.8, 5)):
         full, admissible = analyse(10, F, 1), analyse("--lift-off", 10, F, 1)
@@ -62,7 +62,7 @@ def test_velocity_strengthening_stabilizes_and_weakening_destabilizes():
 
 
 def test_the_fmu_settles_in_the_admissible_steady_state_at_the_predicted_rate():
-    """F = 0.8, beta = 4e-6 s, h = 1 cm, constant F: issue 10's full-contact map called this
+    """F = 0.8, beta = 4e-6 s, h = 1 cm, constant F: the full-contact map called this
     unstable; about the admissible state (5 nodes lifted) it decays at about -29 /s. The FMU
     ends with the same nodes touching, the same normal force to 1e-3 (averaged over its last
     10 ms, six periods of the mode still decaying), and its kinetic

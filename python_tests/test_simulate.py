@@ -1,5 +1,5 @@
-"""The default scene through fmpy's master (issue 2 item 2) and the physics of the paper's
-Figs. 7-8 (issue 2 item 6)."""
+"""The default scene through fmpy's master and the physics of the paper's
+Figs. 7-8."""
 import numpy as np
 import pytest
 from fmpy import simulate_fmu

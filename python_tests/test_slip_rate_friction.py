@@ -1,4 +1,4 @@
-"""Issue 22 item 1: friction that depends on the slip rate, F(v) = F_d + (F_s - F_d)
+"""Friction that depends on the slip rate, F(v) = F_d + (F_s - F_d)
 exp(-|v| / v_s) + c_v |v| (F_d = friction_coefficient, F_s = static_friction_ratio x F_d,
 v_s = stribeck_velocity, c_v = viscous_friction), with v the scheme's discrete slip rate taken
 implicitly in the step."""

@@ -26,7 +26,7 @@ def test_random_scenes_complete_or_fail_clearly(fmu_path):
             assert any(words in r["message"] for words in (
                 "What to change", "contact solve failed", "at or below the foundation")), r
         # Every run with finite outputs (a failed step keeps the rows before it) closes the
-        # balance: on the foundation, flying and hanging (issue 23: before the increment form,
+        # balance: on the foundation, flying and hanging (before the increment form,
         # flights missed it by up to 2e-7).
         if "balance_error" in r:
             assert stress_sweep.balance_holds(r), r

@@ -1,4 +1,4 @@
-"""Issue 22 item 3: with velocity-weakening friction one substep of the full body has several
+"""With velocity-weakening friction one substep of the full body has several
 solutions without tangential mass (redistributed_both), and the trajectories that start from
 them part; with it (redistributed_normal) the substep is unique once dt is small enough
 (examples/stribeck_bifurcation.py, reduced ladder)."""

@@ -1,4 +1,4 @@
-"""Issue 22 item 2: one step of section 6's example with velocity-weakening friction
+"""One step of section 6's example with velocity-weakening friction
 (examples/stribeck_one_step.py, reduced grid). The derived condition is sufficient: where it
 holds there is exactly one solution, by the direct count and by the contact solver. Keeping
 the tangential mass (redistributed_normal) makes small steps unique; removing it

@@ -1,4 +1,4 @@
-"""Parameter studies (issue 13): contactbody.study on a dask LocalCluster. The table against
+"""Parameter studies: contactbody.study on a dask LocalCluster. The table against
 points run alone, a killed study resumed, failures recorded, and a soak of the FMU's
 instantiate/free and reset cycles."""
 import json
@@ -202,7 +202,7 @@ def test_soak_2000_cycles_do_not_grow_memory(tmp_path, mode):
 
 
 def test_every_row_carries_its_settings_and_a_rerun_with_others_is_refused(tmp_path):
-    """Issue 24: the folder keeps the study's settings (study.json, as resolved); the same
+    """The folder keeps the study's settings (study.json, as resolved); the same
     settings with new points extend the table; other settings are refused, naming what
     changed, before anything runs."""
     first = small_study(friction_coefficient=[0.2])

@@ -1,4 +1,4 @@
-"""Study mistakes are caught before anything runs (issue 24, item 3): each ends in one line
+"""Study mistakes are caught before anything runs: each ends in one line
 on stderr naming the file and the key, exit status 2, and no traceback (--debug shows one)."""
 import os
 import subprocess
@@ -98,7 +98,7 @@ def plot_cli(*args):
 
 @with_cluster
 def test_a_heatmap_refuses_to_average_over_a_third_axis(three_axes):
-    """Issue 24, item 4: fixed with --where, or shown with --facet; labelled with units."""
+    """Fixed with --where, or shown with --facet; labelled with units."""
     args = ["plot", three_axes, "--heatmap", "foundation_velocity", "friction_coefficient",
             "friction_power"]
     out = plot_cli(*args)

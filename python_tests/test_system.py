@@ -1,4 +1,4 @@
-"""The body in system models (issue 14): the companion FMUs, the SSP and the container FMU
+"""The body in system models: the companion FMUs, the SSP and the container FMU
 against contactbody.master, coupling convergence, the power bond, the adaptive master and
 the press that explicit coupling cannot hold."""
 import numpy as np
@@ -164,7 +164,7 @@ def test_the_press_blows_up_explicitly_and_holds_strongly_coupled():
 
 
 def test_the_container_runs_alone_in_plain_fmpy(tmp_path, belt):
-    """Issue 24, item 1: plain fmpy.simulate_fmu(container), with no argument but the file, in
+    """Plain fmpy.simulate_fmu(container), with no argument but the file, in
     a process that has only fmpy (no contactbody), runs the documented scene (its
     DefaultExperiment: 10 ms at 1e-4 s) bit for bit as the master does."""
     import subprocess
@@ -195,7 +195,7 @@ def test_ssp_connectors_carry_the_variables_types(tmp_path):
 
 @pytest.mark.parametrize("name", ["belt", "press"])
 def test_both_ssps_run_alone_in_plain_fmpy(tmp_path, name):
-    """Issue 24, item 1: fmpy 0.3.32's simulate_ssp applies no parameter binding of the .ssd
+    """fmpy 0.3.32's simulate_ssp applies no parameter binding of the .ssd
     (only its parameter_set argument), so each component in the archive is a configured copy
     that carries the system's values as its own start values. Plain simulate_ssp, in a process
     with only fmpy, then equals the project's run (with the .ssv) bit for bit; before, the body

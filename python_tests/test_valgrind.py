@@ -1,4 +1,4 @@
-"""Issue 5 item 3: one simulation through a minimal C++ host under valgrind: no memory error,
+"""One simulation through a minimal C++ host under valgrind: no memory error,
 no definite or indirect leak."""
 import pathlib
 import shutil

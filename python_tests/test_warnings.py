@@ -1,4 +1,4 @@
-"""The FMU knows its own map (issue 23, items 4-5): at initialization one warning
+"""The FMU knows its own map: at initialization one warning
 (logStatusWarning) when the settings lie in a region the project measured unstable, naming the
 setting to change; during the run a warning when the contact creates energy, and when the top
 travels beyond the body's height; an error where nothing sensible can follow. Silent on the
@@ -163,7 +163,7 @@ def test_top_travel_beyond_the_height_warns_and_below_the_foundation_fails(
 @pytest.mark.parametrize("variant, ratio, courant", [(1, 100, 0.61), (2, 16.7, 47)])
 def test_the_sweeps_frictionless_findings_are_warned_about(model_description, unzipped, vr,
                                                           variant, ratio, courant):
-    """Issue 23's sweep: variant 1 gained below Courant 1 (lambda/mu = 100, Courant 0.61), and
+    """The stress sweep: variant 1 gained below Courant 1 (lambda/mu = 100, Courant 0.61), and
     redistributed_both gained without friction (lambda/mu = 16.7, Courant 47)."""
     mu, rho, h = 150e6, 1000.0, 0.005
     dt = courant * h / np.sqrt((ratio + 2) * mu / rho)

@@ -1,4 +1,4 @@
-"""Issue 20: the win64 binary, run under wine. scripts/test.sh's Windows job runs this file with
+"""The win64 binary, run under wine. scripts/test.sh's Windows job runs this file with
 CONTACTBODY_PLATFORM=win64 (conftest: the fixtures are then a copy of the FMU that holds only
 binaries/win64, driven through fmpy's remoting), together with the state-machine and argument
 tests of test_bad_input.py, the energy balance of test_energy_balance.py and the paper scene

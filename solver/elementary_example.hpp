@@ -38,7 +38,7 @@ public:
     // The condensed problem of ContactSolver for the load f = (f_nu, f_tau).
     ContactProblem problem(const Eigen::Vector2d& f) const;
 
-    // Issue 22: friction depending on the slip rate, F(v) with F_d = friction(), v = slip /
+    // Friction depending on the slip rate, F(v) with F_d = friction(), v = slip /
     // law.slip_time (dt / 2 for the midpoint step). Enters problem(), violation() and
     // rate_solutions().
     void set_rate_law(const ContactProblem::RateLaw& law) { rate_ = law; }

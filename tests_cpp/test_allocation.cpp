@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
                                             ::testing::Values(1.2, 0.0),
                                             ::testing::Bool()));
 
-// The slip-rate law (issue 22): the full Newton Jacobian lives in the same buffer.
+// The slip-rate law: the full Newton Jacobian lives in the same buffer.
 TEST(NoAllocationWithTheSlipRateLaw, InTheStepLoopOnceWarm) {
     for (const int variant : {1, 3}) {
         SceneParameters p;

@@ -1,4 +1,4 @@
-// A, M and M_r (paper section 3; issue 2 item 3).
+// A, M and M_r (paper section 3).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -1,4 +1,4 @@
-// The condensed contact solve: the paper's section 6 example (issue 2 item 5) and failures.
+// The condensed contact solve: the paper's section 6 example and failures.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -170,7 +170,7 @@ TEST(ContactSolver, FrictionlessProblemHasNoTangentialUnknowns) {
     }
 }
 
-// Issue 22: a slip-rate law on a random 6-node problem (W symmetric positive definite, nodes
+// A slip-rate law on a random 6-node problem (W symmetric positive definite, nodes
 // pressed and driven to slip). Newton with the full Jacobian and the Gauss-Seidel fallback
 // (forced by max_iterations = 0) reach the same solution, and at it every slipping node's
 // friction is F(v) at its own slip rate, every sticking node's within F(0).

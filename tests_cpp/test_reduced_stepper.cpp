@@ -1,4 +1,4 @@
-// The reduced body against the full body (issue 32): with every finite mode it is the full
+// The reduced body against the full body: with every finite mode it is the full
 // body in other coordinates, so 500 substeps of both agree to round-off in every variant,
 // with friction, damping and a moving clamp; with fewer modes its own energy balance closes.
 #include <gtest/gtest.h>

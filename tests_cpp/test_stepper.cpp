@@ -1,5 +1,5 @@
 // The midpoint stepper on the paper's scene: the contact law holds at every substep
-// (issue 2 item 4), and a failed solve is an error that leaves the state as it was.
+// and a failed solve is an error that leaves the state as it was.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,4 +1,4 @@
-// The variable table as the one declaration (issue 31, item 2): what it derives, and that a
+// The variable table as the one declaration: what it derives, and that a
 // row or field missing from it is refused.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-"""Stick-slip in a system (issue 22, item 5): the belt drive under the body, its motor held at
+"""Stick-slip in a system: the belt drive under the body, its motor held at
 a speed by a proportional controller (BeltDrive's speed_setpoint, speed_gain), the interface a
 Stribeck law with Rayleigh damping in the body. The pulley sticks to the body, the shaft winds
 up until the edge breaks loose near F_s, the belt races ahead, slows and sticks again: a

@@ -2,7 +2,7 @@
 dt in {1.6e-5, 8e-6, 4e-6, 2e-6, 1e-6}, one panel per mass_matrix variant.
 
 Writes examples/output/figure_7.png, figure_8.png and prints the table quoted in
-examples/README.md.
+docs/paper_results.md.
 
     .venv/bin/python examples/figures_7_8.py [--stop-time 0.02] [--friction 1.2]
 """

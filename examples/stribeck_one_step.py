@@ -8,7 +8,7 @@ f = (f_nu, f_tau) two ways: every solution directly (ElementaryExample::rate_sol
 stick, and each root of the slip equation G_s(w) = 0 along the contact), and the contact
 solver (ContactSolver, the FMU's, Newton from 28 starting multipliers).
 
-The uniqueness condition (derived in examples/README, "Friction that weakens with the slip
+The uniqueness condition (derived in docs/slip_rate_friction.md, "Friction that weakens with the slip
 rate: one step"), for a load with sticking pressure N0 = b u_tau^k + f_nu >= 0, tau = dt / 2:
   C-: c - b F_s - (F_s - F_d) N0 / (v_s tau) > 0
   C+: c + b F_d - (F_s - F_d) M  / (v_s tau) > 0,  M = max_{w >= max(0, -N0/b)} N(w) exp(-w / (tau v_s))

@@ -6,7 +6,8 @@ file and the value in it:
     costs 7.1 ×<!-- benchmarks/results/rate_law_cost.json: full law/ratio_to_constant --> the
 
 The path's segments are keys of a JSON object, indices of a list, or `key=value,...` picking the
-one record of a list whose fields have those values. A unit or sign may stand between the number
+one record of a list whose fields have those values (a value with a comma or a slash in double
+quotes). A unit or sign may stand between the number
 and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
 the value first (a size in bytes quoted in MB: `scale=1e-6`).
@@ -22,7 +23,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
-UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|s|J/m|N/m)?)"
+UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|N/m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
@@ -44,9 +45,24 @@ def parse_number(text):
     return float(text), half_unit
 
 
+def _split(text, separator):
+    """text split at `separator` outside double quotes."""
+    parts, current, quoted = [], "", False
+    for char in text:
+        if char == '"':
+            quoted = not quoted
+        if char == separator and not quoted:
+            parts.append(current)
+            current = ""
+        else:
+            current += char
+    return parts + [current]
+
+
 def _select(node, segment):
     if isinstance(node, list) and "=" in segment:
-        wanted = dict(pair.split("=", 1) for pair in segment.split(","))
+        wanted = {key: value.strip('"') for key, value in
+                  (pair.split("=", 1) for pair in _split(segment, ","))}
 
         def matches(record):
             for key, value in wanted.items():
@@ -69,7 +85,7 @@ def _select(node, segment):
 
 def value_at(file, path):
     node = json.loads((ROOT / file).read_text())
-    for segment in path.split("/"):
+    for segment in _split(path, "/"):
         node = _select(node, segment)
     return float(node)
 

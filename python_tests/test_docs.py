@@ -68,10 +68,12 @@ def test_numbers_quoted_from_results_files_hold():
 
 def test_quote_checker_catches_a_wrong_number(tmp_path, monkeypatch):
     results = tmp_path / "r.json"
-    results.write_text('{"runs": [{"n": 1, "ratio": 7.129}, {"n": 2, "ratio": 0.7649}]}')
+    results.write_text('{"runs": [{"n": 1, "ratio": 7.129}, {"n": 2, "ratio": 0.7649}, '
+                       '{"n": 3, "scene": "a, b/c", "ratio": 2.5}]}')
     monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
     page = tmp_path / "p.md"
     page.write_text("a 7.1 ×<!-- r.json: runs/n=1/ratio --> b 0.77<!-- r.json: runs/n=2/ratio -->"
                     " c 7.12<!-- r.json: runs/0/ratio --> d <!-- r.json: runs/1/ratio -->"
-                    " e 3<!-- r.json: runs/n=3/ratio -->")
-    assert [holds for _, _, _, holds in quotes(page)] == [True, False, False, False, False]
+                    " e 3<!-- r.json: runs/n=4/ratio -->"
+                    ' f 2.5 ms<!-- r.json: runs/scene="a, b/c"/ratio -->')
+    assert [holds for _, _, _, holds in quotes(page)] == [True, False, False, False, True, False]

@@ -39,6 +39,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     m_c_.head(m) = basis_.modes.transpose() * Me;
     a_s_.resize(n);
     a_s_ << basis_.modes.transpose() * AS, basis_.residual.transpose() * AS;
+    m_t_ = m_s_ + m_c_;
+    damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
     mu_ss_ = S.dot(MS);
     mu_cs_ = S.dot(Me);
     mu_cc_ = all_e.dot(d.M * all_e);
@@ -54,6 +56,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     contact_u_.resize(2 * nc);
     contact_v_.resize(2 * nc);
     bw_.resize(2 * nc);
+    du_.resize(n);
+    contact_force_.resize(n);
 }
 
 ReducedState ReducedStepper::reduce(const State& full) const {
@@ -127,8 +131,7 @@ const ReducedStepper::StepOperators& ReducedStepper::operators_for(double dt) {
     auto ops = std::make_unique<StepOperators>();
     ops->dt = dt;
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
-    const Eigen::VectorXd damping = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
-    ops->inverse_stiffness = (c1 * mass_ + c2 * damping + omega2_).cwiseInverse();
+    ops->inverse_stiffness = (c1 * mass_ + c2 * damping_ + omega2_).cwiseInverse();
     ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
     cache_[0] = std::move(ops);
     return *cache_[0];
@@ -156,7 +159,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const double w_t = 0.5 * (load.top_start + load.top_end) - s.top;
     rhs_ = c2 * (mass_.cwiseProduct(s.zdot) + m_s_ * s.lift_rate + m_c_ * s.top_rate) -
            omega2_.cwiseProduct(s.z) - a_s_ * (s.lift_at - s.top) -
-           (c1 + c2 * alpha) * w_t * (m_s_ + m_c_);
+           (c1 + c2 * alpha) * w_t * m_t_;
     w_ = ops.inverse_stiffness.cwiseProduct(rhs_);
     contact_u_.noalias() = Bhat_ * s.z;
     contact_u_ += Blift_ * s.lift_at;  // B u^k: (-u_y, u_x) of the contact nodes
@@ -165,27 +168,11 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     bw_.noalias() = Bhat_ * w_;
     bw_ += Blift_ * w_t;
 
-    const bool implicit = disc_.contact_at_end_of_step;
     problem_.a = bw_.head(problem_.a.size());
-    bool touching = false;
-    for (int i = 0; i < nc; ++i) {
-        const double gap_old = params_.initial_gap - contact_u_[i];
-        problem_.gap_limit[i] = implicit ? 0.5 * gap_old : gap_old;
-        touching = touching || problem_.a[i] > problem_.gap_limit[i];
-        if (friction)
-            problem_.slip_origin[i] = implicit ? 0.25 * dt * (contact_v_[nc + i] + load.foundation_velocity)
-                                               : 0.5 * dt * load.foundation_velocity;
-    }
-    const bool stribeck = friction && params_.stribeck_velocity > 0;
-    if (friction) {
-        problem_.rate = rate_law(params_);
-        problem_.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
-    }
-    const bool static_friction = friction && params_.static_friction_ratio != 1 && !stribeck;
-    if (static_friction)
-        for (int i = 0; i < nc; ++i)
-            problem_.friction[i] = params_.friction_coefficient *
-                                   (s.sticking[i] != 0 ? params_.static_friction_ratio : 1.0);
+    const bool touching = set_contact_conditions(
+        problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
+        [&](int i) { return params_.initial_gap - contact_u_[i]; },
+        [&](int i) { return contact_v_[nc + i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();
     if (touching) {
@@ -193,7 +180,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         report.contact_iterations = info.iterations;
         report.contact_sweeps = info.sweeps;
         report.contact_solved = true;
-        w_ += ops.inverse_stiffness.cwiseProduct(Bhat_.topRows(unknowns).transpose() * s.lambda);
+        contact_force_.noalias() = Bhat_.topRows(unknowns).transpose() * s.lambda;
+        w_ += ops.inverse_stiffness.cwiseProduct(contact_force_);
         bw_.noalias() = Bhat_ * w_;
         bw_ += Blift_ * w_t;
     } else {
@@ -203,11 +191,10 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // Damping work dt vbar^T C vbar, vbar = 2 w / dt on every dof: C = alpha M + beta A,
     // whose A part does not couple z with the lift and clamp (A_fc e = -A_ff S).
     const double du_t = 2 * w_t;
-    const Eigen::VectorXd du = 2 * w_;
-    const Eigen::VectorXd damping = alpha * mass_ + beta * omega2_;
+    du_ = 2 * w_;
     const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_, stiffness_tt = e_cc_ - s_ss_;
     if (params_.damped())
-        report.work.damping = (du.cwiseAbs2().dot(damping) + 2 * du_t * alpha * (m_s_ + m_c_).dot(du) +
+        report.work.damping = (du_.cwiseAbs2().dot(damping_) + 2 * du_t * alpha * m_t_.dot(du_) +
                                (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the
@@ -215,32 +202,19 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // forces' share through the lift, (B S)^T lambda. Its work closes the reduced body's own
     // energy balance; with every finite mode the lift's row is zero and this is the clamped
     // rows' residual, as in the full body.
-    const Eigen::VectorXd m_t = m_s_ + m_c_;
-    double r = m_t.dot(c1 * w_ - c2 * s.zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * s.lift_rate) +
+    double r = m_t_.dot(c1 * w_ - c2 * s.zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * s.lift_rate) +
                (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * s.top_rate) + stiffness_tt * (s.top + w_t);
     if (params_.damped())
-        r += 0.5 * c2 * (alpha * (m_t.dot(du) + mass_tt * du_t) + beta * stiffness_tt * du_t);
+        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt * du_t) + beta * stiffness_tt * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     report.work.clamp = r * du_t;
 
-    for (int i = 0; i < nc; ++i) {
-        const double uN_old = contact_u_[i], duN = 2 * bw_[i], dux = 2 * bw_[nc + i];
-        const double lN = s.lambda[i], lT = friction ? s.lambda[nc + i] : 0.0;
-        report.normal_force -= lN;
-        report.friction_force += lT;
-        const double foundation_step = load.foundation_velocity * dt;
-        report.work.friction += lT * dux;
-        report.work.normal_contact += lN * duN;
-        report.work.foundation += lT * foundation_step;
-        report.work.friction_dissipation += lT * (foundation_step - dux);
-        report.max_penetration = std::max(report.max_penetration, duN - (params_.initial_gap - uN_old));
-        s.sticking[i] = friction && touching && solver_.status()[i] == NodeStatus::stick ? 1.0 : 0.0;
-        if (touching && solver_.status()[i] != NodeStatus::open) {
-            ++report.active_nodes;
-            if (solver_.status()[i] == NodeStatus::slip) ++report.slipping_nodes;
-        }
-    }
+    for (int i = 0; i < nc; ++i)
+        add_node_contact(report, s.sticking[i], s.lambda[i], friction ? s.lambda[nc + i] : 0.0,
+                         contact_u_[i], 2 * bw_[i], 2 * bw_[nc + i], load.foundation_velocity * dt,
+                         params_.initial_gap, friction, touching,
+                         touching ? solver_.status()[i] : NodeStatus::open);
     report.corner_lambda_N = s.lambda[0];
     report.corner_lambda_T = friction ? s.lambda[nc] : 0.0;
 

@@ -66,6 +66,8 @@ private:
     // terms zero: massless): m_s = T^T M_ff S, m_c = T^T M_fc e, a_s = T^T A_ff S, and the
     // scalars S^T M_ff S, e^T M_cf S, e^T M_cc e, S^T A_ff S, e^T A_cc e.
     Eigen::VectorXd m_s_, m_c_, a_s_;
+    Eigen::VectorXd m_t_;      // m_s + m_c: the clamp and the lift moving together
+    Eigen::VectorXd damping_;  // diag(C_hat) = alpha diag(M_hat) + beta diag(A_hat)
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, e_cc_ = 0;
     std::array<std::unique_ptr<StepOperators>, 2> cache_;
     ContactSolverOptions options_;
@@ -73,7 +75,8 @@ private:
     ContactProblem problem_;
     double problem_dt_ = -1;
     bool problem_friction_ = false;
-    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_;
+    // Workspace, sized once: the substep allocates nothing.
+    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_, contact_force_;
 };
 
 }  // namespace contactbody

@@ -120,6 +120,25 @@ void Stepper::set_friction_coefficient(double friction) {
     problem_factor_ = 0;  // the problem's size may change: rebuild W on next use
 }
 
+int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
+                     double duN, double dux, double foundation_step, double initial_gap,
+                     bool friction, bool touching, NodeStatus status) {
+    report.normal_force -= lN;
+    report.friction_force += lT;
+    report.work.friction += lT * dux;
+    report.work.normal_contact += lN * duN;
+    report.work.foundation += lT * foundation_step;
+    report.work.friction_dissipation += lT * (foundation_step - dux);
+    report.max_penetration = std::max(report.max_penetration, duN - (initial_gap - uN_old));
+    sticking = friction && touching && status == NodeStatus::stick ? 1.0 : 0.0;
+    if (!touching) return 0;
+    if (status != NodeStatus::open) {
+        ++report.active_nodes;
+        if (status == NodeStatus::slip) ++report.slipping_nodes;
+    }
+    return static_cast<int>(status);
+}
+
 Stepper::Factor& Stepper::factor_for(double dt) {
     for (size_t k = 0; k < cache_.size(); ++k) {
         if (cache_[k] && std::abs(cache_[k]->dt - dt) <= 1e-14 * dt) {
@@ -249,30 +268,10 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     auto y_contact = y.tail(f.G.rows());
     problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
     const bool implicit = d.contact_at_end_of_step;
-    bool touching = false;
-    for (int i = 0; i < nc; ++i) {
-        const int node = d.mesh.contact_nodes[i];
-        const double gap_old = params_.initial_gap + s.u[dof_y(node)];  // g - u_N^k
-        problem_.gap_limit[i] = implicit ? 0.5 * gap_old : gap_old;
-        touching = touching || problem_.a[i] > problem_.gap_limit[i];
-        if (friction)
-            problem_.slip_origin[i] = implicit ? 0.25 * dt * (s.v[dof_x(node)] + load.foundation_velocity)
-                                               : 0.5 * dt * load.foundation_velocity;
-    }
-    // The slip rate the law sees: the scheme's own, (u^{k+1} - u^k) / dt - V at the midpoint,
-    // v^{k+1} - V for the implicit-contact variants (slip / slip_time, docs/contract.md).
-    const bool stribeck = friction && params_.stribeck_velocity > 0;
-    if (friction) {
-        problem_.rate = rate_law(params_);
-        problem_.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
-    }
-    // Without a Stribeck velocity the static coefficient is a memory: the nodes that stuck in
-    // the last substep hold with F_s. With one, F_s is the law's value at zero slip rate.
-    const bool static_friction = friction && params_.static_friction_ratio != 1 && !stribeck;
-    if (static_friction)
-        for (int i = 0; i < nc; ++i)
-            problem_.friction[i] = params_.friction_coefficient *
-                                   (s.sticking[i] != 0 ? params_.static_friction_ratio : 1.0);
+    const bool touching = set_contact_conditions(
+        problem_, params_, implicit, dt, load.foundation_velocity, s.sticking,
+        [&](int i) { return params_.initial_gap + s.u[dof_y(d.mesh.contact_nodes[i])]; },  // g - u_N^k
+        [&](int i) { return s.v[dof_x(d.mesh.contact_nodes[i])]; });
     SubstepReport report;
     if (touching) {
         const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
@@ -327,23 +326,12 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         snapshot_.normal_displacement[i] = uN_old + 0.5 * duN;
         snapshot_.gap_limit[i] += uN_old;
         if (friction) snapshot_.slip[i] = 0.5 * dux - problem_.slip_origin[i];
-        const double lN = snapshot_.lambda_N[i], lT = snapshot_.lambda_T[i];
-        report.normal_force -= lN;
-        report.friction_force += lT;
         const double foundation_step = load.foundation_velocity * dt;
         snapshot_.slip_velocity[i] = (dux - foundation_step) / dt;
-        snapshot_.state[i] = touching ? static_cast<signed char>(solver_.status()[i]) : 0;
-        report.work.friction += lT * dux;
-        report.work.normal_contact += lN * duN;
-        report.work.foundation += lT * foundation_step;
-        report.work.friction_dissipation += lT * (foundation_step - dux);
-        report.max_penetration =
-            std::max(report.max_penetration, duN - (params_.initial_gap - uN_old));
-        s.sticking[i] = friction && touching && solver_.status()[i] == NodeStatus::stick ? 1.0 : 0.0;
-        if (touching && solver_.status()[i] != NodeStatus::open) {
-            ++report.active_nodes;
-            if (solver_.status()[i] == NodeStatus::slip) ++report.slipping_nodes;
-        }
+        snapshot_.state[i] = static_cast<signed char>(add_node_contact(
+            report, s.sticking[i], snapshot_.lambda_N[i], snapshot_.lambda_T[i], uN_old, duN, dux,
+            foundation_step, params_.initial_gap, friction, touching,
+            touching ? solver_.status()[i] : NodeStatus::open));
     }
     report.corner_lambda_N = snapshot_.lambda_N[0];
     report.corner_lambda_T = snapshot_.lambda_T[0];

@@ -96,6 +96,49 @@ struct SubstepTimings {
     double factor = 0;   // factorization and Delassus operator
 };
 
+// What the full and the reduced stepper share around the contact solve.
+// The contact conditions of one substep, given each node's gap_old(i) = g - u_N^k and (for the
+// implicit-contact variants' slip origin) its velocity x at the step start, velocity_x(i):
+// gap limits, slip origins, the slip-rate law's slip time and, without a Stribeck velocity,
+// the stick memory's coefficients. Returns whether any node can touch.
+template <class GapOld, class VelocityX>
+bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, bool implicit,
+                            double dt, double foundation_velocity, const Eigen::VectorXd& sticking,
+                            GapOld&& gap_old, VelocityX&& velocity_x) {
+    const int nc = static_cast<int>(problem.gap_limit.size());
+    const bool friction = problem.has_friction();
+    bool touching = false;
+    for (int i = 0; i < nc; ++i) {
+        const double g = gap_old(i);
+        problem.gap_limit[i] = implicit ? 0.5 * g : g;
+        touching = touching || problem.a[i] > problem.gap_limit[i];
+        if (friction)
+            problem.slip_origin[i] = implicit ? 0.25 * dt * (velocity_x(i) + foundation_velocity)
+                                              : 0.5 * dt * foundation_velocity;
+    }
+    // The slip rate the law sees: the scheme's own, (u^{k+1} - u^k) / dt - V at the midpoint,
+    // v^{k+1} - V for the implicit-contact variants (slip / slip_time, docs/contract.md).
+    const bool stribeck = friction && p.stribeck_velocity > 0;
+    if (friction) {
+        problem.rate = rate_law(p);
+        problem.rate.slip_time = implicit ? 0.25 * dt : 0.5 * dt;
+    }
+    // Without a Stribeck velocity the static coefficient is a memory: the nodes that stuck in
+    // the last substep hold with F_s. With one, F_s is the law's value at zero slip rate.
+    if (friction && p.static_friction_ratio != 1 && !stribeck)
+        for (int i = 0; i < nc; ++i)
+            problem.friction[i] = p.friction_coefficient * (sticking[i] != 0 ? p.static_friction_ratio : 1.0);
+    return touching;
+}
+
+// One contact node's share of a substep's report, from its multipliers and its motion
+// (uN_old = u_N^k, duN and dux its normal and tangential increments over the substep);
+// updates its stick memory. `status` is the solver's only when `touching` (else it holds none:
+// pass open). Returns the node's state (0 open, 1 stick, 2 slip).
+int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
+                     double duN, double dux, double foundation_step, double initial_gap,
+                     bool friction, bool touching, NodeStatus status);
+
 class Stepper {
 public:
     explicit Stepper(const SceneParameters& params);

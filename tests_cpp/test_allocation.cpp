@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdlib>
 
+#include "reduced_stepper.hpp"
 #include "simulation.hpp"
 
 namespace {
@@ -98,6 +99,27 @@ TEST(NoAllocationWithTheSlipRateLaw, InTheStepLoopOnceWarm) {
         in.top_displacement = -2.5e-5;
         for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);
         EXPECT_GT(expect_no_allocation(sim, in), 0) << "variant " << variant;
+    }
+}
+
+// The reduced body's substep, once its operators and the contact solver are warm.
+TEST(NoAllocationInTheReducedBody, InTheSubstepLoopOnceWarm) {
+    for (const int variant : {1, 3}) {
+        SceneParameters p;
+        p.nx = p.ny = 8;
+        p.mass_matrix = static_cast<MassVariant>(variant);
+        p.friction_coefficient = 0.3;
+        p.damping_stiffness = 4e-6;
+        ReducedStepper reduced(p, 10);
+        ReducedState s = reduced.reduce(Stepper(p).initial_state(-2.5e-5));
+        const SubstepLoad load{-2.5e-5, -2.5e-5, 0, 20};
+        for (int k = 0; k < 50; ++k) reduced.substep(s, 4e-6, load);
+        int solved = 0;
+        armed = true;
+        for (int k = 0; k < 200; ++k) solved += reduced.substep(s, 4e-6, load).contact_solved;
+        armed = false;
+        EXPECT_EQ(allocations.exchange(0), 0) << "variant " << variant;
+        EXPECT_GT(solved, 0) << "variant " << variant;
     }
 }
 

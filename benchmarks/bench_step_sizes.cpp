@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
         const double seconds = seconds_since(t0);
         std::printf("%s{\"schedule\": \"%s\", \"seconds\": %.4f, \"factorizations\": %d, "
                     "\"substeps\": %ld}",
-                    first ? "" : ", ", s.name, seconds, sim.stepper().factorizations(), substeps);
+                    first ? "" : ", ", s.name, seconds, sim.body().factorizations(), substeps);
         first = false;
     }
     std::printf("]}\n");

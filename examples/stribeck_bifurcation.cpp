@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
         const SimulationSnapshot before = sim.snapshot();
         sim.do_step(dt, in);
         int failed = 0;
-        const auto found = solutions(sim.stepper().last_contact_problem(), sim.state().lambda, &failed);
+        const auto found = solutions(sim.body().last_contact_problem(), sim.state().lambda, &failed);
         failed_starts += failed;
         most = std::max(most, static_cast<int>(found.size()));
         if (found.size() > 1) {

@@ -87,6 +87,18 @@ public:
         if (n != static_cast<uint64_t>(expected) && n != static_cast<uint64_t>(alternative))
             fail(std::string(what) + " has " + std::to_string(n) + " entries, the mesh needs " +
                  std::to_string(expected));
+        return doubles_of(n, what);
+    }
+    // The reduced body's coordinates: their count depends on its basis, which the body checks
+    // on restore (Body::fits); here only that they are fewer than the mesh's dofs.
+    Eigen::VectorXd vector_up_to(const char* what, Eigen::Index limit) {
+        const uint64_t n = value<uint64_t>(what);
+        if (n < 2 || n > static_cast<uint64_t>(limit))
+            fail(std::string(what) + " has " + std::to_string(n) + " entries, the reduced body "
+                 "needs between 2 and " + std::to_string(limit));
+        return doubles_of(n, what);
+    }
+    Eigen::VectorXd doubles_of(uint64_t n, const char* what) {
         need_doubles(n, what);
         Eigen::VectorXd v(static_cast<Eigen::Index>(n));
         std::memcpy(v.data(), data_ + offset_, n * sizeof(double));
@@ -262,15 +274,21 @@ FmuState deserialize(const char* bytes, size_t size) {
         const Eigen::Index nc = values.nx + 1;
         SimulationSnapshot& sim = s.model.simulation;
         sim.state.time = r.finite("time");
-        sim.state.u = r.vector("displacement", dofs);
-        sim.state.v = r.vector("velocity", dofs);
+        // Every dof of the full body, or the reduced body's coordinates (its u, v: State).
+        if (values.modes == 0) {
+            sim.state.u = r.vector("displacement", dofs);
+            sim.state.v = r.vector("velocity", dofs);
+        } else {
+            sim.state.u = r.vector_up_to("reduced coordinates", dofs);
+            sim.state.v = r.vector("reduced rates", sim.state.u.size());
+        }
         sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
         sim.state.sticking = r.vector("sticking nodes", nc);
         Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
         sim.initial_energy = r.finite("initial energy");
         if (sim.initial_energy < 0) r.fail("initial energy is negative");
         sim.factor_substeps = r.finite_doubles("cached substep sizes");
-        if (sim.factor_substeps.size() > Stepper::factor_cache_size)
+        if (sim.factor_substeps.size() > Stepper::factor_cache_size)  // the reduced body's too
             r.fail("more cached substep sizes than the factor cache holds");
         for (double dt : sim.factor_substeps)
             if (!(dt > 0)) r.fail("cached substep sizes must be > 0");

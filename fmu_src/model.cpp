@@ -162,7 +162,7 @@ void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
     const SceneParameters scene = values.scene();
     try {
-        if (sim_ && same_discretization(sim_->stepper().parameters(), scene)) {
+        if (sim_ && same_discretization(sim_->body().parameters(), scene)) {
             sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
                           values.foundation_velocity);
         } else {
@@ -189,12 +189,12 @@ void ContactBodyModel::open_field_output() {
                          "history file");
     if (values_.result_directory.empty()) return;
     try {
-        fields_ = std::make_unique<FieldWriter>(sim_->stepper().discretization().mesh,
+        fields_ = std::make_unique<FieldWriter>(sim_->body().discretization().mesh,
                                                 values_.result_directory);
         if (values_.edge_output_interval > 0)
             edge_ = std::make_unique<EdgeWriter>(
                 (std::filesystem::path(values_.result_directory) / "contactbody_edge.npy").string(),
-                sim_->stepper().num_contact_nodes());
+                sim_->body().num_contact_nodes());
     } catch (const std::exception& e) {
         throw ModelError(e.what());
     }
@@ -219,7 +219,12 @@ void ContactBodyModel::write_due_fields() {
     const double elapsed = sim_->time() - start_time_;
     if (elapsed < (static_cast<double>(next_field_output_) - 1e-9) * interval) return;
     try {
-        fields_->write(sim_->state());
+        if (sim_->body().modes() == 0) {
+            fields_->write(sim_->state());
+        } else {  // the reduced body's field, on every dof
+            sim_->full_state(field_state_);
+            fields_->write(field_state_);
+        }
     } catch (const std::exception& e) {
         throw ModelError(concat("field output failed at t = ", sim_->time(), ": ", e.what()));
     }

@@ -24,11 +24,12 @@ void log_warnings(Instance* instance, const char* function, Simulation& sim) {
 
 void log_step(Instance* instance, const char* function, Simulation& sim) {
     log_warnings(instance, function, sim);
-    const int factorizations = sim.stepper().factorizations();
+    const int factorizations = sim.body().factorizations();
     if (factorizations != instance->factorizations_logged) {
         instance->factorizations_logged = factorizations;
         instance->log(Status::ok, LogCategory::events,
-                      "factorized 4/dt^2 M + A (factorization " + std::to_string(factorizations) + ")");
+                      std::string(sim.body().operator_name()) + " (operator " +
+                          std::to_string(factorizations) + ")");
     }
     const StepStatistics& s = sim.statistics();
     if (s.refinements > 0) {
@@ -50,7 +51,9 @@ void log_initialized(Instance* instance, const char* function) {
     Simulation& sim = *instance->model.simulation();
     // Factorizations are counted over the discretization's life (it outlives a reset): the
     // steps log the ones they make.
-    instance->factorizations_logged = sim.stepper().factorizations();
+    instance->factorizations_logged = sim.body().factorizations();
+    if (std::string summary = sim.body().summary(); !summary.empty())
+        instance->log(Status::ok, LogCategory::events, summary);
     instance->log(Status::ok, LogCategory::events, "initialized");
     log_warnings(instance, function, sim);
 }

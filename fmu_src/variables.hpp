@@ -27,6 +27,7 @@ struct Values {
     double static_friction_ratio;
     double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
+    int modes;  // 0: the full body
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;  // 0: no edge history

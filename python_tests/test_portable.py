@@ -149,7 +149,8 @@ def test_fmu_is_small_and_carries_the_licences():
     for name in ("LICENSE", "CHOLMOD-License.txt", "CHOLMOD-LGPL-2.1.txt", "METIS-LICENSE.txt",
                  "LAPACK-LICENSE.txt", "Eigen-MPL-2.0.txt", "libcxx-LICENSE.txt",
                  "mingw-w64-copyright.txt", "AMD-License.txt", "CAMD-License.txt",
-                 "COLAMD-License.txt", "CCOLAMD-License.txt"):
+                 "COLAMD-License.txt", "CCOLAMD-License.txt", "Spectra-MPL-2.0.txt",
+                 "Spectra-COPYRIGHT.txt"):
         assert name in licences, name
 
 

@@ -64,6 +64,9 @@ struct SceneParameters {
     bool static_initial_state = false;
     // The blow-up guard (J/m, and a multiple of E(0) + the work put in); 0 turns each off.
     double max_energy = 0, max_energy_ratio = 1e6;
+    // The body: 0 the full mesh; m > 0 the reduced body (docs/decisions.md, "The reduced
+    // body"): the contact edge exact and massless, the interior reduced to its m lowest modes.
+    int modes = 0;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 
     // Every field once: f(name, reuse, the field of each p...) with the FMU variable that sets
@@ -99,6 +102,7 @@ struct SceneParameters {
         f("initial_state", keep, p.static_initial_state...);
         f("max_energy", keep, p.max_energy...);
         f("max_energy_ratio", keep, p.max_energy_ratio...);
+        f("modes", rebuild, p.modes...);  // the basis is built from the discretization
     }
 };
 
@@ -115,6 +119,9 @@ constexpr double max_static_friction_ratio = 10;
 // Measured dry friction coefficients stay below about 3 (clean metals in vacuum excepted); a
 // hundred means a bond, not friction, and only stiffens the contact step.
 constexpr double max_friction_coefficient = 100;
+// The reduced body keeps its basis as dense columns (free dofs x modes): 4096 modes of an
+// nx = ny = 160 body are 1.7 GB.
+constexpr int max_reduced_modes = 4096;
 // c_v |v| adds 1 to F at |v| = 1 / c_v: 100 s/m does so at 1 cm/s.
 constexpr double max_viscous_friction = 100;
 

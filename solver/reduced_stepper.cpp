@@ -1,6 +1,7 @@
 #include "reduced_stepper.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace contactbody {
@@ -9,6 +10,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     : params_(params), disc_(discretize(params)), basis_(build_modal_basis(disc_, modes)) {
     const Discretization& d = disc_;
     const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols(), n = m + k;
+    nf_ = static_cast<Eigen::Index>(d.free_dofs.size());
     omega2_.resize(n);
     omega2_ << basis_.omega2, Eigen::VectorXd::Ones(k);
     mass_.resize(n);
@@ -40,14 +42,31 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     a_s_.resize(n);
     a_s_ << basis_.modes.transpose() * AS, basis_.residual.transpose() * AS;
     m_t_ = m_s_ + m_c_;
-    damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
     mu_ss_ = S.dot(MS);
     mu_cs_ = S.dot(Me);
     mu_cc_ = all_e.dot(d.M * all_e);
     s_ss_ = S.dot(AS);
     e_cc_ = all_e.dot(d.A * all_e);
 
-    options_.tolerance = params_.contact_tolerance;
+    // The clamped x dofs' rows against the basis, the lift and the clamp (residual massless).
+    Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
+    for (int dof : d.clamped_dofs) all_ex[dof] = dof % 2 == 0;
+    const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
+    Eigen::VectorXd M_fx(nf_), A_fx(nf_);
+    for (Eigen::Index j = 0; j < nf_; ++j) {
+        M_fx[j] = M_ex[d.free_dofs[static_cast<size_t>(j)]];
+        A_fx[j] = A_ex[d.free_dofs[static_cast<size_t>(j)]];
+    }
+    clamp_x_.mass = Eigen::VectorXd::Zero(n);
+    clamp_x_.mass.head(m) = basis_.modes.transpose() * M_fx;
+    clamp_x_.stiffness.resize(n);
+    clamp_x_.stiffness << basis_.modes.transpose() * A_fx, basis_.residual.transpose() * A_fx;
+    clamp_x_.mass_lift = S.dot(M_fx);
+    clamp_x_.stiffness_lift = S.dot(A_fx);
+    clamp_x_.mass_top = all_e.dot(M_ex);
+    clamp_x_.stiffness_top = all_e.dot(A_ex);
+
+    start_run();
     problem_.a.resize(2 * nc);
     problem_.gap_limit.resize(nc);
     problem_.slip_origin.resize(nc);
@@ -60,39 +79,72 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     contact_force_.resize(n);
 }
 
-ReducedState ReducedStepper::reduce(const State& full) const {
+// What a new stepper of params_ is, but for the discretization, the basis and the operators.
+void ReducedStepper::start_run() {
+    damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
+    options_ = ContactSolverOptions{};
+    options_.tolerance = params_.contact_tolerance;
+    solver_ = ContactSolver{};
+    snapshot_ = ContactSnapshot{};
+    problem_dt_ = -1;
+}
+
+void ReducedStepper::restart(const SceneParameters& params) {
+    if (!same_discretization(params_, params))
+        throw std::logic_error("ReducedStepper::restart: the parameters define another discretization");
+    check_parameters(params);
+    params_ = params;
+    start_run();
+    ++restarts_;
+}
+
+std::string ReducedStepper::summary() const {
+    std::ostringstream msg;
+    msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(disc_)
+        << " finite) and " << basis_.residual.cols() << " residual attachment modes of the "
+        << num_contact_nodes() << " contact nodes; basis "
+        << (restarts_ > 0 ? "kept from the last run (built" : "built") << " in "
+        << basis_.setup_seconds << " s, " << (basis_.dense ? "dense eigensolver" : "Lanczos, ")
+        << (basis_.dense ? "" : std::to_string(basis_.operator_applications) + " operator applications")
+        << (restarts_ > 0 ? ")" : "");
+    return msg.str();
+}
+
+State ReducedStepper::from_full(const State& full) const {
     const Discretization& d = disc_;
     const int top_dof = d.clamped_dofs.back();  // a clamped y dof: the top's value
-    ReducedState s;
-    s.top = s.lift_at = full.u[top_dof];
-    s.top_rate = s.lift_rate = full.v[top_dof];
+    const Eigen::Index n = size();
+    State s;
+    s.u.resize(n + 2);
+    s.v.resize(n + 2);
+    s.u[n] = s.u[n + 1] = full.u[top_dof];
+    s.v[n] = s.v[n + 1] = full.v[top_dof];
     const Eigen::Index nf = static_cast<Eigen::Index>(d.free_dofs.size());
     Eigen::VectorXd u(nf), v(nf);
     for (Eigen::Index j = 0; j < nf; ++j) {
-        u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.lift_at;
-        v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.lift_rate;
+        u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.u[n];
+        v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.v[n];
     }
-    const auto project = [&](const Eigen::VectorXd& x) {  // diag(A_hat)^-1 T^T A x
+    const auto project = [&](const Eigen::VectorXd& x, auto&& z) {  // diag(A_hat)^-1 T^T A x
         const Eigen::VectorXd Ax = d.A_free * x;
-        Eigen::VectorXd z(size());
         z << basis_.modes.transpose() * Ax, basis_.residual.transpose() * Ax;
-        return Eigen::VectorXd(z.cwiseQuotient(omega2_));
+        z = z.cwiseQuotient(omega2_);
     };
-    s.z = project(u);
-    s.zdot = project(v);
+    project(u, s.u.head(n));
+    project(v, s.v.head(n));
     s.lambda = full.lambda;
     s.sticking = full.sticking;
     s.time = full.time;
     return s;
 }
 
-void ReducedStepper::expand(const ReducedState& s, State& full) const {
+void ReducedStepper::to_full(const State& s, State& full) const {
     const Discretization& d = disc_;
-    const Eigen::Index m = basis_.modes.cols();
-    const Eigen::VectorXd u = basis_.modes * s.z.head(m) + basis_.residual * s.z.tail(size() - m) +
-                              basis_.lift * s.lift_at;
-    const Eigen::VectorXd v = basis_.modes * s.zdot.head(m) +
-                              basis_.residual * s.zdot.tail(size() - m) + basis_.lift * s.lift_rate;
+    const Eigen::Index m = basis_.modes.cols(), n = size();
+    const Eigen::VectorXd u = basis_.modes * s.u.head(m) + basis_.residual * s.u.segment(m, n - m) +
+                              basis_.lift * s.u[n];
+    const Eigen::VectorXd v = basis_.modes * s.v.head(m) + basis_.residual * s.v.segment(m, n - m) +
+                              basis_.lift * s.v[n];
     full.u.setZero(d.mesh.num_dofs());
     full.v.setZero(d.mesh.num_dofs());
     for (size_t j = 0; j < d.free_dofs.size(); ++j) {
@@ -100,23 +152,67 @@ void ReducedStepper::expand(const ReducedState& s, State& full) const {
         full.v[d.free_dofs[j]] = v[static_cast<Eigen::Index>(j)];
     }
     for (int dof : d.clamped_dofs) {
-        full.u[dof] = dof % 2 == 1 ? s.top : 0.0;
-        full.v[dof] = dof % 2 == 1 ? s.top_rate : 0.0;
+        full.u[dof] = dof % 2 == 1 ? s.u[n + 1] : 0.0;
+        full.v[dof] = dof % 2 == 1 ? s.v[n + 1] : 0.0;
     }
     full.lambda = s.lambda;
     full.sticking = s.sticking;
     full.time = s.time;
 }
 
-double ReducedStepper::energy(const ReducedState& s) const {
-    const double tau = s.lift_rate, tc = s.top_rate, gap = s.lift_at - s.top;
-    const double kinetic = 0.5 * s.zdot.cwiseAbs2().dot(mass_) + s.zdot.dot(m_s_ * tau + m_c_ * tc) +
+State ReducedStepper::initial_state(double top_displacement) const {
+    return from_full(Stepper::paper_initial_state(disc_, params_, top_displacement));
+}
+
+std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State& s) {
+    const Eigen::Index n = size();
+    const auto z = s.u.head(n), zdot = s.v.head(n);
+    const double tau = s.v[n], tc = s.v[n + 1], top = s.u[n + 1], gap = s.u[n] - top;
+    const double kinetic = 0.5 * zdot.cwiseAbs2().dot(mass_) + zdot.dot(m_s_ * tau + m_c_ * tc) +
                            0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc);
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
-    const double strain = 0.5 * s.z.cwiseAbs2().dot(omega2_) + s.z.dot(a_s_) * gap +
-                          0.5 * s_ss_ * gap * gap + 0.5 * (e_cc_ - s_ss_) * s.top * s.top;
+    const double strain = 0.5 * z.cwiseAbs2().dot(omega2_) + z.dot(a_s_) * gap +
+                          0.5 * s_ss_ * gap * gap + 0.5 * (e_cc_ - s_ss_) * top * top;
+    return {kinetic, strain};
+}
+
+double ReducedStepper::energy(const ReducedState& s) const {
+    const auto [kinetic, strain] = const_cast<ReducedStepper*>(this)->kinetic_and_strain_energy(s);
     return kinetic + strain;
+}
+
+double ReducedStepper::contact_height(const State& s, int node) const {
+    return -(Bhat_.row(node).dot(s.u.head(size())) + Blift_[node] * s.u[size()]);
+}
+
+bool ReducedStepper::set_clamp(State& s, double top, double rate) const {
+    const Eigen::Index n = size();
+    const bool moves = s.u[n + 1] != top || s.v[n + 1] != rate;
+    s.u[n + 1] = top;
+    s.v[n + 1] = rate;
+    return moves;
+}
+
+bool ReducedStepper::fits(const State& s) const {
+    const Eigen::Index nc = num_contact_nodes();
+    return s.u.size() == size() + 2 && s.v.size() == size() + 2 &&
+           (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
+}
+
+std::vector<double> ReducedStepper::cached_substeps() const {
+    std::vector<double> sizes;
+    for (const auto& ops : cache_)
+        if (ops) sizes.push_back(ops->dt);
+    return sizes;
+}
+
+void ReducedStepper::set_cached_substeps(const std::vector<double>& sizes) {
+    if (sizes.size() > cache_.size())
+        throw std::invalid_argument("more cached substep sizes than the cache holds");
+    for (auto& ops : cache_) ops.reset();
+    for (size_t k = sizes.size(); k-- > 0;) build_operators(sizes[k]);  // the first ends first
+    problem_dt_ = -1;
 }
 
 void ReducedStepper::set_friction_coefficient(double friction) {
@@ -127,6 +223,10 @@ void ReducedStepper::set_friction_coefficient(double friction) {
 const ReducedStepper::StepOperators& ReducedStepper::operators_for(double dt) {
     for (size_t j = 0; j < cache_.size(); ++j)
         if (cache_[j] && std::abs(cache_[j]->dt - dt) <= 1e-14 * dt) return *cache_[j];
+    return build_operators(dt);
+}
+
+ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
     std::swap(cache_[0], cache_[1]);
     auto ops = std::make_unique<StepOperators>();
     ops->dt = dt;
@@ -134,6 +234,7 @@ const ReducedStepper::StepOperators& ReducedStepper::operators_for(double dt) {
     ops->inverse_stiffness = (c1 * mass_ + c2 * damping_ + omega2_).cwiseInverse();
     ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
     cache_[0] = std::move(ops);
+    ++operator_builds_;
     return *cache_[0];
 }
 
@@ -153,18 +254,25 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const double alpha = params_.damping_mass, beta = params_.damping_stiffness;
     if (s.lambda.size() != problem_.W.rows()) s.lambda.setZero(problem_.W.rows());
 
+    // The state's parts (State's layout for the reduced body: reduced_stepper.hpp).
+    const Eigen::Index n = size();
+    auto z = s.u.head(n), zdot = s.v.head(n);
+    double& lift_at = s.u[n];
+    double& lift_rate = s.v[n];
+    double& top = s.u[n + 1];
+    double& top_rate = s.v[n + 1];
+
     // The midpoint equation on z with the clamp's midpoint increment w_t (no stiffness
     // coupling: the lift is the clamp's static response):
     //   K_hat w = 2/dt (M_hat zdot + m_t top_rate) - A_hat z - (4/dt^2 + 2/dt alpha) m_t w_t + B_hat^T lambda.
-    const double w_t = 0.5 * (load.top_start + load.top_end) - s.top;
-    rhs_ = c2 * (mass_.cwiseProduct(s.zdot) + m_s_ * s.lift_rate + m_c_ * s.top_rate) -
-           omega2_.cwiseProduct(s.z) - a_s_ * (s.lift_at - s.top) -
-           (c1 + c2 * alpha) * w_t * m_t_;
+    const double w_t = 0.5 * (load.top_start + load.top_end) - top;
+    rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
+           omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - (c1 + c2 * alpha) * w_t * m_t_;
     w_ = ops.inverse_stiffness.cwiseProduct(rhs_);
-    contact_u_.noalias() = Bhat_ * s.z;
-    contact_u_ += Blift_ * s.lift_at;  // B u^k: (-u_y, u_x) of the contact nodes
-    contact_v_.noalias() = Bhat_ * s.zdot;
-    contact_v_ += Blift_ * s.lift_rate;
+    contact_u_.noalias() = Bhat_ * z;
+    contact_u_ += Blift_ * lift_at;  // B u^k: (-u_y, u_x) of the contact nodes
+    contact_v_.noalias() = Bhat_ * zdot;
+    contact_v_ += Blift_ * lift_rate;
     bw_.noalias() = Bhat_ * w_;
     bw_ += Blift_ * w_t;
 
@@ -202,28 +310,38 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // forces' share through the lift, (B S)^T lambda. Its work closes the reduced body's own
     // energy balance; with every finite mode the lift's row is zero and this is the clamped
     // rows' residual, as in the full body.
-    double r = m_t_.dot(c1 * w_ - c2 * s.zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * s.lift_rate) +
-               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * s.top_rate) + stiffness_tt * (s.top + w_t);
+    double r = m_t_.dot(c1 * w_ - c2 * zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
+               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + stiffness_tt * (top + w_t);
     if (params_.damped())
         r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt * du_t) + beta * stiffness_tt * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     report.work.clamp = r * du_t;
+    // The clamped x rows' residual (they do not move: no work), recovered from the basis as
+    // the full body's: M_cf a + A_cf u^{k+1/2} + A_cc u_c^{k+1/2} + C_cf vbar.
+    const double mass_x = clamp_x_.mass.dot(c1 * w_ - c2 * zdot) +
+                          clamp_x_.mass_lift * (c1 * w_t - c2 * lift_rate) +
+                          clamp_x_.mass_top * (c1 * w_t - c2 * top_rate);
+    double rx = mass_x + clamp_x_.stiffness.dot(z + w_) +
+                clamp_x_.stiffness_lift * (lift_at + w_t) + clamp_x_.stiffness_top * (top + w_t);
+    if (params_.damped())
+        rx += 0.5 * c2 *
+              (alpha * (clamp_x_.mass.dot(du_) + (clamp_x_.mass_lift + clamp_x_.mass_top) * du_t) +
+               beta * (clamp_x_.stiffness.dot(du_) +
+                       (clamp_x_.stiffness_lift + clamp_x_.stiffness_top) * du_t));
+    report.top_reaction_x = rx;
 
-    for (int i = 0; i < nc; ++i)
-        add_node_contact(report, s.sticking[i], s.lambda[i], friction ? s.lambda[nc + i] : 0.0,
-                         contact_u_[i], 2 * bw_[i], 2 * bw_[nc + i], load.foundation_velocity * dt,
-                         params_.initial_gap, friction, touching,
-                         touching ? solver_.status()[i] : NodeStatus::open);
-    report.corner_lambda_N = s.lambda[0];
-    report.corner_lambda_T = friction ? s.lambda[nc] : 0.0;
+    record_contact(
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        touching, solver_.status(), [&](int i) { return contact_u_[i]; },
+        [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
 
-    s.zdot = 2 * c2 * w_ - s.zdot;
-    s.z += 2 * w_;
-    s.lift_rate = 2 * c2 * w_t - s.lift_rate;
-    s.lift_at += du_t;
-    s.top = load.top_end;
-    s.top_rate = load.top_rate;
+    zdot = 2 * c2 * w_ - zdot;
+    z += 2 * w_;
+    lift_rate = 2 * c2 * w_t - lift_rate;
+    lift_at += du_t;
+    top = load.top_end;
+    top_rate = load.top_rate;
     s.time += dt;
     return report;
 }

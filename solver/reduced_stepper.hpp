@@ -11,41 +11,64 @@
 
 #include "contact_solver.hpp"
 #include "modal_basis.hpp"
+#include "body.hpp"
 #include "stepper.hpp"
 
 namespace contactbody {
 
-struct ReducedState {
-    Eigen::VectorXd z, zdot;   // m modal then k residual coordinates, and their rates
-    Eigen::VectorXd lambda;    // as State::lambda
-    Eigen::VectorXd sticking;  // as State::sticking
-    double top = 0, top_rate = 0;  // the clamp's displacement and velocity
-    // The lift's coordinate and rate in the free dofs: u_free = T z + lift * lift_at. It moves
-    // with the clamp's midpoint increments, as the full body's free dofs do, so it differs
-    // from `top` after a jump of a held input, and its rate from top_rate.
-    double lift_at = 0, lift_rate = 0;
-    double time = 0;
-};
+// A reduced state is a State in the basis' coordinates (Body): u = (z, lift_at, top) and
+// v = (zdot, lift_rate, top_rate), where z holds the m modal then the k residual coordinates,
+// top and top_rate are the clamp's displacement and velocity, and lift_at the lift's
+// coordinate in the free dofs, u_free = T z + lift * lift_at. The lift moves with the clamp's
+// midpoint increments, as the full body's free dofs do, so it differs from top after a jump
+// of a held input (set_clamp), and its rate from top_rate. lambda and sticking are as in
+// the full body.
+using ReducedState = State;
 
-class ReducedStepper {
+class ReducedStepper : public Body {
 public:
     ReducedStepper(const SceneParameters& params, int modes);
 
-    const Discretization& discretization() const { return disc_; }
+    const Discretization& discretization() const override { return disc_; }
+    const SceneParameters& parameters() const override { return params_; }
     const ModalBasis& basis() const { return basis_; }
-    int num_contact_nodes() const { return static_cast<int>(disc_.contact_x.size()); }
-    Eigen::Index size() const { return static_cast<Eigen::Index>(omega2_.size()); }
+    Eigen::Index size() const { return static_cast<Eigen::Index>(omega2_.size()); }  // m + k
+    int modes() const override { return static_cast<int>(basis_.modes.cols()); }
+    // Keeps the basis (it depends on the discretization and the mode count only).
+    void restart(const SceneParameters& params) override;
 
     // The A-orthogonal projection of a full state (exact when it lies in the basis' span, as
     // every state does with every finite mode), and back.
-    ReducedState reduce(const State& full) const;
-    void expand(const ReducedState& s, State& full) const;
+    State from_full(const State& full) const override;
+    void to_full(const State& s, State& full) const override;
+    ReducedState reduce(const State& full) const { return from_full(full); }
+    void expand(const ReducedState& s, State& full) const { to_full(s, full); }
+    State initial_state(double top_displacement) const override;
     // E = 1/2 v^T M v + 1/2 u^T A u of u = (T z + S lift_at, e top), v likewise, with the
     // residual massless: the reduced body's own energy.
     double energy(const ReducedState& s) const;
+    std::pair<double, double> kinetic_and_strain_energy(const State& s) override;
+    double top_position(const State& s) const override { return s.u[size() + 1]; }
+    double top_velocity(const State& s) const override { return s.v[size() + 1]; }
+    double contact_height(const State& s, int node) const override;
+    bool set_clamp(State& s, double top, double rate) const override;
+    bool fits(const State& s) const override;
 
-    void set_friction_coefficient(double friction);
-    SubstepReport substep(ReducedState& s, double dt, const SubstepLoad& load);
+    void set_friction_coefficient(double friction) override;
+    SubstepReport substep(ReducedState& s, double dt, const SubstepLoad& load) override;
+    const ContactSnapshot& last_contact() const override { return snapshot_; }
+    const ContactProblem& last_contact_problem() const override { return problem_; }
+
+    std::vector<double> cached_substeps() const override;
+    void set_cached_substeps(const std::vector<double>& sizes) override;
+    size_t operator_cache_size() const override { return 2; }
+    int factorizations() const override { return operator_builds_; }
+    const char* operator_name() const override {
+        return "built the reduced step operators 4/dt^2 M_hat + A_hat and the Delassus operator";
+    }
+    // The basis' sizes and set-up time, and whether a restart kept it.
+    std::string summary() const override;
+    ContactSolverOptions& contact_options() override { return options_; }
 
 private:
     struct StepOperators {
@@ -68,10 +91,21 @@ private:
     Eigen::VectorXd m_s_, m_c_, a_s_;
     Eigen::VectorXd m_t_;      // m_s + m_c: the clamp and the lift moving together
     Eigen::VectorXd damping_;  // diag(C_hat) = alpha diag(M_hat) + beta diag(A_hat)
+    // The clamped x rows (their reaction): against z, the lift and the clamp, mass and stiffness.
+    struct ClampRows {
+        Eigen::VectorXd mass, stiffness;
+        double mass_lift = 0, stiffness_lift = 0, mass_top = 0, stiffness_top = 0;
+    } clamp_x_;
+    Eigen::Index nf_ = 0;  // free dofs
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, e_cc_ = 0;
     std::array<std::unique_ptr<StepOperators>, 2> cache_;
+    StepOperators& build_operators(double dt);
+    void start_run();
+    int operator_builds_ = 0;
+    int restarts_ = 0;
     ContactSolverOptions options_;
     ContactSolver solver_;
+    ContactSnapshot snapshot_;
     ContactProblem problem_;
     double problem_dt_ = -1;
     bool problem_friction_ = false;

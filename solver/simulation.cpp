@@ -1,5 +1,6 @@
 #include "simulation.hpp"
 
+#include "reduced_stepper.hpp"
 #include "scheme_warnings.hpp"
 
 #include <algorithm>
@@ -12,30 +13,36 @@
 
 namespace contactbody {
 
+// The body the parameters ask for: the full mesh, or the reduced one of `modes` modes.
+static std::unique_ptr<Body> make_body(const SceneParameters& params) {
+    check_parameters(params);
+    if (params.modes == 0) return std::make_unique<Stepper>(params);
+    return std::make_unique<ReducedStepper>(params, params.modes);
+}
+
 Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
                        double start_time, double initial_top_force,
                        double initial_foundation_velocity)
-    : Simulation(std::make_unique<Stepper>(params), initial_top_displacement, start_time,
+    : Simulation(make_body(params), initial_top_displacement, start_time,
                  initial_top_force, initial_foundation_velocity) {}
 
 void Simulation::restart(const SceneParameters& params, double initial_top_displacement,
                          double start_time, double initial_top_force,
                          double initial_foundation_velocity) {
-    stepper_->restart(params);
-    *this = Simulation(std::move(stepper_), initial_top_displacement, start_time,
+    body_->restart(params);
+    *this = Simulation(std::move(body_), initial_top_displacement, start_time,
                        initial_top_force, initial_foundation_velocity);
 }
 
-Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
+Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displacement,
                        double start_time, double initial_top_force,
                        double initial_foundation_velocity)
-    : stepper_(std::move(stepper)), state_(stepper_->initial_state(initial_top_displacement)),
+    : body_(std::move(body)), state_(body_->initial_state(initial_top_displacement)),
       sliding_speed_(std::abs(initial_foundation_velocity)) {
-    const SceneParameters& params = stepper_->parameters();
+    const SceneParameters& params = body_->parameters();
     state_.time = start_time;
-    product_.resize(state_.u.size());
-    const Mesh& mesh = stepper_->discretization().mesh;
-    const Eigen::Index nc = stepper_->num_contact_nodes();
+    const Mesh& mesh = body_->discretization().mesh;
+    const Eigen::Index nc = body_->num_contact_nodes();
     edge_sum_N_.setZero(nc);
     edge_sum_T_.setZero(nc);
     edge_.x.resize(nc);
@@ -48,8 +55,12 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
     initial_energy_ = energy(state_);
-    if (std::string why = scheme_warning(params, sliding_speed_); !why.empty())
+    if (std::string why = scheme_warning(params, sliding_speed_); !why.empty()) {
+        if (params.modes > 0)
+            why += " (measured on the full body: the reduced body of modes = " +
+                   std::to_string(params.modes) + " has not been mapped)";
         warnings_.push_back(std::move(why));
+    }
 }
 
 // A quasi-static load path: the top displacement goes from `start` to `top` in 10 substeps so
@@ -64,18 +75,20 @@ Simulation::Simulation(std::unique_ptr<Stepper> stepper, double initial_top_disp
 // rigid shift `start` = -gap, and the path loads the body from touching. Its final substep
 // then moves nothing: u^{k+1/2} = u^{k+1} is in static balance with contact and friction, for
 // every variant. The body is left there at rest.
-static State quasi_static_path(Stepper& stepper, double top, double start = 0) {
+static State quasi_static_path(Body& body, double top, double start = 0) {
     constexpr int increments = 10;
     constexpr double quasi_static = 1e3;
-    State s = stepper.initial_state(0.0);
-    s.v.setZero();
-    for (Eigen::Index dof = 1; dof < s.u.size(); dof += 2) s.u[dof] = start;
+    State rest;
+    body.to_full(body.initial_state(0.0), rest);
+    rest.v.setZero();
+    for (Eigen::Index dof = 1; dof < rest.u.size(); dof += 2) rest.u[dof] = start;
+    State s = body.from_full(rest);
     SubstepLoad load;
     for (int k = 1; k <= increments + 1; ++k) {
         load.top_start = start + (top - start) * std::min(k - 1, increments) / increments;
         load.top_end = start + (top - start) * std::min(k, increments) / increments;
         try {
-            stepper.substep(s, quasi_static, load);
+            body.substep(s, quasi_static, load);
         } catch (const ContactSolveError& e) {
             throw std::invalid_argument(
                 std::string("initial_state = static: the load path's contact solve failed (") +
@@ -93,12 +106,12 @@ static State quasi_static_path(Stepper& stepper, double top, double start = 0) {
 // clamp's displacement, and the scale that makes the reaction equal the force is one
 // division. An initial gap is then closed by a rigid shift, which strains nothing.
 void Simulation::static_initial_state(double top, double force) {
-    const SceneParameters& p = stepper_->parameters();
+    const SceneParameters& p = body_->parameters();
     if (!p.force_control) {
         const double time = state_.time;
         // A top pressed below the gap touches: close the gap rigidly first (above).
         const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
-        state_ = quasi_static_path(*stepper_, top, start);
+        state_ = quasi_static_path(*body_, top, start);
         state_.time = time;
         return;
     }
@@ -110,6 +123,7 @@ void Simulation::static_initial_state(double top, double force) {
     SceneParameters clamped = p;
     clamped.force_control = false;
     clamped.initial_gap = 0;
+    clamped.modes = 0;  // force control is the full body's alone (check_parameters)
     Stepper path_stepper(clamped);
     const double probe = -1e-4 * p.height;
     const State s = quasi_static_path(path_stepper, probe);
@@ -135,25 +149,28 @@ void Simulation::static_initial_state(double top, double force) {
 // that would hold a touching node where it is, max(0, (A u)_y), and no friction. Nodes with a
 // normal force are active, and at rest none slips. The top reactions are A u on the top rows.
 void Simulation::initial_reactions() {
-    const Discretization& d = stepper_->discretization();
-    const SceneParameters& p = stepper_->parameters();
-    d.remove_translation(state_.u, relative_);
-    product_.noalias() = d.A * relative_;
-    const Eigen::Index nc = stepper_->num_contact_nodes();
+    const Discretization& d = body_->discretization();
+    const SceneParameters& p = body_->parameters();
+    State full;
+    body_->to_full(state_, full);
+    Eigen::VectorXd relative, product;
+    d.remove_translation(full.u, relative);
+    product.noalias() = d.A * relative;
+    const Eigen::Index nc = body_->num_contact_nodes();
     const bool multipliers = p.static_initial_state;
     Observables o;
     for (Eigen::Index k = 0; k < nc; ++k) {
         const size_t i = static_cast<size_t>(k);
         const int node = d.mesh.contact_nodes[i];
         const double share = d.mesh.edge_share(i);
-        const double gap = p.initial_gap + state_.u[dof_y(node)];
+        const double gap = p.initial_gap + full.u[dof_y(node)];
         const bool touching = gap <= 0;
         double normal = 0, friction = 0;
         if (multipliers) {
             normal = -state_.lambda[k];
             if (state_.lambda.size() == 2 * nc) friction = state_.lambda[nc + k];
         } else if (touching) {
-            normal = std::max(0.0, product_[dof_y(node)]);
+            normal = std::max(0.0, product[dof_y(node)]);
         }
         edge_.pressure[k] = normal / share;
         edge_.friction[k] = friction / share;
@@ -169,7 +186,7 @@ void Simulation::initial_reactions() {
         }
     }
     for (int dof : d.top_dofs)
-        (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product_[dof];
+        (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product[dof];
     observables_ = o;
     energies_current_ = false;
 }
@@ -177,7 +194,7 @@ void Simulation::initial_reactions() {
 int Simulation::substeps_for(double h) const {
     // The relative slack keeps h = 25 * internal_step at 25 substeps despite round-off, and
     // despite masters that add up time and send steps a few 1e-12 too long.
-    const double ratio = h / stepper_->parameters().internal_step;
+    const double ratio = h / body_->parameters().internal_step;
     if (!(ratio <= max_substeps_per_step)) {
         std::ostringstream msg;
         msg << "communication step " << h << " needs " << ratio << " substeps of internal_step "
@@ -205,13 +222,13 @@ void Simulation::do_step(double h, const StepInputs& in) {
     stats.substeps = n;
     stats.smallest_substep = dt;
     nominal_substep_ = dt;
-    const Mesh& mesh = stepper_->discretization().mesh;
+    const Mesh& mesh = body_->discretization().mesh;
     const Observables saved_observables = observables_;
     edge_sum_N_.setZero();
     edge_sum_T_.setZero();
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
-        if (!stepper_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
+        if (!body_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
         for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
         state_.time = t0 + h;  // no drift from summing substeps
 
@@ -245,25 +262,18 @@ void Simulation::do_step(double h, const StepInputs& in) {
 // The edge after a successful step of n nominal substeps: the averaged densities, and the
 // last substep's slip velocities and states.
 void Simulation::update_edge(int substeps) {
-    const Mesh& mesh = stepper_->discretization().mesh;
-    const ContactSnapshot& c = stepper_->last_contact();
+    const Mesh& mesh = body_->discretization().mesh;
+    const ContactSnapshot& c = body_->last_contact();
     const Eigen::Index nc = edge_.x.size();
     for (Eigen::Index i = 0; i < nc; ++i) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
-        edge_.gap[i] = stepper_->parameters().initial_gap +
-                       state_.u[dof_y(mesh.contact_nodes[static_cast<size_t>(i)])];
+        edge_.gap[i] = body_->parameters().initial_gap +
+                       body_->contact_height(state_, static_cast<int>(i));
     }
     edge_.slip_velocity = c.slip_velocity;
     edge_.state = c.state;
-}
-
-double Simulation::plate_kinetic_energy(const State& s) const {
-    const Discretization& d = stepper_->discretization();
-    if (d.plate_index < 0) return 0;
-    const double v = s.v[d.top_y_dof()];
-    return 0.5 * d.plate_mass * v * v;
 }
 
 void Simulation::check_finite(const Observables& o) const {
@@ -281,8 +291,7 @@ void Simulation::check_finite(const Observables& o) const {
 }
 
 void Simulation::check_plausible() {
-    const SceneParameters& p = stepper_->parameters();
-    const Discretization& d = stepper_->discretization();
+    const SceneParameters& p = body_->parameters();
     const double energy = observables().energy;
     const Works& w = works_;
     const double initial = initial_energy_;
@@ -313,7 +322,7 @@ void Simulation::check_plausible() {
     }
     // The top edge's travel: below the foundation the body would be compressed to nothing
     // (nothing sensible follows); beyond the body's height either way, a warning.
-    const double top = state_.u[d.top_y_dof()];
+    const double top = body_->top_position(state_);
     if (!(top > -(p.height + p.initial_gap))) {
         std::ostringstream msg;
         msg << "at t = " << state_.time << " the top edge is at top_position = " << top
@@ -347,25 +356,11 @@ void Simulation::check_plausible() {
 // that jump puts in (the clamped dofs move at once, the free ones not at all) is the clamp's
 // work, so that the balance closes across held steps too.
 void Simulation::move_clamp(double top, double rate) {
-    const Discretization& d = stepper_->discretization();
-    const bool moves = std::any_of(d.mesh.top_nodes.begin(), d.mesh.top_nodes.end(), [&](int n) {
-        return state_.u[dof_y(n)] != top || state_.v[dof_y(n)] != rate;
-    });
-    if (!moves) return;
+    if (body_->top_position(state_) == top && body_->top_velocity(state_) == rate) return;
     const double before = energy(state_);
-    for (int node : d.mesh.top_nodes) {
-        state_.u[dof_y(node)] = top;
-        state_.v[dof_y(node)] = rate;
-    }
+    body_->set_clamp(state_, top, rate);
     works_.clamp += energy(state_) - before;
     energies_current_ = false;
-}
-
-std::pair<double, double> Simulation::kinetic_and_strain_energy(const State& s) {
-    const Discretization& d = stepper_->discretization();
-    product_.noalias() = d.M * s.v;
-    const double kinetic = 0.5 * s.v.dot(product_) + plate_kinetic_energy(s);
-    return {kinetic, d.strain_energy(s.u)};
 }
 
 double Simulation::energy(const State& s) {
@@ -385,12 +380,12 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     lambda_before_ = state_.lambda;
     SubstepReport r;
     try {
-        r = stepper_->substep(state_, dt, load);
+        r = body_->substep(state_, dt, load);
     } catch (const ContactSolveError& e) {
         state_.lambda = lambda_before_;  // the substep changed nothing else
         const double half = 0.5 * dt;
         // At most 20 halvings (a millionth of the substep), whatever min_internal_step says.
-        if (half < stepper_->parameters().min_internal_step || weight < 0x1p-19)
+        if (half < body_->parameters().min_internal_step || weight < 0x1p-19)
             fail_contact(e, s0, dt, sums);
         StepStatistics& stats = sums.stats;
         ++stats.refinements;
@@ -400,7 +395,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
         return;
     }
     works_ += r.work;
-    const ContactSnapshot& c = stepper_->last_contact();
+    const ContactSnapshot& c = body_->last_contact();
     edge_sum_N_ += weight * c.lambda_N;
     edge_sum_T_ += weight * c.lambda_T;
     Observables& avg = sums.avg;
@@ -427,7 +422,7 @@ void Simulation::warn_refinements(const StepStatistics& stats) {
     if (stats.refinements < refinement_warning_count ||
         stats.refinements < refinement_warning_share * stats.substeps)
         return;
-    const SceneParameters& p = stepper_->parameters();
+    const SceneParameters& p = body_->parameters();
     std::ostringstream msg;
     msg << "step to t = " << state_.time << ": " << stats.refinements << " substep halvings for "
         << stats.substeps << " substeps of " << nominal_substep_ << " s (smallest substep "
@@ -446,7 +441,7 @@ void Simulation::warn_refinements(const StepStatistics& stats) {
 }
 
 std::string Simulation::growth_advice() const {
-    const SceneParameters& p = stepper_->parameters();
+    const SceneParameters& p = body_->parameters();
     std::ostringstream msg;
     msg << ". What to change:";
     const double wedge = wedging_friction(p);
@@ -472,7 +467,7 @@ std::string Simulation::growth_advice() const {
 // the tangential mass removed too (redistributed_both) it can have several solutions.
 void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
                               const StepSums& sums) const {
-    const SceneParameters& p = stepper_->parameters();
+    const SceneParameters& p = body_->parameters();
     const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
     std::ostringstream msg;
     msg << "contact solve failed at t = " << state_.time << " (" << s0
@@ -481,7 +476,7 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
     for (double size = 0.5 * nominal_substep_; size >= dt; size *= 0.5) msg << ", " << size;
     msg << " s (min_internal_step = " << p.min_internal_step << " s); at the last solved "
         << "substep of this step " << sums.avg.active_contact_nodes << " of "
-        << stepper_->num_contact_nodes() << " contact nodes were in contact, "
+        << body_->num_contact_nodes() << " contact nodes were in contact, "
         << sums.avg.slipping_contact_nodes << " slipping. " << e.what() << ". ";
     if (p.friction_coefficient > c_over_b) {
         msg << "F exceeds c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b
@@ -499,11 +494,8 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
 
 void Simulation::restore(const SimulationSnapshot& snapshot) {
     const State& s = snapshot.state;
-    const Eigen::Index dofs = stepper_->discretization().mesh.num_dofs();
-    const Eigen::Index nc = stepper_->num_contact_nodes();
-    if (s.u.size() != dofs || s.v.size() != dofs ||
-        (s.lambda.size() != nc && s.lambda.size() != 2 * nc) || s.sticking.size() != nc)
-        throw std::invalid_argument("state does not fit this mesh");
+    const Eigen::Index nc = body_->num_contact_nodes();
+    if (!body_->fits(s)) throw std::invalid_argument("state does not fit this body");
     const EdgeSnapshot& e = snapshot.edge;
     if (e.pressure.size() != nc || e.friction.size() != nc || e.slip_velocity.size() != nc ||
         e.gap.size() != nc || e.state.size() != nc)
@@ -511,7 +503,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
             throw std::invalid_argument("cached substep sizes must be finite and > 0");
-    stepper_->set_cached_substeps(snapshot.factor_substeps);
+    body_->set_cached_substeps(snapshot.factor_substeps);
     state_ = s;
     works_ = snapshot.works;
     initial_energy_ = snapshot.initial_energy;
@@ -536,9 +528,8 @@ const Observables& Simulation::observables() {
         observables_.normal_contact_work = works_.normal_contact;
         observables_.friction_dissipation = works_.friction_dissipation;
         observables_.foundation_work = works_.foundation;
-        const int top_y = stepper_->discretization().top_y_dof();
-        observables_.top_position = state_.u[top_y];
-        observables_.top_velocity = state_.v[top_y];
+        observables_.top_position = body_->top_position(state_);
+        observables_.top_velocity = body_->top_velocity(state_);
         energies_current_ = true;
     }
     return observables_;

@@ -6,6 +6,7 @@
 #include <vector>
 #include <utility>
 
+#include "body.hpp"
 #include "stepper.hpp"
 
 namespace contactbody {
@@ -146,13 +147,17 @@ public:
     const Observables& observables();  // energies computed here: once per step (checked finite)
     double time() const { return state_.time; }
     const State& state() const { return state_; }
-    Stepper& stepper() { return *stepper_; }
-    void set_friction_coefficient(double friction) { stepper_->set_friction_coefficient(friction); }
+    // The full body (modes = 0) or the reduced one.
+    Body& body() { return *body_; }
+    const Body& body() const { return *body_; }
+    void set_friction_coefficient(double friction) { body_->set_friction_coefficient(friction); }
+    // The state on every dof (the reduced body's expanded): what field output writes.
+    void full_state(State& out) const { body_->to_full(state_, out); }
     // Substeps per step for a step of size h.
     int substeps_for(double h) const;
 
     SimulationSnapshot snapshot() const {
-        return {state_, works_, initial_energy_, observables_, stepper_->cached_substeps(), edge_};
+        return {state_, works_, initial_energy_, observables_, body_->cached_substeps(), edge_};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -165,7 +170,7 @@ public:
     std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
 
 private:
-    Simulation(std::unique_ptr<Stepper> stepper, double initial_top_displacement,
+    Simulation(std::unique_ptr<Body> body, double initial_top_displacement,
                double start_time, double initial_top_force, double initial_foundation_velocity);
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
@@ -182,11 +187,12 @@ private:
     std::string growth_advice() const;              // what to change when E runs away
     void warn_refinements(const StepStatistics& stats);  // halvings piled up in the step
     void move_clamp(double top, double rate);
-    double energy(const State& s);  // E of a state (uses product_)
-    std::pair<double, double> kinetic_and_strain_energy(const State& s);  // (uses product_)
-    double plate_kinetic_energy(const State& s) const;  // force control: 1/2 m_p v_top^2
+    double energy(const State& s);  // E of a state
+    std::pair<double, double> kinetic_and_strain_energy(const State& s) {
+        return body_->kinetic_and_strain_energy(s);
+    }
 
-    std::unique_ptr<Stepper> stepper_;  // owned by pointer: restart hands it on
+    std::unique_ptr<Body> body_;  // owned by pointer: restart hands it on
     State state_, saved_;
     Works works_;  // since t0
     // E(0), kept: rebuilt from the balance (E - works) it is round-off where E is 1e15-1e17
@@ -196,7 +202,6 @@ private:
     Observables observables_;
     StepStatistics statistics_;
     bool energies_current_ = false;
-    Eigen::VectorXd product_, relative_;
     Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
     Eigen::VectorXd edge_sum_N_, edge_sum_T_;  // multipliers summed over the step's substeps
     EdgeSnapshot edge_;

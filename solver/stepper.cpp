@@ -77,6 +77,7 @@ void Stepper::start_run() {
     const Eigen::Index nf = disc_.expand.cols();
     const Eigen::Index nc = num_contact_nodes();
     relative_.resize(disc_.mesh.num_dofs());
+    product_.resize(disc_.mesh.num_dofs());
     w_.resize(disc_.mesh.num_dofs());
     du_.resize(disc_.mesh.num_dofs());
     C_du_.resize(disc_.mesh.num_dofs());
@@ -100,7 +101,40 @@ void Stepper::restart(const SceneParameters& params) {
 
 Stepper::~Stepper() = default;
 
+std::pair<double, double> Stepper::kinetic_and_strain_energy(const State& s) {
+    product_.noalias() = disc_.M * s.v;
+    double kinetic = 0.5 * s.v.dot(product_);
+    if (disc_.plate_index >= 0) {  // the plate's own: 1/2 m_p v_top^2
+        const double v = s.v[disc_.top_y_dof()];
+        kinetic += 0.5 * disc_.plate_mass * v * v;
+    }
+    return {kinetic, disc_.strain_energy(s.u)};
+}
+
+bool Stepper::set_clamp(State& s, double top, double rate) const {
+    const std::vector<int>& nodes = disc_.mesh.top_nodes;
+    const bool moves = std::any_of(nodes.begin(), nodes.end(), [&](int n) {
+        return s.u[dof_y(n)] != top || s.v[dof_y(n)] != rate;
+    });
+    for (int node : nodes) {
+        s.u[dof_y(node)] = top;
+        s.v[dof_y(node)] = rate;
+    }
+    return moves;
+}
+
+bool Stepper::fits(const State& s) const {
+    const Eigen::Index dofs = disc_.mesh.num_dofs(), nc = num_contact_nodes();
+    return s.u.size() == dofs && s.v.size() == dofs &&
+           (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
+}
+
 State Stepper::initial_state(double top_displacement) const {
+    return paper_initial_state(disc_, params_, top_displacement);
+}
+
+State Stepper::paper_initial_state(const Discretization& disc_, const SceneParameters& params_,
+                                   double top_displacement) {
     State s;
     const Mesh& mesh = disc_.mesh;
     s.u.setZero(mesh.num_dofs());
@@ -109,9 +143,9 @@ State Stepper::initial_state(double top_displacement) const {
         s.u[dof_y(n)] = top_displacement * mesh.point(n).y / mesh.height;
     for (int dof : disc_.moving_dofs)
         s.v[dof] = dof % 2 == 0 ? params_.initial_velocity_x : params_.initial_velocity_y;
-    s.lambda.setZero(params_.friction_coefficient > 0 ? 2 * num_contact_nodes()
-                                                      : num_contact_nodes());
-    s.sticking.setZero(num_contact_nodes());
+    const Eigen::Index nc = static_cast<Eigen::Index>(disc_.contact_x.size());
+    s.lambda.setZero(params_.friction_coefficient > 0 ? 2 * nc : nc);
+    s.sticking.setZero(nc);
     return s;
 }
 
@@ -310,31 +344,23 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     }
     if (d.plate_index >= 0) report.work.clamp -= load.top_force * 2 * w_free_[d.plate_index];
 
+    // The edge: the contact law's quantities on u^{k+1/2} (for tests), then what both
+    // steppers report.
+    const auto node_y = [&](int i) { return dof_y(d.mesh.contact_nodes[static_cast<size_t>(i)]); };
+    const auto node_x = [&](int i) { return dof_x(d.mesh.contact_nodes[static_cast<size_t>(i)]); };
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
     snapshot_.slip.setZero(nc);
-    snapshot_.slip_velocity.resize(nc);  // no reallocation once sized
-    snapshot_.state.resize(nc);
-    snapshot_.lambda_N = s.lambda.head(nc);
-    snapshot_.lambda_T.resize(nc);  // no reallocation once sized
-    if (friction) snapshot_.lambda_T = s.lambda.tail(nc);
-    else snapshot_.lambda_T.setZero();
     for (int i = 0; i < nc; ++i) {
-        const int node = d.mesh.contact_nodes[i];
-        const double uN_old = -s.u[dof_y(node)], duN = -2 * w_[dof_y(node)];
-        const double dux = 2 * w_[dof_x(node)];
-        snapshot_.normal_displacement[i] = uN_old + 0.5 * duN;
+        const double uN_old = -s.u[node_y(i)];
+        snapshot_.normal_displacement[i] = uN_old - w_[node_y(i)];
         snapshot_.gap_limit[i] += uN_old;
-        if (friction) snapshot_.slip[i] = 0.5 * dux - problem_.slip_origin[i];
-        const double foundation_step = load.foundation_velocity * dt;
-        snapshot_.slip_velocity[i] = (dux - foundation_step) / dt;
-        snapshot_.state[i] = static_cast<signed char>(add_node_contact(
-            report, s.sticking[i], snapshot_.lambda_N[i], snapshot_.lambda_T[i], uN_old, duN, dux,
-            foundation_step, params_.initial_gap, friction, touching,
-            touching ? solver_.status()[i] : NodeStatus::open));
+        if (friction) snapshot_.slip[i] = w_[node_x(i)] - problem_.slip_origin[i];
     }
-    report.corner_lambda_N = snapshot_.lambda_N[0];
-    report.corner_lambda_T = snapshot_.lambda_T[0];
+    record_contact(
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        touching, solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
+        [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "body.hpp"
 #include "contact_solver.hpp"
 #include "discretization.hpp"
 
@@ -139,46 +140,87 @@ int add_node_contact(SubstepReport& report, double& sticking, double lN, double 
                      double duN, double dux, double foundation_step, double initial_gap,
                      bool friction, bool touching, NodeStatus status);
 
-class Stepper {
+// After a substep, what both steppers report of the edge: the snapshot's multipliers, slip
+// velocities and node states, and each node's share of the report (add_node_contact), given
+// each node's u_N^k, uN_old(i), and its increments over the substep, duN(i) and dux(i).
+// The snapshot's vectors are sized once (the substep allocates nothing after the first).
+template <class NormalOld, class NormalStep, class TangentialStep>
+void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::VectorXd& sticking,
+                    const Eigen::VectorXd& lambda, double dt, double foundation_velocity,
+                    double initial_gap, bool touching,
+                    const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
+                    NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& dux) {
+    const Eigen::Index nc = sticking.size();
+    const bool friction = lambda.size() == 2 * nc;
+    snapshot.slip_velocity.resize(nc);
+    snapshot.state.resize(nc);
+    snapshot.lambda_N = lambda.head(nc);
+    snapshot.lambda_T.resize(nc);
+    if (friction) snapshot.lambda_T = lambda.tail(nc);
+    else snapshot.lambda_T.setZero();
+    const double foundation_step = foundation_velocity * dt;
+    for (int i = 0; i < static_cast<int>(nc); ++i) {
+        const double dx = dux(i);
+        snapshot.slip_velocity[i] = (dx - foundation_step) / dt;
+        snapshot.state[i] = static_cast<signed char>(add_node_contact(
+            report, sticking[i], snapshot.lambda_N[i], snapshot.lambda_T[i], uN_old(i), duN(i), dx,
+            foundation_step, initial_gap, friction, touching,
+            touching ? status[i] : NodeStatus::open));
+    }
+    report.corner_lambda_N = snapshot.lambda_N[0];
+    report.corner_lambda_T = snapshot.lambda_T[0];
+}
+
+// The full body: every dof of the mesh is a coordinate of its State.
+class Stepper : public Body {
 public:
     explicit Stepper(const SceneParameters& params);
-    ~Stepper();
+    ~Stepper() override;
 
     // Starts over with new parameters of the same discretization (same_discretization): the
     // stepper is then as if constructed from them, but keeps its discretization and its
     // factors, which a substep of exactly the same size takes instead of refactoring. The
     // results are the same bits as a new stepper's (a factor depends only on the
     // discretization and its size). Throws std::invalid_argument for invalid parameters.
-    void restart(const SceneParameters& params);
+    void restart(const SceneParameters& params) override;
 
-    const Discretization& discretization() const { return disc_; }
-    const SceneParameters& parameters() const { return params_; }
-    int num_contact_nodes() const { return static_cast<int>(disc_.contact_x.size()); }
+    const Discretization& discretization() const override { return disc_; }
+    const SceneParameters& parameters() const override { return params_; }
 
     // The paper's initial state: u_x = 0, u_y = top * y / H, and v = the initial velocity on
     // the moving dofs (0 unless initial_velocity_x, _y are set).
-    State initial_state(double top_displacement) const;
+    State initial_state(double top_displacement) const override;
+    static State paper_initial_state(const Discretization& d, const SceneParameters& p,
+                                     double top_displacement);
+    State from_full(const State& full) const override { return full; }
+    void to_full(const State& s, State& full) const override { full = s; }
     // Friction coefficient is tunable between substeps (F = 0 drops the tangential unknowns).
-    void set_friction_coefficient(double friction);
+    void set_friction_coefficient(double friction) override;
 
-    // Advances s by one substep of size dt. Throws ContactSolveError if the contact problem
-    // cannot be solved to the tolerance; s is then unchanged but for lambda.
-    SubstepReport substep(State& s, double dt, const SubstepLoad& load);
+    SubstepReport substep(State& s, double dt, const SubstepLoad& load) override;
+    const ContactSnapshot& last_contact() const override { return snapshot_; }
 
-    const ContactSnapshot& last_contact() const { return snapshot_; }
-    // The contact problem of the last substep (for studying its solution set: W, a, the
-    // gaps, slip origins and friction law it was solved with). Valid until the next substep.
-    const ContactProblem& last_contact_problem() const { return problem_; }
-    // Substep sizes of the cached factors, most recent first. A substep reuses a factor whose
-    // size is within 1e-14 of its own, so results depend on these sizes to the last bit:
-    // they are part of the state, and restoring them rebuilds exactly those factors.
-    std::vector<double> cached_substeps() const;
-    void set_cached_substeps(const std::vector<double>& sizes);
+    std::pair<double, double> kinetic_and_strain_energy(const State& s) override;
+    double top_position(const State& s) const override { return s.u[disc_.top_y_dof()]; }
+    double top_velocity(const State& s) const override { return s.v[disc_.top_y_dof()]; }
+    double contact_height(const State& s, int node) const override {
+        return s.u[dof_y(disc_.mesh.contact_nodes[static_cast<size_t>(node)])];
+    }
+    bool set_clamp(State& s, double top, double rate) const override;
+    bool fits(const State& s) const override;
+
+    const ContactProblem& last_contact_problem() const override { return problem_; }
+    // Substep sizes of the cached factors, most recent first (Body::cached_substeps):
+    // restoring them rebuilds exactly those factors.
+    std::vector<double> cached_substeps() const override;
+    void set_cached_substeps(const std::vector<double>& sizes) override;
     static constexpr size_t factor_cache_size = 2;
-    int factorizations() const { return factorizations_; }  // over the stepper's life
+    size_t operator_cache_size() const override { return factor_cache_size; }
+    int factorizations() const override { return factorizations_; }  // over the stepper's life
+    const char* operator_name() const override { return "factorized 4/dt^2 M + A"; }
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
-    ContactSolverOptions& contact_options() { return options_; }
+    ContactSolverOptions& contact_options() override { return options_; }
     const ContactSolver& contact_solver() const { return solver_; }
 
 private:
@@ -214,7 +256,7 @@ private:
     // Workspace, sized once.
     // w: u^{k+1/2} - u^k (w_free_ the unknowns'), relative_: u minus node 0's translation,
     // clamped_half_: the clamped dofs' w.
-    Eigen::VectorXd relative_, rhs_, w_free_, w_, clamped_half_, du_, C_du_;
+    Eigen::VectorXd relative_, rhs_, w_free_, w_, clamped_half_, du_, C_du_, product_;
 };
 
 }  // namespace contactbody

@@ -71,7 +71,7 @@ TEST(Simulation, FailedContactSolveRestoresTheStepStart) {
     sim.do_step(1e-4, in);
     const State before = sim.state();
     const double work = sim.observables().friction_work;
-    ContactSolverOptions& options = sim.stepper().contact_options();
+    ContactSolverOptions& options = sim.body().contact_options();
     options.max_iterations = 0;  // neither Newton nor its fallback can succeed
     options.max_sweeps = 0;
     try {
@@ -99,7 +99,7 @@ TEST(Simulation, GaussSeidelTakesOverWhenNewtonFails) {
     p.damping_stiffness = 4e-6;
     Simulation newton(p, -2.5e-5), fallback(p, -2.5e-5);
     const StepInputs in{20, -2.5e-5, 0, 0};
-    fallback.stepper().contact_options().max_iterations = 0;  // Newton gives up at once
+    fallback.body().contact_options().max_iterations = 0;  // Newton gives up at once
     for (int k = 0; k < 5; ++k) {
         newton.do_step(1e-4, in);
         fallback.do_step(1e-4, in);
@@ -137,7 +137,7 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
     in.foundation_velocity = 20;
     in.top_displacement = -2.5e-5;
     for (int k = 0; k < 3; ++k) sim.do_step(1e-4, in);
-    EXPECT_EQ(sim.stepper().factorizations(), 1);
+    EXPECT_EQ(sim.body().factorizations(), 1);
 
     SceneParameters q = p;
     q.friction_coefficient = 0.3;
@@ -149,7 +149,7 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
         sim.do_step(1e-4, in);
         fresh.do_step(1e-4, in);
     }
-    EXPECT_EQ(sim.stepper().factorizations(), 1);  // the kept one
+    EXPECT_EQ(sim.body().factorizations(), 1);  // the kept one
     EXPECT_EQ(sim.state().u, fresh.state().u);
     EXPECT_EQ(sim.state().v, fresh.state().v);
     EXPECT_EQ(sim.state().lambda, fresh.state().lambda);
@@ -157,7 +157,7 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
 
     SceneParameters other = q;
     other.nx = 10;
-    EXPECT_THROW(sim.stepper().restart(other), std::logic_error);
+    EXPECT_THROW(sim.body().restart(other), std::logic_error);
 }
 
 // Eigen's dense products block by the CPU's cache sizes, and the blocks decide the rounding:

@@ -117,7 +117,7 @@ TEST(Variables, SameDiscretizationFollowsTheDeclaration) {
             mine = kept;
         },
         other);
-    EXPECT_EQ(rebuilding, 12);  // width ... top_mass: what discretize reads
+    EXPECT_EQ(rebuilding, 13);  // width ... top_mass: what discretize reads; modes: the basis
     EXPECT_GE(keeping, 13);
 }
 

@@ -1,0 +1,185 @@
+"""The reduced body through the FMU (modes > 0, docs/reduced_body.md): with every finite mode it
+is the full body; with few its own energy balance closes; its state saves, restores and
+serializes; a reset keeps its basis; its field output is its state on every node; what it
+cannot do is refused by name."""
+import pathlib
+import sys
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+from fmpy.fmi1 import FMICallException
+
+from conftest import Instance
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
+import fields  # noqa: E402
+
+H = 1e-4
+# Friction, Rayleigh damping, an initial velocity, the clamp pressing on: nothing is trivial.
+SCENE = dict(nx=6, ny=6, friction_coefficient=0.3, damping_mass=20.0, damping_stiffness=4e-6,
+             initial_velocity_x=0.5, internal_step=2e-6, foundation_velocity=20.0)
+REALS = ["energy", "kinetic_energy", "strain_energy", "friction_work", "normal_force",
+         "friction_force", "corner_pressure", "corner_friction", "top_reaction_x",
+         "top_reaction_y", "max_penetration", "damping_work", "clamp_work",
+         "normal_contact_work", "friction_dissipation", "foundation_work", "top_position",
+         "top_velocity"]
+
+
+def finite_modes(nx, ny, variant):
+    """Free dofs (every node but the top row, x and y) less the massless ones: the bottom
+    edge's normal dofs where M_r redistributes (1, 2, 4), and its tangential ones too (2)."""
+    free = 2 * (nx + 1) * ny
+    massless = {0: 0, 1: 1, 2: 2, 3: 0, 4: 1}[variant] * (nx + 1)
+    return free - massless
+
+
+def start(md, unzipped, values, name="reduced"):
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    types = {v.name: v.type for v in md.modelVariables}
+    inst = Instance(md, unzipped, name)
+    inst.setDebugLogging(True, ["logEvents"])
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    for k, v in values.items():
+        (inst.setReal if types[k] == "Real" else inst.setInteger)([vr[k]], [v])
+    inst.exitInitializationMode()
+    return inst, vr
+
+
+def run(inst, vr, k0, k1):
+    """Steps k0..k1-1 of H, the clamp pressing on at 1 mm/s and by a jump each step; the
+    outputs."""
+    rows = []
+    for k in range(k0, k1):
+        inst.setReal([vr["top_displacement"]], [-2.5e-5 - 2e-7 * k])
+        inst.setRealInputDerivatives([vr["top_displacement"]], [1], [-1e-3])
+        inst.doStep(k * H, H)
+        rows.append(inst.getReal([vr[n] for n in REALS]))
+    return np.array(rows)
+
+
+@pytest.mark.parametrize("variant", [1, 2, 4])
+def test_every_mode_gives_the_full_body(model_description, unzipped, variant):
+    """500 substeps (10 steps of 50): every real output equals the full body's to 1e-10 of
+    its largest value. Variants 0 and 3 put mass on the contact dofs, where the full body itself
+    turns a 1e-14 change into one of order one (tests_cpp/test_reduced_stepper.cpp)."""
+    scene = {**SCENE, "mass_matrix": variant}
+    full, vr = start(model_description, unzipped, scene, "full")
+    reduced, _ = start(model_description, unzipped,
+                       {**scene, "modes": finite_modes(6, 6, variant)})
+    expected, got = run(full, vr, 0, 10), run(reduced, vr, 0, 10)
+    full.close()
+    reduced.close()
+    assert np.abs(expected).max(axis=0).min() > 0  # every output moved
+    # Each output's largest value; max_penetration's is round-off where contact is imposed at
+    # the end of the step (variant 4): against the clamp's displacement there.
+    scale = np.abs(expected).max(axis=0)
+    scale[REALS.index("max_penetration")] = max(scale[REALS.index("max_penetration")], 2.5e-5)
+    worst = (np.abs(got - expected).max(axis=0) / scale).max()
+    assert worst <= 1e-10, dict(zip(REALS, np.abs(got - expected).max(axis=0) / scale))
+
+
+def test_more_modes_than_the_body_has_are_refused(model_description, unzipped):
+    count = finite_modes(6, 6, 1)
+    inst = Instance(model_description, unzipped)
+    vr = {v.name: v.valueReference for v in model_description.modelVariables}
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setInteger([vr["nx"], vr["ny"], vr["modes"]], [6, 6, count + 1])
+    with pytest.raises(FMICallException):
+        inst.exitInitializationMode()
+    assert any(f"has {count}" in m[2] or str(count) in m[2] for m in inst.messages), inst.messages
+    inst.close()
+
+
+def test_force_control_is_refused_by_name(model_description, unzipped):
+    inst = Instance(model_description, unzipped)
+    vr = {v.name: v.valueReference for v in model_description.modelVariables}
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setInteger([vr["modes"], vr["top_control"]], [8, 1])
+    with pytest.raises(FMICallException):
+        inst.exitInitializationMode()
+    assert any("needs top_control = displacement" in m[2] for m in inst.messages), inst.messages
+    inst.close()
+
+
+@pytest.mark.parametrize("variant", range(5))
+def test_energy_balance_closes_with_few_modes(model_description, unzipped, variant):
+    """8 modes, friction with a slip-rate law, damping: E - E(0) = clamp + normal_contact +
+    friction - damping to 1e-9 of the largest energy, every step."""
+    scene = {**SCENE, "mass_matrix": variant, "modes": 8, "stribeck_velocity": 0.5,
+             "static_friction_ratio": 1.5, "viscous_friction": 0.01}
+    inst, vr = start(model_description, unzipped, scene)
+    e0 = inst.getReal([vr["energy"]])[0]
+    rows = run(inst, vr, 0, 10)
+    inst.close()
+    col = {n: rows[:, i] for i, n in enumerate(REALS)}
+    balance = (col["energy"] - e0 - col["clamp_work"] - col["normal_contact_work"]
+               - col["friction_work"] + col["damping_work"])
+    assert col["normal_force"].max() > 0 and col["damping_work"][-1] > 0
+    assert np.abs(balance).max() <= 1e-9 * max(e0, col["energy"].max())
+
+
+def test_state_restores_and_serializes_bit_for_bit(model_description, unzipped):
+    inst, vr = start(model_description, unzipped, {**SCENE, "modes": 8})
+    run(inst, vr, 0, 3)
+    saved = inst.getFMUstate()
+    later = run(inst, vr, 3, 6)
+    inst.setFMUstate(saved)
+    assert np.array_equal(run(inst, vr, 3, 6), later)
+    serialized = inst.serializeFMUstate(saved)
+    inst.freeFMUstate(saved)
+    other, _ = start(model_description, unzipped, {**SCENE, "modes": 8}, "other")
+    state = other.deSerializeFMUstate(serialized)
+    other.setFMUstate(state)
+    assert np.array_equal(run(other, vr, 3, 6), later)
+    other.freeFMUstate(state)
+    other.close()
+    # A state of the reduced body does not fit the full body: refused, not misread.
+    full, _ = start(model_description, unzipped, SCENE, "full")
+    with pytest.raises(FMICallException):
+        full.setFMUstate(full.deSerializeFMUstate(serialized))
+    assert any("modes" in m[2] for m in full.messages), full.messages
+    full.close()
+    inst.close()
+
+
+def test_reset_keeps_the_basis(model_description, unzipped):
+    """The basis is built once: a reset and a rerun with other inputs and friction keep it
+    (the log says so) and give a fresh instance's bits."""
+    inst, vr = start(model_description, unzipped, {**SCENE, "modes": 8})
+    assert any("basis built" in m[2] for m in inst.messages), inst.messages
+    run(inst, vr, 0, 2)
+    inst.reset()  # every variable back to its start value: the scene is set again
+    inst.messages.clear()
+    types = {v.name: v.type for v in model_description.modelVariables}
+    changed = {"friction_coefficient": 0.2, "foundation_velocity": 5.0}
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    for k, v in {**SCENE, "modes": 8, **changed}.items():
+        (inst.setReal if types[k] == "Real" else inst.setInteger)([vr[k]], [v])
+    inst.exitInitializationMode()
+    assert any("basis kept from the last run" in m[2] for m in inst.messages), inst.messages
+    rerun = run(inst, vr, 0, 3)
+    fresh, _ = start(model_description, unzipped, {**SCENE, "modes": 8, **changed}, "fresh")
+    assert np.array_equal(run(fresh, vr, 0, 3), rerun)
+    fresh.close()
+    inst.close()
+
+
+def test_field_output_is_the_state_on_every_node(fmu_path, tmp_path):
+    """The .vtu files expand the reduced coordinates: their strain energy, computed from the
+    field alone, is the strain_energy output (the reduced strain energy is exactly
+    1/2 u^T A u of the expanded u)."""
+    scene = dict(nx=8, ny=8, mass_matrix=0, internal_step=1e-5, modes=10,
+                 result_directory=str(tmp_path), field_output_interval=2e-4)
+    result = simulate_fmu(fmu_path, stop_time=2e-3, output_interval=1e-4, start_values=scene)
+    snapshots = fields.read_collection(tmp_path / "contactbody.pvd")
+    assert len(snapshots) == 11
+    for t, path in snapshots:
+        points, triangles, data = fields.read_field(path)
+        k = int(np.argmin(np.abs(result["time"] - t)))
+        strain = fields.strain_energy(points, triangles, data["displacement"], 300e6, 150e6)
+        assert strain == pytest.approx(result["strain_energy"][k], rel=1e-9)

@@ -65,6 +65,21 @@ def test_study_table_is_bit_identical_to_points_run_alone(tmp_path):
     assert np.array_equal(r["energy"], saved["energy"])
 
 
+def test_modes_is_a_study_axis(tmp_path):
+    """The reduced body in a study: modes = 209 (every finite mode at nx = ny = 10) gives the
+    full body's series to 1e-10; 20 modes gives another series (the axis reaches the FMU)."""
+    study = small_study(modes=[0, 20, 209])
+    df = run_study(study, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False)
+    assert set(df["status"]) == {"ok"} and len(df) == 3
+    series = {p["modes"]: np.load(tmp_path / "series" / f"{study.point_id(p)}.npz")
+              for p in study.expand()}
+    for name in ("energy", "friction_force"):
+        full = series[0][name]
+        scale = np.abs(full).max()
+        assert np.abs(series[209][name] - full).max() <= 1e-10 * scale, name
+        assert np.abs(series[20][name] - full).max() > 1e-6 * scale, name
+
+
 def test_a_rerun_skips_the_points_already_in_the_table(tmp_path):
     study = small_study(friction_coefficient=[0.1, 0.4])
     first = run_study(study, tmp_path, fmu=FMU, workers=1, progress=False, dashboard=False)

@@ -119,9 +119,9 @@ constexpr double max_static_friction_ratio = 10;
 // Measured dry friction coefficients stay below about 3 (clean metals in vacuum excepted); a
 // hundred means a bond, not friction, and only stiffens the contact step.
 constexpr double max_friction_coefficient = 100;
-// The reduced body keeps its basis as dense columns (free dofs x modes): 4096 modes of an
-// nx = ny = 160 body are 1.7 GB.
-constexpr int max_reduced_modes = 4096;
+// The reduced body's modes: every mode of bodies up to 2000 free dofs (solved densely), at
+// most 500 of larger ones (modal_basis.hpp).
+constexpr int max_reduced_modes = 2000;
 // c_v |v| adds 1 to F at |v| = 1 / c_v: 100 s/m does so at 1 cm/s.
 constexpr double max_viscous_friction = 100;
 

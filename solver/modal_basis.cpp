@@ -59,28 +59,27 @@ int finite_mode_count(const Discretization& d) {
     return static_cast<int>(d.M_free.rows()) - massless;
 }
 
-ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit) {
-    const auto start = std::chrono::steady_clock::now();
-    if (d.plate_index >= 0)
-        throw std::invalid_argument(
-            "modes > 0 needs top_control = displacement: under force control the body and the "
-            "plate translate freely until contact, and the residual flexibility needs inertia "
-            "relief (not built)");
-    const int finite = finite_mode_count(d);
-    if (modes < 1 || modes > finite)
-        throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +
-                                    std::to_string(finite) + " finite modes");
-    const SparseMatrix& A = d.A_free;
-    const SparseMatrix& M = d.M_free;
+LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit) {
     const Eigen::Index n = A.rows();
-    ModalBasis basis;
-
-    // A^-1 applied to the columns of a dense matrix.
-    std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)> solve;
+    LowestModes out;
     Eigen::VectorXd mu;      // 1 / omega^2, descending
     Eigen::MatrixXd shapes;  // A-orthonormal: shapes^T A shapes = I
-    if (n <= dense_limit) {
-        basis.dense = true;
+    // Lanczos keeps 2m + 1 vectors and orthogonalizes against them: beyond a quarter of the
+    // modes it is a slower dense solve, and its work n (2m + 1)^2 per restart grows past
+    // minutes from a few hundred modes of a large body. So: dense for small bodies and for
+    // most of a body's modes up to max_dense_modes_dofs, Lanczos for at most
+    // max_lanczos_modes, and a clear refusal between.
+    const bool most = 4 * static_cast<Eigen::Index>(modes) > n;
+    if (!(n <= dense_limit || (most && n <= max_dense_modes_dofs)) &&
+        (most || modes > max_lanczos_modes))
+        throw std::invalid_argument(
+            "modes = " + std::to_string(modes) + " of a body of " + std::to_string(n) +
+            " dofs: the reduced body computes at most " + std::to_string(max_lanczos_modes) +
+            " modes, and at most a quarter of a body's modes, of bodies above " +
+            std::to_string(max_dense_modes_dofs) + " dofs (the eigensolver would take minutes); "
+            "use fewer modes, or modes = 0 for the full body");
+    if (n <= dense_limit || most) {
+        out.dense = true;
         const Eigen::MatrixXd Ad(A), Md(M);
         Eigen::LLT<Eigen::MatrixXd> llt(Ad);
         if (llt.info() != Eigen::Success)
@@ -90,7 +89,7 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
         // Ascending eigenvalues: the largest mu (lowest omega) last.
         mu = eig.eigenvalues().tail(modes).reverse();
         shapes = Li.transpose() * eig.eigenvectors().rightCols(modes).rowwise().reverse();
-        solve = [llt](const Eigen::MatrixXd& b) -> Eigen::MatrixXd { return llt.solve(b); };
+        out.solve = [llt](const Eigen::MatrixXd& b) -> Eigen::MatrixXd { return llt.solve(b); };
     } else {
         auto factor = std::make_shared<TrailingCholesky>(A, std::vector<int>{});
         InverseStiffnessMass op(*factor, M);
@@ -102,8 +101,8 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
             throw std::runtime_error("the eigensolver did not converge to " + std::to_string(modes) +
                                      " modes (" + std::to_string(eigs.num_iterations()) +
                                      " restarts): ask for fewer modes");
-        basis.eigensolver_iterations = static_cast<int>(eigs.num_iterations());
-        basis.operator_applications = static_cast<int>(eigs.num_operations());
+        out.iterations = static_cast<int>(eigs.num_iterations());
+        out.applications = static_cast<int>(eigs.num_operations());
         mu = eigs.eigenvalues();
         const Eigen::MatrixXd Y = eigs.eigenvectors();
         shapes.resize(n, modes);
@@ -113,7 +112,7 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
             factor->backward(column);
             shapes.col(j) = column;
         }
-        solve = [factor](const Eigen::MatrixXd& b) -> Eigen::MatrixXd {
+        out.solve = [factor](const Eigen::MatrixXd& b) -> Eigen::MatrixXd {
             Eigen::MatrixXd x(b.rows(), b.cols());
             Eigen::VectorXd column(b.rows());
             for (Eigen::Index j = 0; j < b.cols(); ++j) {
@@ -125,8 +124,31 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
     }
     for (Eigen::Index j = 0; j < mu.size(); ++j)
         if (!(mu[j] > 0)) throw std::runtime_error("a mode without mass: ask for fewer modes");
-    basis.omega2 = mu.cwiseInverse();
-    basis.modes = shapes * mu.cwiseSqrt().cwiseInverse().asDiagonal();  // modes^T M modes = I
+    out.omega2 = mu.cwiseInverse();
+    out.modes = shapes * mu.cwiseSqrt().cwiseInverse().asDiagonal();  // modes^T M modes = I
+    return out;
+}
+
+ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit) {
+    const auto start = std::chrono::steady_clock::now();
+    if (d.plate_index >= 0)
+        throw std::invalid_argument(
+            "modes > 0 needs top_control = displacement: under force control the body and the "
+            "plate translate freely until contact, and the residual flexibility needs inertia "
+            "relief (not built)");
+    const int finite = finite_mode_count(d);
+    if (modes < 1 || modes > finite)
+        throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +
+                                    std::to_string(finite) + " finite modes");
+    const Eigen::Index n = d.A_free.rows();
+    ModalBasis basis;
+    LowestModes lowest = lowest_modes(d.A_free, d.M_free, modes, dense_limit);
+    basis.dense = lowest.dense;
+    basis.eigensolver_iterations = lowest.iterations;
+    basis.operator_applications = lowest.applications;
+    basis.omega2 = std::move(lowest.omega2);
+    basis.modes = std::move(lowest.modes);
+    const auto& solve = lowest.solve;
 
     // Residual attachment modes of the contact unknowns.
     const ContactRows b = contact_rows(d);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 
 #include "discretization.hpp"
 
@@ -38,6 +39,22 @@ struct ModalBasis {
 // or force control (A_ff is then singular: the plate and body translate freely), and
 // std::runtime_error naming the cause when the eigensolver does not converge.
 ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit = 400);
+
+// The lowest `modes` modes of A x = omega^2 M x (A positive definite, M semi-definite),
+// ascending, mass-normalized, and A^-1 for the residual and static shapes that follow: dense
+// up to dense_limit dofs, else Lanczos on the CHOLMOD factor (as build_modal_basis).
+// Above these the eigensolver takes minutes (lowest_modes refuses): the most modes Lanczos is
+// asked for, and the largest body solved densely for more than a quarter of its modes.
+constexpr int max_lanczos_modes = 500;
+constexpr Eigen::Index max_dense_modes_dofs = 2000;
+struct LowestModes {
+    Eigen::VectorXd omega2;
+    Eigen::MatrixXd modes;
+    std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)> solve;  // A^-1 B for dense B
+    bool dense = false;
+    int iterations = 0, applications = 0;
+};
+LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit = 400);
 
 // Free dofs minus those without mass: the number of finite modes.
 int finite_mode_count(const Discretization& d);

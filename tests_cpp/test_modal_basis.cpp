@@ -128,4 +128,10 @@ TEST(ModalBasis, RefusesForceControlAndCountsOutOfRange) {
     EXPECT_THROW(build_modal_basis(d, finite_mode_count(d) + 1), std::invalid_argument);
     p.force_control = true;
     EXPECT_THROW(build_modal_basis(discretize(p), 3), std::invalid_argument);
+    // Counts the eigensolver would take minutes for (lowest_modes): refused before solving.
+    const Discretization large = discretize(scene(32, MassVariant::redistributed_normal));
+    ASSERT_GT(large.A_free.rows(), max_dense_modes_dofs);
+    EXPECT_THROW(build_modal_basis(large, max_lanczos_modes + 1), std::invalid_argument);
+    EXPECT_THROW(build_modal_basis(large, static_cast<int>(large.A_free.rows() / 4) + 1),
+                 std::invalid_argument);
 }

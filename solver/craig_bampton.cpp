@@ -1,0 +1,342 @@
+#include "craig_bampton.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "modal_basis.hpp"
+
+namespace contactbody {
+
+namespace {
+
+// The columns `positions` of an identity of n rows: a sparse selection.
+SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (size_t j = 0; j < positions.size(); ++j) t.emplace_back(positions[j], static_cast<int>(j), 1.0);
+    SparseMatrix P(n, static_cast<Eigen::Index>(positions.size()));
+    P.setFromTriplets(t.begin(), t.end());
+    return P;
+}
+
+}  // namespace
+
+CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int modes)
+    : params_(params), disc_(discretize(params)), modes_(modes) {
+    const auto start = std::chrono::steady_clock::now();
+    const Discretization& d = disc_;
+    if (d.plate_index >= 0)
+        throw std::invalid_argument("Craig-Bampton reduction needs top_control = displacement");
+    const Eigen::Index nf = d.A_free.rows();
+    const int nc = num_contact_nodes();
+    // The edge coordinates in the contact unknowns' order (y then x), the interior the rest.
+    const std::vector<int> edge = d.contact_unknowns();
+    std::vector<bool> on_edge(static_cast<size_t>(nf), false);
+    for (int p : edge) on_edge[static_cast<size_t>(p)] = true;
+    std::vector<int> interior;
+    for (int p = 0; p < nf; ++p)
+        if (!on_edge[static_cast<size_t>(p)]) interior.push_back(p);
+    const SparseMatrix Pi = selection(nf, interior), Pb = selection(nf, edge);
+    const SparseMatrix Aii = Pi.transpose() * d.A_free * Pi, Mii = Pi.transpose() * d.M_free * Pi;
+    const SparseMatrix Aib = Pi.transpose() * d.A_free * Pb;
+    const Eigen::Index ni = static_cast<Eigen::Index>(interior.size());
+    if (modes < 1 || modes > ni)
+        throw std::invalid_argument("Craig-Bampton: modes = " + std::to_string(modes) +
+                                    " is out of range: the interior has " + std::to_string(ni) + " dofs");
+    const LowestModes fixed = lowest_modes(Aii, Mii, modes);
+    highest_hz_ = std::sqrt(fixed.omega2.maxCoeff()) / (2 * M_PI);
+    const Eigen::MatrixXd constraint = -fixed.solve(Eigen::MatrixXd(Aib));  // ni x 2 n_c
+
+    const Eigen::Index nb = 2 * nc, n = modes + nb;
+    Eigen::MatrixXd interior_columns(ni, n);
+    interior_columns << fixed.modes, constraint;
+    T_ = Pi * interior_columns;
+    for (Eigen::Index j = 0; j < nb; ++j) T_(edge[static_cast<size_t>(j)], modes + j) = 1.0;
+
+    const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(ncl);
+    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.clamped_dofs[static_cast<size_t>(j)] % 2 == 1;
+    const Eigen::VectorXd Afc_e = d.A_free_clamped * e, Mfc_e = d.M_free_clamped * e;
+    lift_ = Pi * Eigen::VectorXd(-fixed.solve(Eigen::MatrixXd(Pi.transpose() * Afc_e)).col(0));
+
+    const Eigen::MatrixXd MT = d.M_free * T_, AT = d.A_free * T_;
+    mass_ = T_.transpose() * MT;
+    stiffness_ = T_.transpose() * AT;
+    mass_ = 0.5 * (mass_ + mass_.transpose()).eval();
+    stiffness_ = 0.5 * (stiffness_ + stiffness_.transpose()).eval();
+    stiffness_factor_.compute(stiffness_);
+    const Eigen::VectorXd& S = lift_;
+    const Eigen::VectorXd MS = d.M_free * S, AS = d.A_free * S;
+    m_s_ = T_.transpose() * MS;
+    m_c_ = T_.transpose() * Mfc_e;
+    a_s_ = T_.transpose() * AS;
+    a_c_ = T_.transpose() * Afc_e;
+    m_t_ = m_s_ + m_c_;
+    a_t_ = a_s_ + a_c_;
+    Eigen::VectorXd all_e = Eigen::VectorXd::Zero(d.mesh.num_dofs());
+    for (Eigen::Index j = 0; j < ncl; ++j) all_e[d.clamped_dofs[static_cast<size_t>(j)]] = e[j];
+    mu_ss_ = S.dot(MS);
+    mu_cs_ = S.dot(Mfc_e);
+    mu_cc_ = all_e.dot(d.M * all_e);
+    s_ss_ = S.dot(AS);
+    s_cs_ = S.dot(Afc_e);
+    e_cc_ = all_e.dot(d.A * all_e);
+
+    Bhat_.resize(nb, n);
+    Blift_.resize(nb);
+    for (int i = 0; i < nc; ++i) {  // N_i = -e_y(i), T_i = +e_x(i)
+        const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_x[static_cast<size_t>(i)];
+        Bhat_.row(i) = -T_.row(y);
+        Bhat_.row(nc + i) = T_.row(x);
+        Blift_[i] = -S[y];
+        Blift_[nc + i] = S[x];
+    }
+    Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
+    for (int dof : d.clamped_dofs) all_ex[dof] = dof % 2 == 0;
+    const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
+    Eigen::VectorXd M_fx(nf), A_fx(nf);
+    for (Eigen::Index j = 0; j < nf; ++j) {
+        M_fx[j] = M_ex[d.free_dofs[static_cast<size_t>(j)]];
+        A_fx[j] = A_ex[d.free_dofs[static_cast<size_t>(j)]];
+    }
+    clamp_x_.mass = T_.transpose() * M_fx;
+    clamp_x_.stiffness = T_.transpose() * A_fx;
+    clamp_x_.mass_lift = S.dot(M_fx);
+    clamp_x_.stiffness_lift = S.dot(A_fx);
+    clamp_x_.mass_top = all_e.dot(M_ex);
+    clamp_x_.stiffness_top = all_e.dot(A_ex);
+
+    problem_.a.resize(nb);
+    problem_.gap_limit.resize(nc);
+    problem_.slip_origin.resize(nc);
+    start_run();
+    setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void CraigBamptonStepper::start_run() {
+    damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * stiffness_;
+    options_ = ContactSolverOptions{};
+    options_.tolerance = params_.contact_tolerance;
+    solver_ = ContactSolver{};
+    snapshot_ = ContactSnapshot{};
+    problem_dt_ = -1;
+}
+
+void CraigBamptonStepper::restart(const SceneParameters& params) {
+    if (!same_discretization(params_, params))
+        throw std::logic_error("CraigBamptonStepper::restart: another discretization");
+    check_parameters(params);
+    params_ = params;
+    start_run();
+}
+
+State CraigBamptonStepper::from_full(const State& full) const {
+    const Discretization& d = disc_;
+    const int top_dof = d.clamped_dofs.back();
+    const Eigen::Index n = size(), nf = static_cast<Eigen::Index>(d.free_dofs.size());
+    State s;
+    s.u.resize(n + 2);
+    s.v.resize(n + 2);
+    s.u[n] = s.u[n + 1] = full.u[top_dof];
+    s.v[n] = s.v[n + 1] = full.v[top_dof];
+    Eigen::VectorXd u(nf), v(nf);
+    for (Eigen::Index j = 0; j < nf; ++j) {
+        u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - lift_[j] * s.u[n];
+        v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - lift_[j] * s.v[n];
+    }
+    s.u.head(n) = stiffness_factor_.solve(T_.transpose() * (d.A_free * u));
+    s.v.head(n) = stiffness_factor_.solve(T_.transpose() * (d.A_free * v));
+    s.lambda = full.lambda;
+    s.sticking = full.sticking;
+    s.time = full.time;
+    return s;
+}
+
+void CraigBamptonStepper::to_full(const State& s, State& full) const {
+    const Discretization& d = disc_;
+    const Eigen::Index n = size();
+    const Eigen::VectorXd u = T_ * s.u.head(n) + lift_ * s.u[n];
+    const Eigen::VectorXd v = T_ * s.v.head(n) + lift_ * s.v[n];
+    full.u.setZero(d.mesh.num_dofs());
+    full.v.setZero(d.mesh.num_dofs());
+    for (size_t j = 0; j < d.free_dofs.size(); ++j) {
+        full.u[d.free_dofs[j]] = u[static_cast<Eigen::Index>(j)];
+        full.v[d.free_dofs[j]] = v[static_cast<Eigen::Index>(j)];
+    }
+    for (int dof : d.clamped_dofs) {
+        full.u[dof] = dof % 2 == 1 ? s.u[n + 1] : 0.0;
+        full.v[dof] = dof % 2 == 1 ? s.v[n + 1] : 0.0;
+    }
+    full.lambda = s.lambda;
+    full.sticking = s.sticking;
+    full.time = s.time;
+}
+
+State CraigBamptonStepper::initial_state(double top_displacement) const {
+    return from_full(Stepper::paper_initial_state(disc_, params_, top_displacement));
+}
+
+std::pair<double, double> CraigBamptonStepper::kinetic_and_strain_energy(const State& s) {
+    const Eigen::Index n = size();
+    const auto y = s.u.head(n), ydot = s.v.head(n);
+    const double tau = s.v[n], tc = s.v[n + 1], lift = s.u[n], top = s.u[n + 1];
+    const double kinetic = 0.5 * ydot.dot(mass_ * ydot) + ydot.dot(m_s_ * tau + m_c_ * tc) +
+                           0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc);
+    const double strain = 0.5 * y.dot(stiffness_ * y) + y.dot(a_s_ * lift + a_c_ * top) +
+                          0.5 * (s_ss_ * lift * lift + 2 * s_cs_ * lift * top + e_cc_ * top * top);
+    return {kinetic, strain};
+}
+
+double CraigBamptonStepper::contact_height(const State& s, int node) const {
+    return -(Bhat_.row(node).dot(s.u.head(size())) + Blift_[node] * s.u[size()]);
+}
+
+bool CraigBamptonStepper::set_clamp(State& s, double top, double rate) const {
+    const Eigen::Index n = size();
+    const bool moves = s.u[n + 1] != top || s.v[n + 1] != rate;
+    s.u[n + 1] = top;
+    s.v[n + 1] = rate;
+    return moves;
+}
+
+bool CraigBamptonStepper::fits(const State& s) const {
+    const Eigen::Index nc = num_contact_nodes();
+    return s.u.size() == size() + 2 && s.v.size() == size() + 2 &&
+           (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
+}
+
+std::vector<double> CraigBamptonStepper::cached_substeps() const {
+    std::vector<double> sizes;
+    for (const auto& ops : cache_)
+        if (ops) sizes.push_back(ops->dt);
+    return sizes;
+}
+
+void CraigBamptonStepper::set_cached_substeps(const std::vector<double>& sizes) {
+    if (sizes.size() > cache_.size())
+        throw std::invalid_argument("more cached substep sizes than the cache holds");
+    for (auto& ops : cache_) ops.reset();
+    for (size_t k = sizes.size(); k-- > 0;) build_operators(sizes[k]);
+    problem_dt_ = -1;
+}
+
+void CraigBamptonStepper::set_friction_coefficient(double friction) {
+    params_.friction_coefficient = friction;
+    problem_dt_ = -1;
+}
+
+const CraigBamptonStepper::StepOperators& CraigBamptonStepper::operators_for(double dt) {
+    for (const auto& ops : cache_)
+        if (ops && std::abs(ops->dt - dt) <= 1e-14 * dt) return *ops;
+    return build_operators(dt);
+}
+
+CraigBamptonStepper::StepOperators& CraigBamptonStepper::build_operators(double dt) {
+    std::swap(cache_[0], cache_[1]);
+    auto ops = std::make_unique<StepOperators>();
+    ops->dt = dt;
+    ops->stiffness.compute((4.0 / (dt * dt)) * mass_ + (2.0 / dt) * damping_ + stiffness_);
+    if (ops->stiffness.info() != Eigen::Success)
+        throw std::runtime_error("Craig-Bampton step matrix is not positive definite");
+    ops->delassus = Bhat_ * ops->stiffness.solve(Eigen::MatrixXd(Bhat_.transpose()));
+    ops->delassus = 0.5 * (ops->delassus + ops->delassus.transpose()).eval();
+    cache_[0] = std::move(ops);
+    ++operator_builds_;
+    return *cache_[0];
+}
+
+// The reduced body's substep (reduced_stepper.cpp) with dense M_hat, A_hat, C_hat and the
+// lift coupled to both (a_s + a_c need not vanish: the lift holds the edge).
+SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoad& load) {
+    const StepOperators& ops = operators_for(dt);
+    const int nc = num_contact_nodes();
+    const bool friction = params_.friction_coefficient > 0;
+    if (problem_dt_ != dt || problem_friction_ != friction) {
+        problem_.W = friction ? ops.delassus : Eigen::MatrixXd(ops.delassus.topLeftCorner(nc, nc));
+        problem_.a.resize(friction ? 2 * nc : nc);
+        problem_.friction.setConstant(friction ? nc : 0, params_.friction_coefficient);
+        problem_.revision = ContactProblem::next_revision();
+        problem_dt_ = dt;
+        problem_friction_ = friction;
+    }
+    const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
+    const double alpha = params_.damping_mass, beta = params_.damping_stiffness;
+    if (s.lambda.size() != problem_.W.rows()) s.lambda.setZero(problem_.W.rows());
+    const Eigen::Index n = size();
+    auto y = s.u.head(n), ydot = s.v.head(n);
+    double& lift_at = s.u[n];
+    double& lift_rate = s.v[n];
+    double& top = s.u[n + 1];
+    double& top_rate = s.v[n + 1];
+
+    const double w_t = 0.5 * (load.top_start + load.top_end) - top;
+    rhs_ = c2 * (mass_ * ydot + m_s_ * lift_rate + m_c_ * top_rate) -
+           stiffness_ * y - a_s_ * lift_at - a_c_ * top -
+           ((c1 + c2 * alpha) * w_t) * m_t_ - ((1 + c2 * beta) * w_t) * a_t_;
+    w_ = ops.stiffness.solve(rhs_);
+    contact_u_ = Bhat_ * y + Blift_ * lift_at;
+    contact_v_ = Bhat_ * ydot + Blift_ * lift_rate;
+    bw_ = Bhat_ * w_ + Blift_ * w_t;
+    problem_.a = bw_.head(problem_.a.size());
+    const bool touching = set_contact_conditions(
+        problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
+        [&](int i) { return params_.initial_gap - contact_u_[i]; },
+        [&](int i) { return contact_v_[nc + i]; });
+    SubstepReport report;
+    const Eigen::Index unknowns = problem_.W.rows();
+    if (touching) {
+        const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
+        report.contact_iterations = info.iterations;
+        report.contact_sweeps = info.sweeps;
+        report.contact_solved = true;
+        w_ += ops.stiffness.solve(Eigen::VectorXd(Bhat_.topRows(unknowns).transpose() * s.lambda));
+        bw_ = Bhat_ * w_ + Blift_ * w_t;
+    } else {
+        s.lambda.setZero();
+    }
+
+    const double du_t = 2 * w_t;
+    du_ = 2 * w_;
+    const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_, stiffness_tt = s_ss_ + 2 * s_cs_ + e_cc_;
+    const Eigen::VectorXd coupling_c = alpha * m_t_ + beta * a_t_;  // C's (y, lift + clamp) column
+    if (params_.damped())
+        report.work.damping = (du_.dot(damping_ * du_) + 2 * du_t * coupling_c.dot(du_) +
+                               (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) / dt;
+    // The clamp's force: the residual of the lift's and the clamp's rows, less the contact
+    // forces' share through the lift.
+    double r = m_t_.dot(c1 * w_ - c2 * ydot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
+               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + a_t_.dot(y + w_) +
+               (s_ss_ + s_cs_) * (lift_at + w_t) + (s_cs_ + e_cc_) * (top + w_t);
+    if (params_.damped())
+        r += 0.5 * c2 * (coupling_c.dot(du_) + (alpha * mass_tt + beta * stiffness_tt) * du_t);
+    r -= Blift_.head(unknowns).dot(s.lambda);
+    report.top_reaction_y = r;
+    report.work.clamp = r * du_t;
+    double rx = clamp_x_.mass.dot(c1 * w_ - c2 * ydot) +
+                clamp_x_.mass_lift * (c1 * w_t - c2 * lift_rate) +
+                clamp_x_.mass_top * (c1 * w_t - c2 * top_rate) + clamp_x_.stiffness.dot(y + w_) +
+                clamp_x_.stiffness_lift * (lift_at + w_t) + clamp_x_.stiffness_top * (top + w_t);
+    if (params_.damped())
+        rx += 0.5 * c2 *
+              (alpha * (clamp_x_.mass.dot(du_) + (clamp_x_.mass_lift + clamp_x_.mass_top) * du_t) +
+               beta * (clamp_x_.stiffness.dot(du_) +
+                       (clamp_x_.stiffness_lift + clamp_x_.stiffness_top) * du_t));
+    report.top_reaction_x = rx;
+
+    record_contact(
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        touching, solver_.status(), [&](int i) { return contact_u_[i]; },
+        [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
+
+    ydot = 2 * c2 * w_ - ydot;
+    y += 2 * w_;
+    lift_rate = 2 * c2 * w_t - lift_rate;
+    lift_at += du_t;
+    top = load.top_end;
+    top_rate = load.top_rate;
+    s.time += dt;
+    return report;
+}
+
+}  // namespace contactbody

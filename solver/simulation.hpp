@@ -169,9 +169,13 @@ public:
     // substep halvings piling up (once per step where they do).
     std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
 
-private:
+    // A simulation of a body built elsewhere (the benchmarks' Craig-Bampton body); the one
+    // above builds the body its parameters ask for (modes).
     Simulation(std::unique_ptr<Body> body, double initial_top_displacement,
-               double start_time, double initial_top_force, double initial_foundation_velocity);
+               double start_time = 0, double initial_top_force = 0,
+               double initial_foundation_velocity = 0);
+
+private:
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static

@@ -183,3 +183,32 @@ def test_field_output_is_the_state_on_every_node(fmu_path, tmp_path):
         k = int(np.argmin(np.abs(result["time"] - t)))
         strain = fields.strain_energy(points, triangles, data["displacement"], 300e6, 150e6)
         assert strain == pytest.approx(result["strain_energy"][k], rel=1e-9)
+
+
+def test_fmi3_edge_arrays_of_every_mode_are_the_full_body_s():
+    """The FMI 3.0 FMU's edge arrays (pressure, friction, slip velocity, gap, state) come from
+    the same edge record: with every finite mode they equal the full body's to 1e-10."""
+    from contactbody.fmu import find_fmu, simulate_fmi3
+    fmu3 = pathlib.Path(find_fmu()).with_name("ContactBody_fmi3.fmu")
+    scene = {k: v for k, v in SCENE.items() if k != "internal_step"}
+    names = ["edge_pressure", "edge_friction", "edge_slip_velocity", "edge_gap"]
+    runs = [simulate_fmi3(fmu3, start_values={**scene, **extra}, stop_time=1e-3,
+                          output_interval=H, output=names + ["edge_state"])
+            for extra in ({}, {"modes": finite_modes(6, 6, 1)})]
+    for name in names:
+        full, reduced = runs[0][name], runs[1][name]
+        assert np.abs(full).max() > 0, name
+        assert np.abs(reduced - full).max() <= 1e-10 * np.abs(full).max(), name
+    assert np.array_equal(runs[0]["edge_state"], runs[1]["edge_state"])
+
+
+def test_the_stability_warning_says_the_reduced_body_is_not_mapped(model_description, unzipped):
+    """Undamped sliding with F = 0.3 lies in the measured unstable region: the full body's
+    warning, and for the reduced body the same warning saying the map was measured on the
+    full body."""
+    scene = {**SCENE, "damping_mass": 0.0, "damping_stiffness": 0.0, "modes": 8}
+    inst, _ = start(model_description, unzipped, scene)
+    warnings = [m[2] for m in inst.messages if m[0] == 1]
+    inst.close()
+    assert any("measured unstable" in w and "modes = 8 has not been mapped" in w
+               for w in warnings), warnings

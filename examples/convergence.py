@@ -28,7 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import fields  # noqa: E402
+from contactbody import fields  # noqa: E402
 from scene import output_argument, REFERENCE, TABLE2, WIDTH, cells, simulate  # noqa: E402
 
 STOP, INTERVAL = 5.12e-3, 1.6e-4

@@ -16,7 +16,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
 
-import fields  # noqa: E402
+from contactbody import fields  # noqa: E402
 from scene import output_argument, simulate  # noqa: E402
 
 

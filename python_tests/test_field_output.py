@@ -1,7 +1,6 @@
 """Field output: .vtu snapshots and a .pvd collection, readable by meshio, carrying
 the same state as a run without field output; an unwritable directory fails initialization."""
 import pathlib
-import sys
 
 import numpy as np
 import pytest
@@ -9,8 +8,7 @@ from fmpy import simulate_fmu
 
 from conftest import Instance
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
-import fields  # noqa: E402
+from contactbody import fields
 
 SCENE = dict(nx=8, ny=8, mass_matrix=0, internal_step=1e-5)  # consistent M: energies in numpy
 

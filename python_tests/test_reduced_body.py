@@ -3,7 +3,6 @@ is the full body; with few its own energy balance closes; its state saves, resto
 serializes; a reset keeps its basis; its field output is its state on every node; what it
 cannot do is refused by name."""
 import pathlib
-import sys
 
 import numpy as np
 import pytest
@@ -12,8 +11,7 @@ from fmpy.fmi1 import FMICallException
 
 from conftest import Instance
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "examples"))
-import fields  # noqa: E402
+from contactbody import fields
 
 H = 1e-4
 # Friction, Rayleigh damping, an initial velocity, the clamp pressing on: nothing is trivial.

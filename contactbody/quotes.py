@@ -12,6 +12,12 @@ and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds w
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
 the value first (a size in bytes quoted in MB: `scale=1e-6`).
 
+A table copied from a results table carries the marker on the line before it,
+
+    <!-- rows of examples/results/stick_slip.md -->
+
+and holds when every one of its rows below the header is a line of that file.
+
     .venv/bin/python -m contactbody.quotes        # lists every quote and whether it holds
 """
 import json
@@ -27,6 +33,7 @@ UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|N/m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
+TABLE = re.compile(r"<!-- rows of (?P<file>[\w./-]+\.(?:md|txt)) -->\n(?P<table>(?:\|.*\n?)+)")
 
 
 def documents():
@@ -108,6 +115,18 @@ def quotes(document):
             continue
         holds = abs(value - shown) <= half_unit * (1 + 1e-9)
         found.append((line, match["number"], value, holds))
+    for match in TABLE.finditer(text):
+        line = text.count("\n", 0, match.start()) + 1
+        rows = [r.strip() for r in match["table"].splitlines()[2:]]
+        try:
+            source = {r.strip() for r in (ROOT / match["file"]).read_text().splitlines()}
+        except OSError as error:
+            found.append((line, "table", f"{match['file']}: {error!r}", False))
+            continue
+        missing = [r for r in rows if r not in source]
+        found.append((line, f"table of {len(rows)} rows",
+                      f"{match['file']}" + (f": not there: {missing[0]}" if missing else ""),
+                      bool(rows) and not missing))
     for marker in MARKER.finditer(text):
         in_code = marker.start() > 0 and text[marker.start() - 1] == "`"  # shown, not used
         if marker.start() not in covered and not in_code:

@@ -77,3 +77,16 @@ def test_quote_checker_catches_a_wrong_number(tmp_path, monkeypatch):
                     " e 3<!-- r.json: runs/n=4/ratio -->"
                     ' f 2.5 ms<!-- r.json: runs/scene="a, b/c"/ratio -->')
     assert [holds for _, _, _, holds in quotes(page)] == [True, False, False, False, True, False]
+
+
+def test_table_checker_catches_a_changed_row(tmp_path, monkeypatch):
+    """A table marked as copied from a results table holds only while every row below its
+    header is a line of that file."""
+    (tmp_path / "r.md").write_text("| a | b |\n|---|---|\n| 1 | 2.5 |\n| 2 | 3.5 |\n")
+    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    page = tmp_path / "p.md"
+    table = "| a | b |\n|---|---|\n| 1 | 2.5 |\n| 2 | {} |\n"
+    page.write_text("<!-- rows of r.md -->\n" + table.format("3.5") + "\ntext\n\n"
+                    "<!-- rows of r.md -->\n" + table.format("3.6") +
+                    "\n<!-- rows of missing.md -->\n" + table.format("3.5"))
+    assert [holds for _, _, _, holds in quotes(page)] == [True, False, False]

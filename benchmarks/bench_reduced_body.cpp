@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
         double substep_us[2] = {0, 0};
         for (int lifted = 0; lifted < 2; ++lifted) {
             const double at = lifted ? 1e-3 : top;
-            ReducedState r = reduced.reduce(full.initial_state(at));
+            ReducedState r = reduced.from_full(full.initial_state(at));
             const SubstepLoad held{at, at, 0, 20};
             for (int k = 0; k < 20; ++k) reduced.substep(r, dt, held);
             const auto tic = Clock::now();
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
             substep_us[lifted] = seconds_since(tic) / 200 * 1e6;
         }
         for (double factor : factors) {
-            ReducedState r = reduced.reduce(full.initial_state(top));
+            ReducedState r = reduced.from_full(full.initial_state(top));
             Series x = run(dt * factor, stop, [&](double h) { return reduced.substep(r, h, load); },
                            [&] { return reduced.energy(r); });
             std::printf("%s\n  {\"modes\": %d, \"residual\": %ld, \"dt\": %.6g, \"setup_s\": %.6g, "

@@ -116,6 +116,7 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
 
 void CraigBamptonStepper::start_run() {
     damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * stiffness_;
+    damping_coupling_ = params_.damping_mass * m_t_ + params_.damping_stiffness * a_t_;
     options_ = ContactSolverOptions{};
     options_.tolerance = params_.contact_tolerance;
     solver_ = ContactSolver{};
@@ -299,7 +300,7 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     const double du_t = 2 * w_t;
     du_ = 2 * w_;
     const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_, stiffness_tt = s_ss_ + 2 * s_cs_ + e_cc_;
-    const Eigen::VectorXd coupling_c = alpha * m_t_ + beta * a_t_;  // C's (y, lift + clamp) column
+    const Eigen::VectorXd& coupling_c = damping_coupling_;
     if (params_.damped())
         report.work.damping = (du_.dot(damping_ * du_) + 2 * du_t * coupling_c.dot(du_) +
                                (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) / dt;

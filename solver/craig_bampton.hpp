@@ -77,6 +77,7 @@ private:
     // Couplings with the lift S and the clamp e: m_s = T^T M_ff S, m_c = T^T M_fc e,
     // a_s = T^T A_ff S, a_c = T^T A_fc e, and their scalars.
     Eigen::VectorXd m_s_, m_c_, a_s_, a_c_, m_t_, a_t_;
+    Eigen::VectorXd damping_coupling_;  // C's (y, lift + clamp) column: alpha m_t + beta a_t
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, s_cs_ = 0, e_cc_ = 0;
     struct ClampRows {
         Eigen::VectorXd mass, stiffness;

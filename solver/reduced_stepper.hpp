@@ -41,8 +41,6 @@ public:
     // every state does with every finite mode), and back.
     State from_full(const State& full) const override;
     void to_full(const State& s, State& full) const override;
-    ReducedState reduce(const State& full) const { return from_full(full); }
-    void expand(const ReducedState& s, State& full) const { to_full(s, full); }
     State initial_state(double top_displacement) const override;
     // E = 1/2 v^T M v + 1/2 u^T A u of u = (T z + S lift_at, e top), v likewise, with the
     // residual massless: the reduced body's own energy.

@@ -133,18 +133,18 @@ State Stepper::initial_state(double top_displacement) const {
     return paper_initial_state(disc_, params_, top_displacement);
 }
 
-State Stepper::paper_initial_state(const Discretization& disc_, const SceneParameters& params_,
+State Stepper::paper_initial_state(const Discretization& d, const SceneParameters& p,
                                    double top_displacement) {
     State s;
-    const Mesh& mesh = disc_.mesh;
+    const Mesh& mesh = d.mesh;
     s.u.setZero(mesh.num_dofs());
     s.v.setZero(mesh.num_dofs());
     for (int n = 0; n < mesh.num_nodes(); ++n)
         s.u[dof_y(n)] = top_displacement * mesh.point(n).y / mesh.height;
-    for (int dof : disc_.moving_dofs)
-        s.v[dof] = dof % 2 == 0 ? params_.initial_velocity_x : params_.initial_velocity_y;
-    const Eigen::Index nc = static_cast<Eigen::Index>(disc_.contact_x.size());
-    s.lambda.setZero(params_.friction_coefficient > 0 ? 2 * nc : nc);
+    for (int dof : d.moving_dofs)
+        s.v[dof] = dof % 2 == 0 ? p.initial_velocity_x : p.initial_velocity_y;
+    const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
+    s.lambda.setZero(p.friction_coefficient > 0 ? 2 * nc : nc);
     s.sticking.setZero(nc);
     return s;
 }

@@ -111,7 +111,7 @@ TEST(NoAllocationInTheReducedBody, InTheSubstepLoopOnceWarm) {
         p.friction_coefficient = 0.3;
         p.damping_stiffness = 4e-6;
         ReducedStepper reduced(p, 10);
-        ReducedState s = reduced.reduce(Stepper(p).initial_state(-2.5e-5));
+        ReducedState s = reduced.from_full(Stepper(p).initial_state(-2.5e-5));
         const SubstepLoad load{-2.5e-5, -2.5e-5, 0, 20};
         for (int k = 0; k < 50; ++k) reduced.substep(s, 4e-6, load);
         int solved = 0;

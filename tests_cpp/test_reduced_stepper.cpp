@@ -46,7 +46,7 @@ TEST(ReducedStepper, AllModesGiveTheFullBody) {
         ReducedStepper reduced(p, finite_mode_count(full.discretization()));
         State s = full.initial_state(load_at(0, dt).top_start), t = s;
         t.v *= 1 + 1e-14;
-        ReducedState r = reduced.reduce(s);
+        ReducedState r = reduced.from_full(s);
         double force_scale = 0, worst_force = 0, worst_reaction = 0, sensitivity = 0;
         Works full_works, reduced_works;
         int touching = 0;
@@ -74,7 +74,7 @@ TEST(ReducedStepper, AllModesGiveTheFullBody) {
         EXPECT_LT(worst_force / force_scale, 1e-10);
         EXPECT_LT(worst_reaction / force_scale, 1e-10);
         State back;
-        reduced.expand(r, back);
+        reduced.to_full(r, back);
         EXPECT_LT((back.u - s.u).cwiseAbs().maxCoeff() / s.u.cwiseAbs().maxCoeff(), 1e-10);
         EXPECT_LT((back.v - s.v).cwiseAbs().maxCoeff() / s.v.cwiseAbs().maxCoeff(), 1e-10);
         const double E = full_energy(full.discretization(), s);
@@ -104,7 +104,7 @@ TEST(ReducedStepper, EnergyBalanceClosesWithFewModes) {
         State start = full.initial_state(load_at(0, dt).top_start);
         for (int dof : full.discretization().clamped_dofs)
             if (dof % 2 == 1) start.v[dof] = load_at(0, dt).top_rate;
-        ReducedState r = reduced.reduce(start);
+        ReducedState r = reduced.from_full(start);
         const double E0 = reduced.energy(r);
         Works works;
         int touching = 0;

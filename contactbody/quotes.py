@@ -7,7 +7,8 @@ file and the value in it:
 
 The path's segments are keys of a JSON object, indices of a list, or `key=value,...` picking the
 one record of a list whose fields have those values (a value with a comma or a slash in double
-quotes). A unit or sign may stand between the number
+quotes); `PATH ÷ PATH` quotes the ratio of two values of the file, `=NAME` a value that
+contactbody/doc_tables.py computes from it. A unit or sign may stand between the number
 and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
 the value first (a size in bytes quoted in MB: `scale=1e-6`).
@@ -16,7 +17,13 @@ A table copied from a results table carries the marker on the line before it,
 
     <!-- rows of examples/results/stick_slip.md -->
 
-and holds when every one of its rows below the header is a line of that file.
+and holds when every one of its rows below the header is a line of that file. Lines of a text
+results file are copied the same way into a fenced block after the marker. A table that
+reshapes a results file is generated from it (contactbody/doc_tables.py) and marked
+
+    <!-- table convergence from examples/results/convergence.json -->
+
+It holds when it is what that generator makes of the file today.
 
     .venv/bin/python -m contactbody.quotes        # lists every quote and whether it holds
 """
@@ -26,14 +33,17 @@ import pathlib
 import re
 import sys
 
+from contactbody import doc_tables
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
-UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|N/m)?)"
+UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|kN/m|N/m|m/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
-TABLE = re.compile(r"<!-- rows of (?P<file>[\w./-]+\.(?:md|txt)) -->\n(?P<table>(?:\|.*\n?)+)")
+TABLE = re.compile(r"<!-- rows of (?P<file>[\w./-]+\.(?:md|txt)) -->\n"
+                   r"(?:(?P<table>(?:\|.*\n?)+)|```\n(?P<block>(?:(?!```).*\n)*)```)")
 
 
 def documents():
@@ -91,10 +101,15 @@ def _select(node, segment):
 
 
 def value_at(file, path):
+    """The value at `path` in `file`; `A ÷ B` is the ratio of two values of the file."""
+    numerator, _, denominator = path.partition(" ÷ ")
     node = json.loads((ROOT / file).read_text())
-    for segment in _split(path, "/"):
+    if numerator.startswith("="):  # a value computed from the file (contactbody/doc_tables.py)
+        node = doc_tables.DERIVED[numerator[1:]](node)
+        numerator = ""
+    for segment in _split(numerator, "/") if numerator else []:
         node = _select(node, segment)
-    return float(node)
+    return float(node) / (value_at(file, denominator) if denominator else 1.0)
 
 
 def quotes(document):
@@ -117,7 +132,8 @@ def quotes(document):
         found.append((line, match["number"], value, holds))
     for match in TABLE.finditer(text):
         line = text.count("\n", 0, match.start()) + 1
-        rows = [r.strip() for r in match["table"].splitlines()[2:]]
+        rows = ([r.strip() for r in match["table"].splitlines()[2:]] if match["table"]
+                else [r.strip() for r in match["block"].splitlines() if r.strip()])
         try:
             source = {r.strip() for r in (ROOT / match["file"]).read_text().splitlines()}
         except OSError as error:
@@ -127,6 +143,20 @@ def quotes(document):
         found.append((line, f"table of {len(rows)} rows",
                       f"{match['file']}" + (f": not there: {missing[0]}" if missing else ""),
                       bool(rows) and not missing))
+    for match in doc_tables.MARKER.finditer(text):
+        line = text.count("\n", 0, match.start()) + 1
+        try:
+            expected = doc_tables.generate(match["name"], match["file"], ROOT)
+        except (OSError, KeyError, ValueError, TypeError) as error:
+            found.append((line, f"table {match['name']}", f"{match['file']}: {error!r}", False))
+            continue
+        shown = match["table"]
+        differs = [(a, b) for a, b in zip(shown.splitlines(), expected.splitlines()) if a != b]
+        holds = shown.strip() == expected.strip()
+        found.append((line, f"table {match['name']}", f"{match['file']}" + (
+            "" if holds else f": shown {differs[0][0] if differs else shown.strip()[-60:]!r}, "
+            f"generated {differs[0][1] if differs else expected.strip()[-60:]!r} "
+            "(python -m contactbody.doc_tables --write)"), holds))
     for marker in MARKER.finditer(text):
         in_code = marker.start() > 0 and text[marker.start() - 1] == "`"  # shown, not used
         if marker.start() not in covered and not in_code:

@@ -1,6 +1,7 @@
 """Documentation that stands alone: the variable table matches the build, every
 document the READMEs link exists in the repository, and no variable description points to
 files a user does not have."""
+import json
 import re
 
 import fmpy
@@ -90,3 +91,30 @@ def test_table_checker_catches_a_changed_row(tmp_path, monkeypatch):
                     "<!-- rows of r.md -->\n" + table.format("3.6") +
                     "\n<!-- rows of missing.md -->\n" + table.format("3.5"))
     assert [holds for _, _, _, holds in quotes(page)] == [True, False, False]
+
+
+def test_generated_table_ratio_and_text_lines_are_checked(tmp_path, monkeypatch):
+    """A table generated from a results file holds only while it is what its generator makes of
+    the file (contactbody/doc_tables.py); a ratio quote is the ratio of the two values; lines
+    copied from a text results file into a fenced block must be lines of it."""
+    from contactbody import doc_tables
+    data = {"impact": [{"mass_matrix": "standard", "dt": 4e-6, "energy_ratio": 7.4228,
+                        "contact_intervals": 2},
+                       {"mass_matrix": "standard", "dt": 1e-6, "energy_ratio": 12.1523,
+                        "contact_intervals": 4}]}
+    (tmp_path / "s.json").write_text(json.dumps(data))
+    (tmp_path / "r.txt").write_text("h  mean\n2  11.41\n1  23.98\n")
+    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    good = doc_tables.GENERATORS["impact"](data)
+    assert "| standard | 4e-6 / 1e-6 | 7.4228 / 12.1523 | 2 / 4 |" in good
+    page = tmp_path / "p.md"
+    page.write_text("<!-- table impact from s.json -->\n" + good + "\n"
+                    "<!-- table impact from s.json -->\n" + good.replace("12.1523", "11.07") + "\n"
+                    "a 1.64×<!-- s.json: impact/1/energy_ratio ÷ impact/0/energy_ratio --> "
+                    "b 1.7×<!-- s.json: impact/1/energy_ratio ÷ impact/0/energy_ratio -->\n\n"
+                    "<!-- rows of r.txt -->\n```\nh  mean\n2  11.41\n```\n\n"
+                    "<!-- rows of r.txt -->\n```\n2  11.40\n```\n")
+    assert [holds for _, _, _, holds in sorted(quotes(page), key=lambda q: (q[0], q[1]))] == [
+        True, False, True, False, True, False]
+    doc_tables.write(page, tmp_path)  # --write regenerates the stale table
+    assert [holds for _, _, _, holds in quotes(page)].count(False) == 2

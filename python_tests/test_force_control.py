@@ -11,6 +11,7 @@ from fmpy.fmi2 import FMU2Slave
 from conftest import ROOT, Instance
 
 sys.path.insert(0, str(ROOT / "examples"))
+from scenes import contact_intervals  # noqa: E402
 
 WORKS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work", "energy"]
 
@@ -52,13 +53,6 @@ def impact(fmu_path, variant, dt, gap=1e-5):
                       "foundation_velocity": 0.0, "top_control": 1, "top_force": 0.0,
                       "top_displacement": 0.0, "initial_gap": gap, "initial_velocity_y": -1.0},
         output=["energy", "normal_force", "max_penetration", "top_position", "top_velocity"])
-
-
-def contact_intervals(normal_force):
-    """How many separate times the bottom is in contact: 1 for one clean impact; more when the
-    contact force chatters (drops to zero and comes back) during the impact."""
-    on = normal_force > 0
-    return int(on[0]) + int(np.sum(on[1:] & ~on[:-1]))
 
 
 @pytest.mark.parametrize("variant", [1, 2, 4])

@@ -97,7 +97,7 @@ def _select(node, segment):
         return found[0]
     if isinstance(node, list):
         return node[int(segment)]
-    return node[segment]
+    return node[segment.strip('"')]
 
 
 def value_at(file, path):

@@ -7,7 +7,8 @@ file and the value in it:
 
 The path's segments are keys of a JSON object, indices of a list, or `key=value,...` picking the
 one record of a list whose fields have those values (a value with a comma or a slash in double
-quotes); `PATH ÷ PATH` quotes the ratio of two values of the file, `=NAME` a value that
+quotes); `PATH ÷ PATH` and `PATH − PATH` quote the ratio and the difference of two values of
+the file, `=NAME` a value that
 contactbody/doc_tables.py computes from it. A unit or sign may stand between the number
 and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
@@ -38,7 +39,7 @@ from contactbody import doc_tables
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
-UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|kN/m|N/m|m/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
+UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
@@ -101,15 +102,17 @@ def _select(node, segment):
 
 
 def value_at(file, path):
-    """The value at `path` in `file`; `A ÷ B` is the ratio of two values of the file."""
-    numerator, _, denominator = path.partition(" ÷ ")
+    """The value at `path` in `file`; `A ÷ B` and `A − B` combine two values of the file."""
+    for operator, combine in ((" ÷ ", lambda a, b: a / b), (" − ", lambda a, b: a - b)):
+        if operator in path:
+            left, _, right = path.partition(operator)
+            return combine(value_at(file, left), value_at(file, right))
     node = json.loads((ROOT / file).read_text())
-    if numerator.startswith("="):  # a value computed from the file (contactbody/doc_tables.py)
-        node = doc_tables.DERIVED[numerator[1:]](node)
-        numerator = ""
-    for segment in _split(numerator, "/") if numerator else []:
+    if path.startswith("="):  # a value computed from the file (contactbody/doc_tables.py)
+        return float(doc_tables.DERIVED[path[1:]](node))
+    for segment in _split(path, "/"):
         node = _select(node, segment)
-    return float(node) / (value_at(file, denominator) if denominator else 1.0)
+    return float(node)
 
 
 def quotes(document):

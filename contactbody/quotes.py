@@ -8,9 +8,9 @@ file and the value in it:
 The path's segments are keys of a JSON object, indices of a list, or `key=value,...` picking the
 one record of a list whose fields have those values (a value with a comma or a slash in double
 quotes); `PATH ÷ PATH` and `PATH − PATH` quote the ratio and the difference of two values of
-the file, `=NAME` a value that
-contactbody/doc_tables.py computes from it. A unit or sign may stand between the number
-and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
+the file, `min PATH` and `max PATH` the extremes over its `*` segments (every item of a list
+or value of an object), `=NAME` a value that contactbody/doc_tables.py computes from it. A
+unit or sign may stand between the number and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
 the value first (a size in bytes quoted in MB: `scale=1e-6`).
 
@@ -39,7 +39,7 @@ from contactbody import doc_tables
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
-UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
+UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|J|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
@@ -110,9 +110,23 @@ def value_at(file, path):
     node = json.loads((ROOT / file).read_text())
     if path.startswith("="):  # a value computed from the file (contactbody/doc_tables.py)
         return float(doc_tables.DERIVED[path[1:]](node))
+    for name, aggregate in (("min ", min), ("max ", max)):
+        if path.startswith(name):
+            return float(aggregate(_values(node, _split(path[len(name):], "/"))))
     for segment in _split(path, "/"):
         node = _select(node, segment)
     return float(node)
+
+
+def _values(node, segments):
+    """Every value at a path whose `*` segments range over a list's items or an object's values."""
+    if not segments:
+        return [node]
+    head, rest = segments[0], segments[1:]
+    if head == "*":
+        items = node if isinstance(node, list) else list(node.values())
+        return [v for item in items for v in _values(item, rest)]
+    return _values(_select(node, head), rest)
 
 
 def quotes(document):

@@ -64,7 +64,7 @@ def test_numbers_quoted_from_results_files_hold():
     wrong = [f"{d.relative_to(ROOT)}:{line}: {shown} against {value}"
              for d, entries in found.items() for line, shown, value, holds in entries if not holds]
     assert not wrong, "\n".join(wrong)
-    assert sum(map(len, found.values())) >= 15
+    assert sum(map(len, found.values())) >= 250  # markers are not dropped unnoticed
 
 
 def test_quote_checker_catches_a_wrong_number(tmp_path, monkeypatch):

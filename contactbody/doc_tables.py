@@ -68,6 +68,12 @@ def step_errors(data):
     return sum(r["status"] == "error" for r in data)
 
 
+@derived
+def stick_share_beyond_50mm(data):
+    """The edge history's largest share of time stuck among the nodes beyond x = 50 mm."""
+    return max(share for x, share in zip(data["x_mm"], data["stick_share_after_3ms"]) if x > 50)
+
+
 def sci(value, digits=2):
     """1.2e5, 4.82e-3: `digits` significant digits, exponent without padding."""
     if value == 0:
@@ -98,10 +104,24 @@ def table(header, rows):
     return "\n".join(lines) + "\n"
 
 
+def orders(rows, key):
+    """The observed convergence orders along a ladder of halvings of h."""
+    return [math.log(a[key] / b[key]) / math.log(a["h"] / b["h"]) for a, b in zip(rows, rows[1:])]
+
+
 def _order(rows, i, key):
-    if i == 0:
-        return ""
-    return f" ({math.log(rows[i - 1][key] / rows[i][key]) / math.log(rows[i - 1]['h'] / rows[i]['h']):.2f})"
+    return f" ({orders(rows, key)[i - 1]:.2f})" if i else ""
+
+
+@derived
+def damped_l2_order_min(data):
+    """The smallest L2 order of the damped F = 0.3 ladder (examples/convergence.py)."""
+    return min(orders(data["0.3"]["rows"], "l2"))
+
+
+@derived
+def damped_l2_order_max(data):
+    return max(orders(data["0.3"]["rows"], "l2"))
 
 
 @generator

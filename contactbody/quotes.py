@@ -39,7 +39,7 @@ from contactbody import doc_tables
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
-UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|ms|µs|m²|s|J/m|J|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
+UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|kB|ms|µs|m²|s|J/m|J|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
 QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>]*?)"
                    r"(?: scale=(?P<scale>[-+.\de]+))? -->")
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")

@@ -1,6 +1,7 @@
 """The force-driven top (scenes issue, item 1): a rigid plate of mass top_mass with u_x = 0,
 pushed down by the input top_force; initial velocities; the static initial state; and the
 scenes of item 4 (impact, lift-off and re-contact, reversal: examples/scenes.py)."""
+import re
 import sys
 
 import fmpy
@@ -110,7 +111,7 @@ def test_a_constant_force_is_carried_by_the_foundation(fmu_path):
 def test_static_initial_state_stays_at_rest(fmu_path, variant, friction):
     """initial_state = static with the foundation at rest and a constant load: the body stays at
     rest, kinetic energy <= 1e-12 x strain energy over 0.01 s (measured <= 1.1e-15), and the
-    outputs at t0 carry the preload."""
+    outputs at t0 carry the preload that docs/user_guide.md quotes."""
     r = fmpy.simulate_fmu(fmu_path, stop_time=0.01, output_interval=1e-4,
                           start_values={"initial_state": 1, "foundation_velocity": 0.0,
                                         "friction_coefficient": friction, "mass_matrix": variant},
@@ -120,6 +121,10 @@ def test_static_initial_state_stays_at_rest(fmu_path, variant, friction):
     assert r["normal_force"][0] > 1e4 and r["top_reaction_y"][0] == pytest.approx(
         -r["normal_force"][0], rel=1e-9)
     np.testing.assert_allclose(r["normal_force"], r["normal_force"][0], rtol=1e-6)
+    quoted = re.search(r"preload on the default body is ([\d,]+) N/m at F = 0 and ([\d,]+) N/m "
+                       r"at F = 0.5", (ROOT / "docs" / "user_guide.md").read_text().replace("\n", " "))
+    preload = float(quoted.group(1 if friction == 0 else 2).replace(",", ""))
+    assert round(float(r["normal_force"][0])) == preload  # as docs/user_guide.md says
 
 
 @pytest.mark.parametrize("variant", [0, 1, 3, 4])

@@ -25,7 +25,18 @@ def test_the_readme_quick_start_runs_and_its_energy_stays_bounded():
         exec(compile(code, "README quick start", "exec"), scope)
     energy = scope["r"]["energy"]
     assert np.isfinite(energy).all()
-    assert energy.max() < 0.26 and energy[-1] < 1.5 * energy[0]  # README: below 0.26 J/m
+    text = (ROOT / "README.md").read_text()
+    bound, start, undamped = map(float, re.search(
+        r"E stays below ([\d.]+) J/m \(it starts at ([\d.]+)\)\. Without\s+β the same scene is "
+        r"unstable \(E grows to ([\d.]+) J/m", text).groups())
+    assert energy.max() < bound and energy[-1] < 1.5 * energy[0]
+    assert round(float(energy[0]), 2) == start
+    # the sentence after it: the same scene without β, as README says
+    code_undamped = re.sub(r',\s*"damping_stiffness": 4e-6', "", code)
+    assert code_undamped != code
+    with contextlib.redirect_stdout(io.StringIO()):
+        exec(compile(code_undamped, "README quick start without damping", "exec"), scope)
+    assert round(float(scope["r"]["energy"].max()), 1) == undamped
 
 
 def test_material_helpers():

@@ -1,6 +1,6 @@
 # Packages ContactBody.fmu (FMI 2.0), ContactBody_fmi3.fmu (FMI 3.0), BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
 # default: what users get) their binaries come from this project built again for each platform
-# with a toolchain from cmake/: linux64 by zig (glibc 2.17), win64 by MinGW-w64. Without it
+# with a toolchain from cmake/: linux64 and aarch64-linux by zig (glibc 2.17), win64 by MinGW-w64. Without it
 # (the sanitizer job) the FMU holds the native build's linux64 binary only.
 # The modelDescriptions are written by native tools from the variable tables.
 
@@ -46,8 +46,10 @@ if(CONTACTBODY_PORTABLE)
         string(JSON license_name MEMBER ${platform_table} platforms ${i} runtime_licenses ${r})
         string(JSON license_path GET ${platform_table} platforms ${i} runtime_licenses ${license_name})
         string(REPLACE "\${ZIG_LIB}" "${ZIG_LIB}" license_path "${license_path}")
-        list(APPEND licenses ${license_path})
-        list(APPEND license_names ${license_name})
+        if(NOT license_name IN_LIST license_names)  # zig's libc++ serves two platforms
+          list(APPEND licenses ${license_path})
+          list(APPEND license_names ${license_name})
+        endif()
       endforeach()
     endif()
     set(platform_tuple_${platform} ${tuple})

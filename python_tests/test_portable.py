@@ -27,7 +27,9 @@ FMUS = [FMU, FMU3, FMU.with_name("BeltDrive.fmu"), FMU.with_name("Press.fmu")]
 # FMI 3.0 names the platform folders by tuple.
 PLATFORM_TUPLES = {p["name"]: p["fmi3_tuple"] for p in platforms.platforms()}
 GLIBC_LIBRARIES = {"libc.so.6", "libm.so.6", "libpthread.so.0", "libdl.so.2", "librt.so.1",
-                   "ld-linux-x86-64.so.2"}
+                   "ld-linux-x86-64.so.2", "ld-linux-aarch64.so.1"}
+# The Linux rows of the table and the machine their ELF files must name.
+LINUX_MACHINES = {"linux64": "EM_X86_64", "aarch64-linux": "EM_AARCH64"}
 WINDOWS_SYSTEM_DLLS = {"kernel32.dll", "msvcrt.dll", "user32.dll", "advapi32.dll", "ws2_32.dll",
                        "shell32.dll", "ole32.dll", "bcrypt.dll", "ntdll.dll"}
 
@@ -76,11 +78,18 @@ def glibc_version(name):
     return tuple(int(x) for x in name[len("GLIBC_"):].split("."))
 
 
+def test_every_linux_row_is_checked_here():
+    assert {p["name"] for p in platforms.platforms() if p["library_suffix"] == ".so"} \
+        == set(LINUX_MACHINES)
+
+
+@pytest.mark.parametrize("platform", LINUX_MACHINES)
 @pytest.mark.parametrize("fmu", FMUS, ids=lambda p: p.stem)
-def test_linux_binary_needs_only_glibc_2_17(fmu, tmp_path):
-    path = only_binary(fmu, "linux64", tmp_path)
+def test_linux_binary_needs_only_glibc_2_17(fmu, platform, tmp_path):
+    path = only_binary(fmu, platform, tmp_path)
     with open(path, "rb") as f:
         elf = ELFFile(f)
+        assert elf["e_machine"] == LINUX_MACHINES[platform]
         dynamic = elf.get_section_by_name(".dynamic")
         assert isinstance(dynamic, DynamicSection)
         needed = {t.needed for t in dynamic.iter_tags() if t.entry.d_tag == "DT_NEEDED"}
@@ -101,14 +110,16 @@ def test_linux_binary_needs_only_glibc_2_17(fmu, tmp_path):
             assert {"fmi2DoStep", "fmi3DoStep", "fmi3InstantiateCoSimulation"} <= exported
 
 
-def test_auditwheel_calls_the_linux_binary_manylinux_2_17(tmp_path):
+@pytest.mark.parametrize("platform, arch", [("linux64", "x86_64"), ("aarch64-linux", "aarch64")])
+def test_auditwheel_calls_the_linux_binary_manylinux_2_17(platform, arch, tmp_path):
     """An outside judge: PyPA's auditwheel on a throwaway wheel that holds the binary."""
-    data = only_binary(FMU, "linux64", tmp_path).read_bytes()
+    data = only_binary(FMU, platform, tmp_path).read_bytes()
     files = {"probe/ContactBody.so": data,
              "probe-0.0.0.dist-info/METADATA": b"Metadata-Version: 2.1\nName: probe\nVersion: 0.0.0\n",
              "probe-0.0.0.dist-info/WHEEL": b"Wheel-Version: 1.0\nGenerator: test\n"
-                                            b"Root-Is-Purelib: false\nTag: py3-none-linux_x86_64\n"}
-    wheel = tmp_path / "probe-0.0.0-py3-none-linux_x86_64.whl"
+                                            b"Root-Is-Purelib: false\nTag: py3-none-linux_"
+                                            + arch.encode() + b"\n"}
+    wheel = tmp_path / f"probe-0.0.0-py3-none-linux_{arch}.whl"
     record = []
     with zipfile.ZipFile(wheel, "w") as z:
         for name, content in files.items():
@@ -121,7 +132,7 @@ def test_auditwheel_calls_the_linux_binary_manylinux_2_17(tmp_path):
                          capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     text = " ".join(out.stdout.split())
-    assert 'consistent with the following platform tag: "manylinux_2_17_x86_64"' in text, text
+    assert f'consistent with the following platform tag: "manylinux_2_17_{arch}"' in text, text
 
 
 @pytest.mark.parametrize("fmu", FMUS, ids=lambda p: p.stem)
@@ -139,7 +150,7 @@ def test_windows_binary_imports_only_system_dlls(fmu, tmp_path):
 
 
 def test_fmu_is_small_and_carries_the_licences():
-    assert FMU.stat().st_size <= 3 * 1024 * 1024, FMU.stat().st_size
+    assert FMU.stat().st_size <= 4e6, FMU.stat().st_size  # with every platform
     quoted = re.search(r"The FMU is ([\d.]+) MB zipped", (ROOT / "README.md").read_text())
     assert quoted and float(quoted[1]) == round(FMU.stat().st_size / 1e6, 1), \
         f"README quotes {quoted and quoted[1]} MB, the FMU has {FMU.stat().st_size / 1e6:.2f}"

@@ -1,13 +1,16 @@
 // A minimal FMI 2.0 host that continues a simulation from a serialized FMU state, on any
-// platform (python_tests/test_windows.py runs its win64 build under wine): it loads the FMU
-// binary, initializes with the default parameters, restores the state from STATE_IN (unless
-// "-"), takes STEPS steps of H from T0, writes the value references' reals after each step
-// as hex floats (one line a step) to OUTPUTS, and the final state, serialized, to STATE_OUT.
+// platform (python_tests/test_windows.py runs its win64 build under wine,
+// python_tests/test_aarch64.py its aarch64 build under qemu): it loads the FMU binary, sets
+// the parameters given as --real VR=VALUE and --integer VR=VALUE (the rest keep their
+// defaults), initializes, restores the state from STATE_IN (unless "-"), takes STEPS steps of H
+// from T0, writes the value references' reals after each step as hex floats (one line a step)
+// to OUTPUTS, and the final state, serialized, to STATE_OUT.
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fmi_host.hpp"
@@ -28,15 +31,28 @@ void check(fmi2Status status, const char* what) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::vector<std::pair<fmi2ValueReference, double>> reals;
+    std::vector<std::pair<fmi2ValueReference, int>> integers;
+    while (argc > 2 && (std::string(argv[1]) == "--real" || std::string(argv[1]) == "--integer")) {
+        char* end = nullptr;
+        const auto vr = static_cast<fmi2ValueReference>(std::strtoul(argv[2], &end, 10));
+        if (*end != '=') fail("reading a parameter (--real VR=VALUE, --integer VR=VALUE)");
+        if (std::string(argv[1]) == "--real") reals.emplace_back(vr, std::strtod(end + 1, nullptr));
+        else integers.emplace_back(vr, std::atoi(end + 1));
+        argc -= 2;
+        argv += 2;
+    }
     if (argc < 9) {
-        std::fprintf(stderr, "usage: state_host LIBRARY GUID STATE_IN|- T0 STEPS H OUTPUTS STATE_OUT VR...\n");
+        std::fprintf(stderr, "usage: state_host [--real VR=VALUE | --integer VR=VALUE]... LIBRARY GUID "
+                             "STATE_IN|- T0 STEPS H OUTPUTS STATE_OUT VR...\n");
         return 2;
     }
     void* library = host::load_library(argv[1]);
     if (!library) fail("loading the library");
 #define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); if (!f) fail(#f)
     LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
-    LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal);
+    LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal); LOAD(fmi2SetReal);
+    LOAD(fmi2SetInteger);
     LOAD(fmi2GetFMUstate); LOAD(fmi2SetFMUstate); LOAD(fmi2FreeFMUstate);
     LOAD(fmi2SerializedFMUstateSize); LOAD(fmi2SerializeFMUstate); LOAD(fmi2DeSerializeFMUstate);
     LOAD(fmi2Terminate); LOAD(fmi2FreeInstance);
@@ -50,6 +66,8 @@ int main(int argc, char** argv) {
     fmi2Component c = fmi2Instantiate("state_host", fmi2CoSimulation, argv[2], "", &callbacks,
                                       fmi2False, fmi2False);
     if (!c) fail("fmi2Instantiate");
+    for (const auto& [vr, value] : reals) check(fmi2SetReal(c, &vr, 1, &value), "fmi2SetReal");
+    for (const auto& [vr, value] : integers) check(fmi2SetInteger(c, &vr, 1, &value), "fmi2SetInteger");
     check(fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0), "fmi2SetupExperiment");
     check(fmi2EnterInitializationMode(c), "fmi2EnterInitializationMode");
     check(fmi2ExitInitializationMode(c), "fmi2ExitInitializationMode");

@@ -28,14 +28,24 @@ from fmpy.logging import addLoggerProxy
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
+# Where the wheel (contactbody.release) puts the FMUs: package data, beside this file.
+PACKAGED = pathlib.Path(__file__).resolve().parent / "fmus"
+
+
 def find_fmu(path: str | os.PathLike | None = None) -> pathlib.Path:
     """The FMU to use: `path` if given, else $CONTACTBODY_FMU, else build/ContactBody.fmu of
-    this checkout (scripts/setup.sh builds it there)."""
-    candidate = pathlib.Path(path or os.environ.get("CONTACTBODY_FMU") or
-                             ROOT / "build" / "ContactBody.fmu").expanduser().resolve()
+    this checkout (scripts/setup.sh builds it there), else the one the installed wheel carries.
+    The companion FMUs (BeltDrive, Press) are found beside it."""
+    chosen = path or os.environ.get("CONTACTBODY_FMU")
+    if chosen:
+        candidate = pathlib.Path(chosen).expanduser().resolve()
+    else:
+        built = ROOT / "build" / "ContactBody.fmu"
+        candidate = built if built.is_file() else PACKAGED / "ContactBody.fmu"
     if not candidate.is_file():
-        raise FileNotFoundError(f"no FMU at {candidate}: build it with scripts/setup.sh, or "
-                                "give its path (argument or CONTACTBODY_FMU)")
+        raise FileNotFoundError(f"no FMU at {candidate}: build it with scripts/setup.sh, install "
+                                "the contactbody wheel that carries it, or give its path "
+                                "(argument or CONTACTBODY_FMU)")
     return candidate
 
 

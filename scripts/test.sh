@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
 # Sets everything up (scripts/setup.sh), then runs the C++ solver tests and the pytest suite on
-# the FMU users get (build/ContactBody.fmu: its linux64 binary), then the Windows job (its win64
-# binary under wine, through fmpy's remoting: platforms.json), then the C++ tests and the pytest suite against
-# a native build with AddressSanitizer and UndefinedBehaviorSanitizer.
-# SKIP_WINDOWS=1 and SKIP_SANITIZERS=1 skip those jobs (for a quick local run).
+# the FMU users get (build/ContactBody.fmu: its linux64 binary), then the other platforms' jobs
+# (platforms.json: the aarch64 binary under qemu-user, the win64 binary under wine through
+# fmpy's remoting), then the C++ tests and the pytest suite against a native build with
+# AddressSanitizer and UndefinedBehaviorSanitizer.
+# SKIP_PLATFORMS=1 and SKIP_SANITIZERS=1 skip those jobs (for a quick local run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 (cd build && /usr/bin/ctest --output-on-failure)
 .venv/bin/python -m pytest python_tests "$@"
 
-if [ "${SKIP_WINDOWS:-0}" != 1 ]; then
-    # Each other platform's job, as platforms.json says (win64: its binary under wine, through
-    # fmpy's remoting).
+if [ "${SKIP_PLATFORMS:-0}" != 1 ]; then
+    # Each other platform's job, as platforms.json says.
     .venv/bin/python -m contactbody.platforms test-jobs "$@"
 fi
 

@@ -10,9 +10,11 @@ linearized about every node touching. Where no admissible steady sliding state
 exists (F >= 1.3 here: the clamped body wedges) the row has no growth rates.
 About 30 min on 2 cores (the nx = 40 eigenvalues dominate).
 
-Writes OUT/damped_stability.png, .json and .md (the table of the smallest stabilizing beta).
+Writes OUT/damped_stability.png, .json and .md (the table of the smallest stabilizing beta);
+with --full-contact OUT/damped_stability_full_contact.* (docs/paper_results.md generates its
+full-contact table from the .json: --full-contact --friction 0.3,0.5,1.2, 15 min).
 
-    .venv/bin/python examples/damped_stability.py [--finest NX] [--out DIR]
+    .venv/bin/python examples/damped_stability.py [--finest NX] [--friction F,...] [--out DIR]
 """
 import argparse
 import concurrent.futures
@@ -68,24 +70,29 @@ def main():
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "examples" / "output")
     parser.add_argument("--full-contact", action="store_true",
                         help="linearize about every node touching (the full-contact map)")
+    parser.add_argument("--friction", help="only these F, comma-separated (default 0 ... 2)")
     parser.add_argument("--replot", action="store_true",
                         help="redo the table and figure from OUT/damped_stability.json")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
+    name = "damped_stability_full_contact" if args.full_contact else "damped_stability"
     if args.replot:
-        rows = json.loads((args.out / "damped_stability.json").read_text())["rows"]
+        rows = json.loads((args.out / f"{name}.json").read_text())["rows"]
     else:
         frictions = {n: np.round(np.arange(0, 2.0001, 0.1), 2) for n in (5, 10, 20)}
         # nx = 40 (3239 dofs) takes 2-4 min per F: up to F = 1.5 (none beyond 1.25 has a
         # steady state on the coarser meshes).
         frictions[40] = np.round(np.arange(0, 1.5001, 0.1), 2)
+        if args.friction:
+            chosen = [float(f) for f in args.friction.split(",")]
+            frictions = {n: chosen for n in frictions}
         jobs = [(nx, float(F)) for nx in frictions if nx <= args.finest for F in frictions[nx]]
         with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
             rows = list(pool.map(lambda job: analyse(*job, lift_off=not args.full_contact),
                                  jobs))
         for r in rows:
             r["critical_beta"] = critical_beta(r["growth"])
-        (args.out / "damped_stability.json").write_text(json.dumps(
+        (args.out / f"{name}.json").write_text(json.dumps(
             {"betas": BETAS.tolist(), "lift_off": not args.full_contact, "rows": rows}, indent=1))
 
     sizes = sorted({r["nx"] for r in rows})
@@ -105,7 +112,7 @@ def main():
                          "-" if cb is None else f"{cb:.1e}")
         lines.append(f"| {F:g} | " + " | ".join(cells) + " |")
     table = "\n".join(lines)
-    (args.out / "damped_stability.md").write_text(table + "\n")
+    (args.out / f"{name}.md").write_text(table + "\n")
     print(table)
 
     fig, axes = plt.subplots(1, len(sizes), figsize=(3.6 * len(sizes), 3.6), sharey=True)
@@ -120,8 +127,8 @@ def main():
     np.atleast_1d(axes)[0].set_ylabel("β [µs]")
     fig.colorbar(mesh, ax=axes, label="sign(Re s)·log10(1 + |Re s|), Re s in 1/s")
     fig.suptitle("Damped steady sliding: largest growth rate (black: Re s = 0; blue: stable)")
-    fig.savefig(args.out / "damped_stability.png", dpi=110, bbox_inches="tight")
-    print(f"\nwrote {args.out / 'damped_stability.png'}")
+    fig.savefig(args.out / f"{name}.png", dpi=110, bbox_inches="tight")
+    print(f"\nwrote {args.out / f'{name}.png'}")
 
 
 if __name__ == "__main__":

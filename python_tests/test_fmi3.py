@@ -13,6 +13,7 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
+from contactbody import platforms
 from conftest import FMU, PLATFORM, SANITIZED, extract_for
 
 pytestmark = pytest.mark.skipif(PLATFORM != "linux64", reason="the FMI 3.0 FMU is tested on linux64")
@@ -89,8 +90,8 @@ def edge_shares(x):
 
 def test_fmpy_validates_the_fmi3_fmu_and_it_carries_the_same_binary():
     assert validate_fmu(str(FMU3)) == []
-    pairs = {"linux64/ContactBody.so": "x86_64-linux/ContactBody.so",
-             "win64/ContactBody.dll": "x86_64-windows/ContactBody.dll"}
+    pairs = {f"{p['name']}/ContactBody{p['library_suffix']}":
+             f"{p['fmi3_tuple']}/ContactBody{p['library_suffix']}" for p in platforms.platforms()}
     with zipfile.ZipFile(FMU) as z2, zipfile.ZipFile(FMU3) as z3:
         two = sorted(n[len("binaries/"):] for n in z2.namelist() if n.startswith("binaries/"))
         three = sorted(n[len("binaries/"):] for n in z3.namelist() if n.startswith("binaries/"))

@@ -74,6 +74,32 @@ def stick_share_beyond_50mm(data):
     return max(share for x, share in zip(data["x_mm"], data["stick_share_after_3ms"]) if x > 50)
 
 
+def _getfem_pairs(data):
+    """(GetFEM row, the FMU's standard row) of the work-precision run at the same settings."""
+    key = lambda r: (r["scene"], r["ladder"], r["h"], r["dt"])  # noqa: E731
+    fmu = {key(r): r for r in data["rows"] if r["variant"] == "standard"}
+    return [(r, fmu[key(r)]) for r in data["rows"] if r["variant"].startswith("GetFEM")]
+
+
+def _getfem(statistic):
+    values = {
+        "ratio": lambda g, f: g["time"] / f["time"],
+        "getfem_ms": lambda g, f: 1e3 * g["time"] / g["substeps"],
+        "fmu_us": lambda g, f: 1e6 * f["time"] / f["substeps"]}[statistic]
+    return lambda data: [values(g, f) for g, f in _getfem_pairs(data)]
+
+
+def _register_extremes(name, values):
+    DERIVED[f"{name}_min"] = lambda data: min(values(data))
+    DERIVED[f"{name}_max"] = lambda data: max(values(data))
+
+
+for _statistic in ("ratio", "getfem_ms", "fmu_us"):
+    _register_extremes(f"getfem_{_statistic}", _getfem(_statistic))
+_register_extremes("getfem_ms_at_nx20", lambda data: [
+    1e3 * g["time"] / g["substeps"] for g, _ in _getfem_pairs(data) if g["h"] == 0.005])
+
+
 def sci(value, digits=2):
     """1.2e5, 4.82e-3: `digits` significant digits, exponent without padding."""
     if value == 0:

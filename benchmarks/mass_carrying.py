@@ -16,13 +16,11 @@ import subprocess
 
 import numpy as np
 
+from reduced_body_fmu import l2
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 MODES, FACTORS, ALLOWED = (40, 160), (1, 4, 16), 0.05
 INTERVAL = {"impact": 1e-5, "sliding": 1e-4}  # the scenes' output steps: a substep is at most one
-
-
-def l2(x, ref):
-    return float(np.sqrt(np.sum((x - ref) ** 2) / np.sum(ref ** 2)))
 
 
 def measure(nx, modes):

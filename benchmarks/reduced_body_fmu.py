@@ -52,6 +52,7 @@ def run(md, unzipped, values):
 
 
 def l2(x, ref):
+    """The relative L2 difference of two time series (also benchmarks/mass_carrying.py's)."""
     return float(np.sqrt(np.sum((x - ref) ** 2) / np.sum(ref ** 2)))
 
 

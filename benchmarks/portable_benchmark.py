@@ -9,6 +9,9 @@ patchelf, which scripts/setup.sh installs). "After" is build/ (scripts/setup.sh)
 Writes benchmarks/results/portable.md and portable.json.
 
     .venv/bin/python benchmarks/portable_benchmark.py [--rounds N]
+    .venv/bin/python benchmarks/portable_benchmark.py --startup-only   # build/'s share only
+
+--startup-only measures build/ alone (no "before" build) and writes benchmarks/results/startup.json.
 """
 import argparse
 import json
@@ -106,7 +109,26 @@ def median_and_range(values):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--startup-only", action="store_true",
+                        help="only build/'s start-up share and its pieces (startup.json)")
     args = parser.parse_args()
+    if args.startup_only:
+        fmu = ROOT / "build" / "ContactBody.fmu"
+        simulate_seconds(fmu, 1e-4)
+        shares = [simulate_seconds(fmu, 1e-4) / simulate_seconds(fmu, 0.02)
+                  for _ in range(args.rounds)]
+        s = median_and_range(shares)
+        pieces = [startup_pieces(fmu) for _ in range(args.rounds)]
+        result = {"rounds": args.rounds, "share": s, "zipped_MB": fmu.stat().st_size / 1e6,
+                  "pieces_ms": {p: statistics.median(1e3 * r[p] for r in pieces)
+                                for p in pieces[0]}}
+        OUT.mkdir(parents=True, exist_ok=True)
+        (OUT / "startup.json").write_text(json.dumps(result, indent=1) + "\n")
+        print(f"start-up share of a default simulate_fmu: {100 * s['median']:.1f} % "
+              f"(range {100 * s['min']:.1f}-{100 * s['max']:.1f} %, {args.rounds} rounds)")
+        for piece, ms in result["pieces_ms"].items():
+            print(f"  {piece}: {ms:.1f} ms")
+        return
     builds = {"before": build_before(),
               "after": {"fmu": ROOT / "build" / "ContactBody.fmu",
                         "bench": ROOT / "build" / "linux64" / "bench_substep"}}

@@ -102,11 +102,6 @@ void check_parameters(const SceneParameters& p) {
     if (!(std::isfinite(p.damping_stiffness) && p.damping_stiffness >= 0))
         reject("damping_stiffness", "finite and >= 0", p.damping_stiffness);
     if (p.modes < 0) reject("modes", ">= 0 (0: the full body)", p.modes);
-    if (p.modes > 0 && p.force_control)
-        throw std::invalid_argument(
-            "modes = " + std::to_string(p.modes) + " (the reduced body) needs top_control = "
-            "displacement: under force control the plate and the body translate freely, and "
-            "the reduced body's basis is built on a clamped top; use modes = 0");
 }
 
 Discretization discretize(const SceneParameters& p) {

@@ -133,9 +133,9 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
     const auto start = std::chrono::steady_clock::now();
     if (d.plate_index >= 0)
         throw std::invalid_argument(
-            "modes > 0 needs top_control = displacement: under force control the body and the "
-            "plate translate freely until contact, and the residual flexibility needs inertia "
-            "relief (not built)");
+            "build_modal_basis needs a clamped top: under force control the body and the plate "
+            "translate freely (the reduced body builds its basis on the clamped body and adds "
+            "the translation)");
     const int finite = finite_mode_count(d);
     if (modes < 1 || modes > finite)
         throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +

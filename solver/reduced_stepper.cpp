@@ -6,9 +6,23 @@
 
 namespace contactbody {
 
+namespace {
+// The body with its top clamped (the basis' discretization under force control).
+Discretization clamped_discretization(const SceneParameters& p) {
+    SceneParameters clamped = p;
+    clamped.force_control = false;
+    return discretize(clamped);
+}
+}  // namespace
+
 ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
-    : params_(params), disc_(discretize(params)), basis_(build_modal_basis(disc_, modes)) {
-    const Discretization& d = disc_;
+    : params_(params),
+      disc_(discretize(params)),
+      clamped_(params.force_control ? std::optional<Discretization>(clamped_discretization(params))
+                                    : std::nullopt),
+      basis_(build_modal_basis(basis_disc(), modes)),
+      plate_mass_(params.force_control ? params.top_mass : 0.0) {
+    const Discretization& d = basis_disc();
     const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols(), n = m + k;
     nf_ = static_cast<Eigen::Index>(d.free_dofs.size());
     omega2_.resize(n);
@@ -100,7 +114,7 @@ void ReducedStepper::restart(const SceneParameters& params) {
 
 std::string ReducedStepper::summary() const {
     std::ostringstream msg;
-    msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(disc_)
+    msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(basis_disc())
         << " finite) and " << basis_.residual.cols() << " residual attachment modes of the "
         << num_contact_nodes() << " contact nodes; basis "
         << (restarts_ > 0 ? "kept from the last run (built" : "built") << " in "
@@ -111,8 +125,8 @@ std::string ReducedStepper::summary() const {
 }
 
 State ReducedStepper::from_full(const State& full) const {
-    const Discretization& d = disc_;
-    const int top_dof = d.clamped_dofs.back();  // a clamped y dof: the top's value
+    const Discretization& d = basis_disc();
+    const int top_dof = d.top_y_dof();  // the clamp's (or the plate's) value
     const Eigen::Index n = size();
     State s;
     s.u.resize(n + 2);
@@ -139,7 +153,7 @@ State ReducedStepper::from_full(const State& full) const {
 }
 
 void ReducedStepper::to_full(const State& s, State& full) const {
-    const Discretization& d = disc_;
+    const Discretization& d = basis_disc();
     const Eigen::Index m = basis_.modes.cols(), n = size();
     const Eigen::VectorXd u = basis_.modes * s.u.head(m) + basis_.residual * s.u.segment(m, n - m) +
                               basis_.lift * s.u[n];
@@ -169,7 +183,8 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     const auto z = s.u.head(n), zdot = s.v.head(n);
     const double tau = s.v[n], tc = s.v[n + 1], top = s.u[n + 1], gap = s.u[n] - top;
     const double kinetic = 0.5 * zdot.cwiseAbs2().dot(mass_) + zdot.dot(m_s_ * tau + m_c_ * tc) +
-                           0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc);
+                           0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) +
+                           0.5 * plate_mass_ * tc * tc;
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
     const double strain = 0.5 * z.cwiseAbs2().dot(omega2_) + z.dot(a_s_) * gap +
@@ -233,6 +248,17 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
     ops->inverse_stiffness = (c1 * mass_ + c2 * damping_ + omega2_).cwiseInverse();
     ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
+    if (params_.force_control) {
+        // The plate's row: the lift's mass with the plate's (C has the body's mass only), and
+        // no stiffness (A S = 0). W gains the rank-one g g^T / schur, g = B S - c B T h.
+        const double c = c1 + c2 * params_.damping_mass;
+        const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_;
+        const double k_pp = c1 * (mass_tt + plate_mass_) + c2 * params_.damping_mass * mass_tt;
+        ops->plate_coupling = ops->inverse_stiffness.cwiseProduct(m_t_);
+        ops->plate_schur = k_pp - c * c * m_t_.dot(ops->plate_coupling);
+        const Eigen::VectorXd g = Blift_ - c * (Bhat_ * ops->plate_coupling);
+        ops->delassus += g * g.transpose() / ops->plate_schur;
+    }
     cache_[0] = std::move(ops);
     ++operator_builds_;
     return *cache_[0];
@@ -265,10 +291,21 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // The midpoint equation on z with the clamp's midpoint increment w_t (no stiffness
     // coupling: the lift is the clamp's static response):
     //   K_hat w = 2/dt (M_hat zdot + m_t top_rate) - A_hat z - (4/dt^2 + 2/dt alpha) m_t w_t + B_hat^T lambda.
-    const double w_t = 0.5 * (load.top_start + load.top_end) - top;
+    // Under force control w_t is the plate's, an unknown: its row
+    //   c m_t^T w + k_pp w_t = 2/dt (m_t^T zdot + (m_lift + m_p) v_p) - top_force + (B S)^T lambda
+    // is eliminated through the Schur complement (build_operators).
+    const double c = c1 + c2 * alpha;
+    const bool plate = params_.force_control;
+    double w_t = plate ? 0.0 : 0.5 * (load.top_start + load.top_end) - top;
     rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
-           omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - (c1 + c2 * alpha) * w_t * m_t_;
+           omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
     w_ = ops.inverse_stiffness.cwiseProduct(rhs_);
+    const double plate_mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_ + plate_mass_;
+    if (plate) {
+        w_t = (c2 * (m_t_.dot(zdot) + plate_mass_tt * top_rate) - load.top_force - c * m_t_.dot(w_)) /
+              ops.plate_schur;
+        w_ -= c * w_t * ops.plate_coupling;
+    }
     contact_u_.noalias() = Bhat_ * z;
     contact_u_ += Blift_ * lift_at;  // B u^k: (-u_y, u_x) of the contact nodes
     contact_v_.noalias() = Bhat_ * zdot;
@@ -290,6 +327,12 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         report.contact_solved = true;
         contact_force_.noalias() = Bhat_.topRows(unknowns).transpose() * s.lambda;
         w_ += ops.inverse_stiffness.cwiseProduct(contact_force_);
+        if (plate) {  // the plate's share of the contact forces' response
+            const double dw_t = (Blift_.head(unknowns).dot(s.lambda) -
+                                 c * ops.plate_coupling.dot(contact_force_)) / ops.plate_schur;
+            w_ -= c * dw_t * ops.plate_coupling;
+            w_t += dw_t;
+        }
         bw_.noalias() = Bhat_ * w_;
         bw_ += Blift_ * w_t;
     } else {
@@ -316,7 +359,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt * du_t) + beta * stiffness_tt * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
-    report.work.clamp = r * du_t;
+    // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy
+    // is in E).
+    report.work.clamp = plate ? -load.top_force * du_t : r * du_t;
     // The clamped x rows' residual (they do not move: no work), recovered from the basis as
     // the full body's: M_cf a + A_cf u^{k+1/2} + A_cc u_c^{k+1/2} + C_cf vbar.
     const double mass_x = clamp_x_.mass.dot(c1 * w_ - c2 * zdot) +
@@ -340,8 +385,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     z += 2 * w_;
     lift_rate = 2 * c2 * w_t - lift_rate;
     lift_at += du_t;
-    top = load.top_end;
-    top_rate = load.top_rate;
+    top = plate ? lift_at : load.top_end;
+    top_rate = plate ? lift_rate : load.top_rate;
     s.time += dt;
     return report;
 }

@@ -3,11 +3,15 @@
 // T = [modes, residual] plus the clamp's lift, u_free = T z + lift * top, with the residual
 // massless. The step matrix is diagonal; the contact problem's Delassus operator is dense
 // 2 n_c square. With every finite mode it is the full body in other coordinates.
-// Displacement control only (the basis refuses force control).
+// Under force control the basis is the clamped body's, and the lift (the body's rigid vertical
+// translation, since A annihilates translations) carries the plate: its coordinate is then an
+// unknown with the plate's and the body's mass, coupled to the modes through the mass only,
+// and the step matrix is the diagonal bordered by that one row.
 #pragma once
 
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "contact_solver.hpp"
 #include "modal_basis.hpp"
@@ -21,8 +25,9 @@ namespace contactbody {
 // top and top_rate are the clamp's displacement and velocity, and lift_at the lift's
 // coordinate in the free dofs, u_free = T z + lift * lift_at. The lift moves with the clamp's
 // midpoint increments, as the full body's free dofs do, so it differs from top after a jump
-// of a held input (set_clamp), and its rate from top_rate. lambda and sticking are as in
-// the full body.
+// of a held input (set_clamp), and its rate from top_rate. Under force control lift_at and
+// top are both the plate's displacement (and their rates its velocity). lambda and sticking
+// are as in the full body.
 using ReducedState = State;
 
 class ReducedStepper : public Body {
@@ -43,7 +48,7 @@ public:
     void to_full(const State& s, State& full) const override;
     State initial_state(double top_displacement) const override;
     // E = 1/2 v^T M v + 1/2 u^T A u of u = (T z + S lift_at, e top), v likewise, with the
-    // residual massless: the reduced body's own energy.
+    // residual massless, plus the plate's 1/2 m_p v_top^2: the reduced body's own energy.
     double energy(const ReducedState& s) const;
     std::pair<double, double> kinetic_and_strain_energy(const State& s) override;
     double top_position(const State& s) const override { return s.u[size() + 1]; }
@@ -73,12 +78,21 @@ private:
         double dt = 0;
         Eigen::VectorXd inverse_stiffness;  // 1 / diag(4/dt^2 M + 2/dt C + A)
         Eigen::MatrixXd delassus;           // B T K^-1 T^T B^T, (N, T) x (N, T)
+        // Force control, the plate's bordered row: K = [D, c m_t; c m_t^T, k_pp] with
+        // c = 4/dt^2 + 2/dt alpha, h = D^-1 m_t, and its Schur complement k_pp - c^2 m_t^T h.
+        Eigen::VectorXd plate_coupling;     // h
+        double plate_schur = 0;
     };
     const StepOperators& operators_for(double dt);
 
     SceneParameters params_;
     Discretization disc_;
+    // Force control: the clamped body (the plate's y dofs held), on which the basis is built;
+    // its free dofs are disc_'s. basis_disc() is the one the basis' rows refer to.
+    std::optional<Discretization> clamped_;
+    const Discretization& basis_disc() const { return clamped_ ? *clamped_ : disc_; }
     ModalBasis basis_;
+    double plate_mass_ = 0;  // force control: the plate's own mass (kg/m), else 0
     Eigen::VectorXd omega2_;   // diag(A_hat): modal omega^2, then 1 for the residual
     Eigen::VectorXd mass_;     // diag(M_hat): 1 for the modes, 0 for the residual
     Eigen::MatrixXd Bhat_;     // B T: signed rows of the basis at the contact unknowns (N, T)

@@ -123,7 +123,8 @@ void Simulation::static_initial_state(double top, double force) {
     SceneParameters clamped = p;
     clamped.force_control = false;
     clamped.initial_gap = 0;
-    clamped.modes = 0;  // force control is the full body's alone (check_parameters)
+    clamped.modes = 0;  // the full body's path; a reduced body takes its projection (exact:
+                        // the static response to edge forces is in its basis)
     Stepper path_stepper(clamped);
     const double probe = -1e-4 * p.height;
     const State s = quasi_static_path(path_stepper, probe);
@@ -135,11 +136,14 @@ void Simulation::static_initial_state(double top, double force) {
         throw std::invalid_argument("initial_state = static: the clamped load path carries no "
                                     "force; use initial_state = paper");
     const double scale = force / pressing;
-    state_.u = scale * s.u;
-    for (Eigen::Index dof = 1; dof < state_.u.size(); dof += 2) state_.u[dof] -= p.initial_gap;
-    state_.v.setZero();
-    state_.lambda = scale * s.lambda;
-    state_.sticking = s.sticking;
+    State full;
+    full.u = scale * s.u;
+    for (Eigen::Index dof = 1; dof < full.u.size(); dof += 2) full.u[dof] -= p.initial_gap;
+    full.v.setZero(full.u.size());
+    full.lambda = scale * s.lambda;
+    full.sticking = s.sticking;
+    full.time = state_.time;
+    state_ = body_->from_full(full);
 }
 
 // Before the first step the outputs describe the initial state. A bottom node touches the

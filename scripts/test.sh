@@ -5,11 +5,13 @@
 # fmpy's remoting), then the C++ tests and the pytest suite against a native build with
 # AddressSanitizer and UndefinedBehaviorSanitizer.
 # SKIP_PLATFORMS=1 and SKIP_SANITIZERS=1 skip those jobs (for a quick local run).
+# The two pytest suites run on every core (pytest-xdist, a module's tests on one worker, so that
+# its fixtures are made once); the platform jobs run serially (wine's remoting uses one port).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 (cd build && /usr/bin/ctest --output-on-failure)
-.venv/bin/python -m pytest python_tests "$@"
+.venv/bin/python -m pytest -n auto --dist loadscope python_tests "$@"
 
 if [ "${SKIP_PLATFORMS:-0}" != 1 ]; then
     # Each other platform's job, as platforms.json says.
@@ -31,5 +33,5 @@ if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then
     LD_PRELOAD="$(gcc -print-file-name=libasan.so):$(gcc -print-file-name=libstdc++.so)" \
         CONTACTBODY_SANITIZED=1 FUZZ_EXAMPLES="${FUZZ_EXAMPLES:-2000}" \
         CONTACTBODY_FMU="$PWD/build-sanitize/ContactBody.fmu" \
-        .venv/bin/python -m pytest python_tests "$@"
+        .venv/bin/python -m pytest -n auto --dist loadscope python_tests "$@"
 fi

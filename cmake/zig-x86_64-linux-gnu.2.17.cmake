@@ -3,5 +3,3 @@
 set(CMAKE_SYSTEM_PROCESSOR x86_64)
 set(CONTACTBODY_TARGET x86_64-linux-gnu.2.17)
 include(${CMAKE_CURRENT_LIST_DIR}/zig.cmake)
-# LAPACK's Fortran: plain gfortran objects (no Fortran runtime is called, see third_party/).
-set(CMAKE_Fortran_COMPILER gfortran)

@@ -167,8 +167,9 @@ def test_fmu_is_small_and_carries_the_licences():
 
 @pytest.mark.parametrize("name", ["ContactBody", "ContactBody_fmi3", "BeltDrive", "Press"])
 def test_no_fmu_carries_sources(name):
-    """No sources/ (docs/building.md): a complete source FMU would need Eigen, SuiteSparse and
-    Fortran LAPACK, which an importer's C compile cannot build, and FMI 3.0 ties sources/ to
+    """No sources/ (docs/building.md): a complete source FMU would need Eigen (C++),
+    SuiteSparse and the LAPACK routines that f2c translates at build time, which an importer's
+    C compile cannot build, and FMI 3.0 ties sources/ to
     a buildDescription.xml; an incomplete sources/ promised what it could not do."""
     with zipfile.ZipFile(FMU.with_name(f"{name}.fmu")) as z:
         assert not [n for n in z.namelist() if n.startswith("sources/")]

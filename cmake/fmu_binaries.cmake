@@ -8,6 +8,13 @@ function(make_self_contained target)
   if(WIN32)
     # The C and C++ runtimes and winpthreads linked in: imports only Windows' own DLLs.
     target_link_options(${target} PRIVATE -static -s -Wl,--gc-sections)
+  elseif(CONTACTBODY_ZIG AND APPLE)
+    # zig links its libc++ in and signs the dylib ad hoc. Its Mach-O linker takes no list of
+    # exports: hidden visibility leaves the FMI functions (default visibility by the FMI
+    # headers) and the two symbols every dylib has (python_tests/test_portable.py).
+    target_link_options(${target} PRIVATE -s -Wl,-dead_strip)
+    # Its own name without the build's path (an FMU is loaded by path, never linked against).
+    set_target_properties(${target} PROPERTIES BUILD_WITH_INSTALL_NAME_DIR ON INSTALL_NAME_DIR @rpath)
   elseif(CONTACTBODY_ZIG)
     # zig links its libc++ in; glibc symbols no newer than the target's 2.17.
     target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/fmu_src/zig_static_destructors.cpp)
@@ -19,7 +26,7 @@ function(make_self_contained target)
     target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc -Wl,--exclude-libs,ALL
                         -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/fmi_exports.map)
   endif()
-  if(NOT WIN32)
+  if(NOT WIN32 AND NOT APPLE)  # (Mach-O links refuse undefined symbols by default)
     target_link_options(${target} PRIVATE -Wl,--no-undefined)
   endif()
 endfunction()

@@ -2,7 +2,11 @@
 # CONTACTBODY_TARGET): zig's clang with its own glibc stubs and libc++ linked in (ziglang from
 # PyPI, pinned in requirements.txt). ZIG: path of the zig executable (the top-level build
 # passes it; else zig on PATH).
-set(CMAKE_SYSTEM_NAME Linux)
+# CONTACTBODY_SYSTEM_NAME: Linux unless the toolchain file says Darwin.
+if(NOT CONTACTBODY_SYSTEM_NAME)
+  set(CONTACTBODY_SYSTEM_NAME Linux)
+endif()
+set(CMAKE_SYSTEM_NAME ${CONTACTBODY_SYSTEM_NAME})
 if(NOT ZIG)
   find_program(ZIG zig REQUIRED)
 endif()

@@ -59,6 +59,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     mu_ss_ = S.dot(MS);
     mu_cs_ = S.dot(Me);
     mu_cc_ = all_e.dot(d.M * all_e);
+    mass_tt_ = mu_ss_ + 2 * mu_cs_ + mu_cc_;
     s_ss_ = S.dot(AS);
     e_cc_ = all_e.dot(d.A * all_e);
 
@@ -252,8 +253,7 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
         // The plate's row: the lift's mass with the plate's (C has the body's mass only), and
         // no stiffness (A S = 0). W gains the rank-one g g^T / schur, g = B S - c B T h.
         const double c = c1 + c2 * params_.damping_mass;
-        const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_;
-        const double k_pp = c1 * (mass_tt + plate_mass_) + c2 * params_.damping_mass * mass_tt;
+        const double k_pp = c1 * (mass_tt_ + plate_mass_) + c2 * params_.damping_mass * mass_tt_;
         ops->plate_coupling = ops->inverse_stiffness.cwiseProduct(m_t_);
         ops->plate_schur = k_pp - c * c * m_t_.dot(ops->plate_coupling);
         const Eigen::VectorXd g = Blift_ - c * (Bhat_ * ops->plate_coupling);
@@ -300,10 +300,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
            omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
     w_ = ops.inverse_stiffness.cwiseProduct(rhs_);
-    const double plate_mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_ + plate_mass_;
     if (plate) {
-        w_t = (c2 * (m_t_.dot(zdot) + plate_mass_tt * top_rate) - load.top_force - c * m_t_.dot(w_)) /
-              ops.plate_schur;
+        w_t = (c2 * (m_t_.dot(zdot) + (mass_tt_ + plate_mass_) * top_rate) - load.top_force -
+               c * m_t_.dot(w_)) / ops.plate_schur;
         w_ -= c * w_t * ops.plate_coupling;
     }
     contact_u_.noalias() = Bhat_ * z;
@@ -343,10 +342,10 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // whose A part does not couple z with the lift and clamp (A_fc e = -A_ff S).
     const double du_t = 2 * w_t;
     du_ = 2 * w_;
-    const double mass_tt = mu_ss_ + 2 * mu_cs_ + mu_cc_, stiffness_tt = e_cc_ - s_ss_;
+    const double stiffness_tt = e_cc_ - s_ss_;
     if (params_.damped())
         report.work.damping = (du_.cwiseAbs2().dot(damping_) + 2 * du_t * alpha * m_t_.dot(du_) +
-                               (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) / dt;
+                               (alpha * mass_tt_ + beta * stiffness_tt) * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the
     // residual of the reduced equations' rows of both (lift and clamp), less the contact
@@ -356,7 +355,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     double r = m_t_.dot(c1 * w_ - c2 * zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
                (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + stiffness_tt * (top + w_t);
     if (params_.damped())
-        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt * du_t) + beta * stiffness_tt * du_t);
+        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt_ * du_t) + beta * stiffness_tt * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy

@@ -4,6 +4,7 @@ import ctypes
 import os
 import pathlib
 import shutil
+import socket
 import tempfile
 import time
 
@@ -51,6 +52,16 @@ def _remoting_port_listens():
 
 
 if PLATFORM == "win64":
+    # fmpy's remoting client connects to "localhost". Where that name does not resolve (a bare
+    # debootstrap chroot has no /etc/hosts) every remoting test failed with fmpy's "Failed to
+    # instantiate model" while the server listened: say so once instead.
+    try:
+        socket.getaddrinfo("localhost", 8080, type=socket.SOCK_STREAM)
+    except socket.gaierror as error:
+        raise RuntimeError(f"the Windows job needs 'localhost' to resolve ({error}): fmpy's "
+                           "remoting client connects to its wine server there; add "
+                           "'127.0.0.1 localhost' to /etc/hosts") from None
+
     # fmpy's client kills its wine server when the instance is freed, but wineserver closes
     # the server's listening socket a moment later: a next instance's client that connects in
     # between reaches the dead server and waits forever (seen in CI). Wait for the port.

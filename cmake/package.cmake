@@ -86,7 +86,8 @@ endif()
 #         LICENSES files LICENSE_NAMES names): one .fmu in the build folder. No sources/: a
 # source FMU that an importer could compile would need Eigen, the SuiteSparse subset and the
 # LAPACK routines' C form that f2c makes at build time, which fmpy's compile step cannot
-# build, and FMI 3.0 ties sources/ to a buildDescription.xml; the sources are this repository (docs/building.md).
+# build, and FMI 3.0 ties sources/ to a buildDescription.xml; the sources are this repository
+# (docs/building.md).
 function(add_fmu name)
   cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
   set(dir ${CMAKE_BINARY_DIR}/fmu/${name})

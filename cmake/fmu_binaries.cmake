@@ -18,7 +18,11 @@ function(make_self_contained target)
   elseif(CONTACTBODY_ZIG)
     # zig links its libc++ in; glibc symbols no newer than the target's 2.17.
     target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/fmu_src/zig_static_destructors.cpp)
-    target_link_options(${target} PRIVATE -s -Wl,--gc-sections
+    # -u __udivti3 links zig's compiler_rt in, whose exp, log, floor, ceil and sqrt then take
+    # the place of the host glibc's: the slip-rate law's exp gives the same bits on every Linux
+    # (glibc's exp differs between versions, and its FMA variant between processors). Without
+    # it, whether compiler_rt came in depended on what else the binary used (<sstream> did).
+    target_link_options(${target} PRIVATE -s -Wl,--gc-sections -Wl,-u,__udivti3
                         -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/fmi_exports.map)
   elseif(NOT CONTACTBODY_SANITIZE)
     # The native build (not what users get): libstdc++ and libgcc inside, symbols hidden.
@@ -42,8 +46,8 @@ make_self_contained(ContactBody)
 
 foreach(companion IN LISTS COMPANIONS)
   add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model}
-              fmu_src/resource_start_values.cpp)
-  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR} fmu_src)
+              fmu_src/resource_start_values.cpp solver/text.cpp solver/c_file.cpp)
+  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR} fmu_src solver)
   target_compile_definitions(${companion} PRIVATE FMI2_FUNCTION_PREFIX=)
   make_self_contained(${companion})
   # fmi2Functions.h declares the entry points with default visibility (dllexport on Windows).

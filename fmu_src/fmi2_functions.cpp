@@ -3,7 +3,6 @@
 // turns the model's exceptions into fmi2Status and a log message naming the function.
 #include <cmath>
 #include <cstring>
-#include <sstream>
 #include <memory>
 #include <new>
 

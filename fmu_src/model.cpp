@@ -1,10 +1,10 @@
 #include "model.hpp"
 
-#include <filesystem>
-#include <locale>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "c_file.hpp"
+#include "text.hpp"
 
 namespace contactbody::fmu {
 
@@ -12,7 +12,7 @@ namespace {
 
 template <class... Parts>
 std::string concat(const Parts&... parts) {
-    std::ostringstream s;
+    Text s;
     s.precision(17);
     (s << ... << parts);
     return s.str();
@@ -40,10 +40,8 @@ void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std
             set_string(*v, text.c_str(), false);
             continue;
         }
-        std::istringstream in(text);
-        in.imbue(std::locale::classic());  // '.' as the decimal point, whatever the host's
         double x = 0;
-        if (!(in >> x) || !(in >> std::ws).eof())
+        if (!parse_number(text, x))
             throw ModelError(concat("resources/start_values.txt: ", name, " = '", text,
                                     "' is not a number"));
         if (v->real) set_real(*v, x, false);
@@ -193,7 +191,7 @@ void ContactBodyModel::open_field_output() {
                                                 values_.result_directory);
         if (values_.edge_output_interval > 0)
             edge_ = std::make_unique<EdgeWriter>(
-                (std::filesystem::path(values_.result_directory) / "contactbody_edge.npy").string(),
+                join_path(values_.result_directory, "contactbody_edge.npy"),
                 sim_->body().num_contact_nodes());
     } catch (const std::exception& e) {
         throw ModelError(e.what());

@@ -1,8 +1,10 @@
 #include "resource_start_values.hpp"
 
+#include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <stdexcept>
+
+#include "c_file.hpp"
 
 namespace contactbody::fmu {
 
@@ -50,11 +52,18 @@ std::string start_values_path(const char* resource_location) {
 std::vector<std::pair<std::string, std::string>> read_start_values(const std::string& path) {
     std::vector<std::pair<std::string, std::string>> out;
     if (path.empty()) return out;
-    std::ifstream file(path);
+    const File file = open_file(path, "rb");
     if (!file) return out;  // no file: the FMU's own start values
-    std::string line;
-    for (int number = 1; std::getline(file, line); ++number) {
-        const std::string text = trim(line);
+    std::string content;
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0;) content.append(buffer, n);
+    if (std::ferror(file.get())) throw std::runtime_error("resources/start_values.txt: cannot read " + path);
+    int number = 0;
+    for (size_t start = 0; start < content.size();) {
+        const size_t end = std::min(content.find('\n', start), content.size());
+        const std::string text = trim(content.substr(start, end - start));
+        start = end + 1;
+        ++number;
         if (text.empty() || text[0] == '#') continue;
         const auto eq = text.find('=');
         if (eq == std::string::npos || trim(text.substr(0, eq)).empty())

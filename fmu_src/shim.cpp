@@ -2,7 +2,8 @@
 
 #include <cstring>
 #include <memory>
-#include <sstream>
+
+#include "text.hpp"
 
 namespace contactbody::fmu {
 
@@ -33,7 +34,7 @@ void log_step(Instance* instance, const char* function, Simulation& sim) {
     }
     const StepStatistics& s = sim.statistics();
     if (s.refinements > 0) {
-        std::ostringstream msg;
+        Text msg;
         msg << "step to t = " << sim.time() << ": " << s.refinements
             << " substeps redone as halves after a failed contact solve (smallest substep "
             << s.smallest_substep << " s)";

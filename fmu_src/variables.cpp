@@ -3,11 +3,12 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 #include <unordered_map>
 #include <algorithm>
+
+#include "text.hpp"
 
 namespace contactbody::fmu {
 
@@ -301,7 +302,7 @@ void check_string(const Variable& v, const char* value) {
 }
 
 void check_range(const Variable& v, double value) {
-    std::ostringstream msg;
+    Text msg;
     msg.precision(17);
     if (!std::isfinite(value)) {
         msg << "variable " << v.name << " must be finite (got " << value << ")";

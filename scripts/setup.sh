@@ -9,7 +9,8 @@ packages=(build-essential cmake ninja-build f2c libeigen3-dev libgtest-dev valgr
           gfortran  # only python_tests/test_lapack_c.py: the LU's C form against its Fortran
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
-          python3-getfem)  # the work-precision benchmark's GetFEM series and its test
+          python3-getfem  # the work-precision benchmark's GetFEM series and its test
+          locales)  # a decimal-comma locale, below
 install_missing() {
     local missing=()
     for p in "$@"; do
@@ -22,6 +23,9 @@ install_missing() {
     fi
 }
 install_missing "${packages[@]}"
+# A locale whose decimal point is a comma: tests_cpp/test_text_files.cpp checks that the FMU's
+# numbers keep '.' under a host that sets one.
+locale -a 2>/dev/null | grep -qx 'de_DE.utf8' || localedef -i de_DE -f UTF-8 de_DE.UTF-8
 # What each platform of platforms.json needs to be built and tested here (win64: MinGW-w64, and
 # wine to run it through fmpy's remoting).
 read -r -a platform_packages <<< "$(/usr/bin/python3 -c 'import json; print(" ".join(a for p in json.load(open("platforms.json"))["platforms"] for a in p["apt_packages"]))')"

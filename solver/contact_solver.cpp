@@ -4,7 +4,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <sstream>
+
+#include "text.hpp"
 
 extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
@@ -218,7 +219,7 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         info.iterations = options.max_iterations;
         if (gauss_seidel(p, options, lambda, info, rate)) return info;
         if (!rate) {
-            std::ostringstream msg;
+            Text msg;
             msg << e.what() << "; Gauss-Seidel from the same start: relative residual "
                 << info.residual << " after " << info.sweeps << " sweeps";
             throw ContactSolveError(msg.str());
@@ -233,7 +234,7 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         last.sweeps = info.sweeps;
         return last;
     } catch (const ContactSolveError& e) {
-        std::ostringstream msg;
+        Text msg;
         msg << e.what() << " (after Newton stagnated and Gauss-Seidel from the same start "
             << "reached a relative residual " << info.residual << " in " << info.sweeps
             << " sweeps)";
@@ -425,14 +426,14 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
     int best_iteration = 0;
     while (!(info.residual <= options.tolerance)) {
         if (stop_on_stagnation && info.iterations - best_iteration >= stagnation) {
-            std::ostringstream msg;
+            Text msg;
             msg << "contact solver stagnated: " << stagnation << " Newton iterations did not "
                 << "halve the relative residual " << best << " (tolerance " << options.tolerance
                 << ")";
             throw ContactSolveError(msg.str());
         }
         if (info.iterations >= options.max_iterations) {
-            std::ostringstream msg;
+            Text msg;
             msg << "contact solver did not converge in " << options.max_iterations
                 << " iterations (relative residual " << info.residual << ", tolerance "
                 << options.tolerance << ")";

@@ -1,16 +1,17 @@
 #include "discretization.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <tuple>
+
+#include "text.hpp"
 
 namespace contactbody {
 
 namespace {
 
 [[noreturn]] void reject(const char* name, const std::string& rule, double value) {
-    std::ostringstream msg;
+    Text msg;
     msg << name << " must be " << rule << " (got " << value << ")";
     throw std::invalid_argument(msg.str());
 }
@@ -89,7 +90,7 @@ void check_parameters(const SceneParameters& p) {
     if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
     if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
     if (p.static_initial_state && (p.initial_velocity_x != 0 || p.initial_velocity_y != 0)) {
-        std::ostringstream msg;
+        Text msg;
         msg << "initial_state = static starts the body at rest, so initial_velocity_x and "
                "initial_velocity_y must be 0 (got " << p.initial_velocity_x << ", "
             << p.initial_velocity_y << " m/s): set them to 0, or use initial_state = paper";

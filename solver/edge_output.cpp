@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
 
 namespace contactbody {
@@ -11,8 +10,8 @@ namespace {
 
 constexpr size_t header_size = 320;  // a multiple of 64, as NPY asks  // fixed: the row count changes, the header's size does not
 
-void check(const std::fstream& f, const std::string& path, const char* what) {
-    if (!f) throw std::runtime_error(std::string(what) + " " + path + " failed: " + std::strerror(errno));
+void check(bool ok, const std::string& path, const char* what) {
+    if (!ok) throw std::runtime_error(std::string(what) + " " + path + " failed: " + std::strerror(errno));
 }
 
 template <class T>
@@ -24,8 +23,8 @@ void append(std::string& out, const T* data, size_t count) {
 
 EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes)
     : path_(std::move(path)), nodes_(nodes) {
-    file_.open(path_, std::ios::binary | std::ios::in | std::ios::out | std::ios::trunc);
-    check(file_, path_, "creating the edge history");
+    file_ = open_file(path_, "w+b");
+    check(file_ != nullptr, path_, "creating the edge history");
     write_header();
 }
 
@@ -46,10 +45,10 @@ void EdgeWriter::write_header() {
     const uint16_t length = static_cast<uint16_t>(dict.size());
     header.append(reinterpret_cast<const char*>(&length), 2);
     header += dict;
-    file_.seekp(0);
-    file_.write(header.data(), static_cast<std::streamsize>(header.size()));
-    file_.flush();
-    check(file_, path_, "writing the edge history");
+    std::FILE* f = file_.get();
+    check(seek_file(f, 0) && std::fwrite(header.data(), 1, header.size(), f) == header.size() &&
+              std::fflush(f) == 0,
+          path_, "writing the edge history");
 }
 
 void EdgeWriter::write(double time, const EdgeSnapshot& e) {
@@ -58,9 +57,9 @@ void EdgeWriter::write(double time, const EdgeSnapshot& e) {
     for (const Eigen::VectorXd* v : {&e.x, &e.pressure, &e.friction, &e.slip_velocity, &e.gap})
         append(record_, v->data(), static_cast<size_t>(nodes_));
     append(record_, e.state.data(), static_cast<size_t>(nodes_));
-    file_.seekp(static_cast<std::streamoff>(header_size + rows_ * record_.size()));
-    file_.write(record_.data(), static_cast<std::streamsize>(record_.size()));
-    check(file_, path_, "writing the edge history");
+    check(seek_file(file_.get(), header_size + rows_ * record_.size()) &&
+              std::fwrite(record_.data(), 1, record_.size(), file_.get()) == record_.size(),
+          path_, "writing the edge history");
     ++rows_;
     write_header();
 }
@@ -69,10 +68,7 @@ void EdgeWriter::truncate(uint64_t rows) {
     if (rows >= rows_) return;
     rows_ = rows;
     const size_t record = 8 + static_cast<size_t>(nodes_) * (5 * 8 + 1);
-    file_.flush();
-    std::error_code ec;
-    std::filesystem::resize_file(path_, header_size + rows_ * record, ec);
-    if (ec) throw std::runtime_error("truncating " + path_ + " failed: " + ec.message());
+    check(resize_file(file_.get(), header_size + rows_ * record), path_, "truncating the edge history");
     write_header();
 }
 

@@ -5,9 +5,9 @@
 #pragma once
 
 #include <cstdint>
-#include <fstream>
 #include <string>
 
+#include "c_file.hpp"
 #include "simulation.hpp"
 
 namespace contactbody {
@@ -27,7 +27,7 @@ private:
     std::string path_;
     Eigen::Index nodes_;
     uint64_t rows_ = 0;
-    std::fstream file_;
+    File file_;
     std::string record_;  // one record's bytes, reused
 };
 

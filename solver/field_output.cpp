@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
+
+#include "c_file.hpp"
 
 namespace contactbody {
 
@@ -50,28 +50,25 @@ std::string data_array(const char* type, const char* name, int components, const
 }
 
 // Writes through a temporary and a rename, so that readers never see half a file.
-void write_file(const std::filesystem::path& path, const std::string& text) {
-    const std::filesystem::path tmp = path.string() + ".tmp";
+void write_file(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".tmp";
     {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw std::runtime_error("cannot write " + tmp.string() + ": " + std::strerror(errno));
-        f << text;
-        f.flush();
-        if (!f) throw std::runtime_error("writing " + tmp.string() + " failed: " + std::strerror(errno));
+        File f = open_file(tmp, "wb");
+        if (!f) throw std::runtime_error("cannot write " + tmp + ": " + std::strerror(errno));
+        const bool written = std::fwrite(text.data(), 1, text.size(), f.get()) == text.size();
+        if (std::fclose(f.release()) != 0 || !written)
+            throw std::runtime_error("writing " + tmp + " failed: " + std::strerror(errno));
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
+    if (!replace_file(tmp, path))
+        throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
 }
 
 }  // namespace
 
 FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string basename)
     : mesh_(mesh), directory_(std::move(directory)), basename_(std::move(basename)) {
-    std::error_code ec;
-    std::filesystem::create_directories(directory_, ec);
-    if (ec)
-        throw std::runtime_error("result_directory '" + directory_ + "' cannot be created: " + ec.message());
+    if (!create_directories(directory_))
+        throw std::runtime_error("result_directory '" + directory_ + "' cannot be created: " + std::strerror(errno));
     write_collection();  // fails here, at initialization, if the directory is not writable
     remove_snapshots_from(0);  // a longer earlier run's snapshots would outlive the collection
 
@@ -138,7 +135,7 @@ void FieldWriter::write(const State& s) {
     buffer_ += "      </PointData>\n      <Points>\n" + points_ + "      </Points>\n";
     buffer_ += "      <Cells>\n" + cells_ + "      </Cells>\n";
     buffer_ += "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-    write_file(std::filesystem::path(directory_) / file_name(times_.size()), buffer_);
+    write_file(join_path(directory_, file_name(times_.size())), buffer_);
     times_.push_back(s.time);
     write_collection();
 }
@@ -152,16 +149,14 @@ void FieldWriter::truncate(size_t count) {
 // Removes this writer's snapshot files (basename_NNNNNN.vtu) numbered `first` and up: the
 // directory then holds exactly the files its collection lists.
 void FieldWriter::remove_snapshots_from(size_t first) const {
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(directory_, ec)) {
-        const std::string name = entry.path().filename().string();
+    for (const std::string& name : directory_entries(directory_)) {
         const size_t digits = name.size() - basename_.size() - 5;  // "_" ... ".vtu"
         if (name.size() != basename_.size() + 11 || name.compare(0, basename_.size(), basename_) != 0 ||
             name[basename_.size()] != '_' || name.compare(name.size() - 4, 4, ".vtu") != 0)
             continue;
         const std::string number = name.substr(basename_.size() + 1, digits);
         if (number.find_first_not_of("0123456789") != std::string::npos) continue;
-        if (std::stoul(number) >= first) std::filesystem::remove(entry.path(), ec);
+        if (std::stoul(number) >= first) remove_file(join_path(directory_, name));
     }
 }
 
@@ -182,7 +177,7 @@ void FieldWriter::write_collection() const {
                 file_name(k) + "\"/>\n";
     }
     text += "  </Collection>\n</VTKFile>\n";
-    write_file(std::filesystem::path(directory_) / (basename_ + ".pvd"), text);
+    write_file(join_path(directory_, basename_ + ".pvd"), text);
 }
 
 }  // namespace contactbody

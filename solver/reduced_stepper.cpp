@@ -1,8 +1,9 @@
 #include "reduced_stepper.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "text.hpp"
 
 namespace contactbody {
 
@@ -114,7 +115,7 @@ void ReducedStepper::restart(const SceneParameters& params) {
 }
 
 std::string ReducedStepper::summary() const {
-    std::ostringstream msg;
+    Text msg;
     msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(basis_disc())
         << " finite) and " << basis_.residual.cols() << " residual attachment modes of the "
         << num_contact_nodes() << " contact nodes; basis "

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include "stability_map_data.hpp"
+#include "text.hpp"
 
 namespace contactbody {
 
@@ -66,7 +66,7 @@ std::string friction_warning(const SceneParameters& p) {
     const double scale = beta_scale(p);
     const int c = nearest_column(p.ny);
     if (p.friction_coefficient >= wedging_friction(p)) {
-        std::ostringstream msg;
+        Text msg;
         msg << "friction_coefficient = " << p.friction_coefficient << ": no steady sliding state "
             << "exists here (foundation_velocity != 0): the clamped body wedges, its normal force "
             << "grows without bound, for F >= " << stability_map::damped_no_steady_state[c]
@@ -76,7 +76,7 @@ std::string friction_warning(const SceneParameters& p) {
     }
     const double needed = stabilizing_beta(c, p.friction_coefficient) * scale;
     if (p.damping_stiffness >= needed) return "";
-    std::ostringstream msg;
+    Text msg;
     msg << "friction_coefficient = " << p.friction_coefficient << " with damping_stiffness = "
         << p.damping_stiffness << " s: steady sliding (foundation_velocity != 0) is unstable "
         << "here (the damped stability map, nx = " << stability_map::damped_nx[c] << " cells ";
@@ -120,7 +120,7 @@ std::string frictionless_warning(const SceneParameters& p) {
             smaller_stable_courant = std::max(smaller_stable_courant, cell.courant);
     }
     if (!(growth > frictionless_growth_limit)) return "";
-    std::ostringstream msg;
+    Text msg;
     msg << "without friction, mass_matrix = " << variant << " gains energy at the contact here: "
         << "lambda/mu = " << ratio << ", Courant number c_p internal_step / h = " << courant
         << "; the frictionless map (lambda/mu = " << row << ", Courant " << column
@@ -202,7 +202,7 @@ std::string rate_warning(const SceneParameters& p, double speed) {
     double dF = 0;
     const double F = rate_law(p).coefficient(p.friction_coefficient, speed, &dF);
     const double scale = beta_scale(p);
-    std::ostringstream law;
+    Text law;
     law << "with the slip-rate law at the sliding speed |foundation_velocity| = " << speed
         << " m/s, F = " << F << " and dF/dv = " << dF << " s/m";
     const RatePlace r = place_on_rate_map(p, F, dF, p.damping_stiffness / scale);
@@ -217,7 +217,7 @@ std::string rate_warning(const SceneParameters& p, double speed) {
             f_min = std::min(f_min, row.friction), f_max = std::max(f_max, row.friction);
             s_min = std::min(s_min, row.slope), s_max = std::max(s_max, row.slope);
         }
-        std::ostringstream msg;
+        Text msg;
         msg << "settings outside the measured maps: " << law.str()
             << " lie outside the rate map (F " << f_min << " to " << f_max << ", dF/dv " << s_min
             << " to " << s_max << " s/m; examples/results/rate_stability.md), so this judges the "
@@ -235,7 +235,7 @@ std::string rate_warning(const SceneParameters& p, double speed) {
     }
     const double beta_grid = stability_map::rate_betas[r.beta];
     if (rate_map_growth(r, r.slope, r.beta) < 0) return "";
-    std::ostringstream msg;
+    Text msg;
     msg << law.str() << ", damping_stiffness = " << p.damping_stiffness
         << " s: steady sliding is unstable on the rate map (nx = " << r.nx
         << " cells across the height, measured F " << r.f_below;

@@ -2,10 +2,10 @@
 
 #include "reduced_stepper.hpp"
 #include "scheme_warnings.hpp"
+#include "text.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <type_traits>
 #include <string>
 #include <tuple>
@@ -200,7 +200,7 @@ int Simulation::substeps_for(double h) const {
     // despite masters that add up time and send steps a few 1e-12 too long.
     const double ratio = h / body_->parameters().internal_step;
     if (!(ratio <= max_substeps_per_step)) {
-        std::ostringstream msg;
+        Text msg;
         msg << "communication step " << h << " needs " << ratio << " substeps of internal_step "
             << "(at most " << max_substeps_per_step << "); use smaller steps";
         throw std::invalid_argument(msg.str());
@@ -285,7 +285,7 @@ void Simulation::check_finite(const Observables& o) const {
         [&](const char* name, const auto& value) {
             if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>) {
                 if (std::isfinite(value)) return;
-                std::ostringstream msg;
+                Text msg;
                 msg << "output " << name << " = " << value << " at t = " << state_.time
                     << ": the solution grows without bound" << growth_advice();
                 throw NumericalFailure(msg.str());
@@ -302,7 +302,7 @@ void Simulation::check_plausible() {
     const double put_in = initial + std::abs(w.clamp) + std::abs(w.foundation);
     const bool over_ratio = p.max_energy_ratio > 0 && energy > 0 && energy > p.max_energy_ratio * put_in;
     if (over_ratio || (p.max_energy > 0 && energy > p.max_energy)) {
-        std::ostringstream msg;
+        Text msg;
         msg << "energy E = " << energy << " J/m at t = " << state_.time << " exceeds ";
         if (over_ratio)
             msg << "max_energy_ratio x (E(0) + work put in) = " << p.max_energy_ratio << " x "
@@ -328,7 +328,7 @@ void Simulation::check_plausible() {
     // (nothing sensible follows); beyond the body's height either way, a warning.
     const double top = body_->top_position(state_);
     if (!(top > -(p.height + p.initial_gap))) {
-        std::ostringstream msg;
+        Text msg;
         msg << "at t = " << state_.time << " the top edge is at top_position = " << top
             << " m, at or below the foundation (the body is " << p.height << " m high, "
             << p.initial_gap << " m above it): the body would be compressed to nothing, where "
@@ -338,7 +338,7 @@ void Simulation::check_plausible() {
     }
     if (std::abs(top) > p.height && !travel_warned_) {
         travel_warned_ = true;
-        std::ostringstream msg;
+        Text msg;
         msg << "at t = " << state_.time << " the top edge has moved by top_position = " << top
             << " m, more than the body's height " << p.height << " m: check top_displacement "
             << "(or top_force) and its coupling";
@@ -346,7 +346,7 @@ void Simulation::check_plausible() {
     }
     if (w.normal_contact > contact_work_warning * put_in && !contact_work_warned_) {
         contact_work_warned_ = true;
-        std::ostringstream msg;
+        Text msg;
         msg << "at t = " << state_.time << " the contact has created normal_contact_work = "
             << w.normal_contact << " J/m, more than " << contact_work_warning
             << " of E(0) + the work put in (" << put_in << " J/m): energy the scheme makes, not "
@@ -427,7 +427,7 @@ void Simulation::warn_refinements(const StepStatistics& stats) {
         stats.refinements < refinement_warning_share * stats.substeps)
         return;
     const SceneParameters& p = body_->parameters();
-    std::ostringstream msg;
+    Text msg;
     msg << "step to t = " << state_.time << ": " << stats.refinements << " substep halvings for "
         << stats.substeps << " substeps of " << nominal_substep_ << " s (smallest substep "
         << stats.smallest_substep << " s): the contact problem of a substep this large had no "
@@ -446,7 +446,7 @@ void Simulation::warn_refinements(const StepStatistics& stats) {
 
 std::string Simulation::growth_advice() const {
     const SceneParameters& p = body_->parameters();
-    std::ostringstream msg;
+    Text msg;
     msg << ". What to change:";
     const double wedge = wedging_friction(p);
     if (p.friction_coefficient >= wedge)
@@ -473,7 +473,7 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
                               const StepSums& sums) const {
     const SceneParameters& p = body_->parameters();
     const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
-    std::ostringstream msg;
+    Text msg;
     msg << "contact solve failed at t = " << state_.time << " (" << s0
         << " s into the step) with F = " << p.friction_coefficient << ", for substeps of "
         << nominal_substep_;

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <locale>
-#include <sstream>
 #include <stdexcept>
 #include <cstdint>
 #include <cstring>
@@ -17,6 +15,7 @@
 
 #include "companion.hpp"
 #include "resource_start_values.hpp"
+#include "text.hpp"
 
 namespace {
 
@@ -229,13 +228,11 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
                  contactbody::fmu::start_values_path(resource_location))) {
             auto v = std::find_if(vars.begin(), vars.end(),
                                   [&](const companion::Variable& x) { return name == x.name; });
-            std::istringstream in(text);
-            in.imbue(std::locale::classic());
             double x = 0;
             if (v == vars.end() || v->causality == Causality::output)
                 throw std::runtime_error("resources/start_values.txt: " + name +
                                          " is not a parameter or input of this FMU");
-            if (!(in >> x) || !(in >> std::ws).eof() || !std::isfinite(x))
+            if (!contactbody::parse_number(text, x))
                 throw std::runtime_error("resources/start_values.txt: " + name + " = '" + text +
                                          "' is not a finite number");
             inst->s.values[v->value_reference] = x;

@@ -10,6 +10,7 @@ packages=(build-essential cmake ninja-build f2c libeigen3-dev libgtest-dev valgr
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
           python3-getfem  # the work-precision benchmark's GetFEM series and its test
+          llvm-14  # only benchmarks/macos_cost.py: llvm-otool/-nm/-lipo check the macOS dylibs
           locales)  # a decimal-comma locale, below
 install_missing() {
     local missing=()

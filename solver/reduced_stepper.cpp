@@ -63,6 +63,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     mass_tt_ = mu_ss_ + 2 * mu_cs_ + mu_cc_;
     s_ss_ = S.dot(AS);
     e_cc_ = all_e.dot(d.A * all_e);
+    stiffness_tt_ = e_cc_ - s_ss_;
 
     // The clamped x dofs' rows against the basis, the lift and the clamp (residual massless).
     Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
@@ -190,7 +191,7 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
     const double strain = 0.5 * z.cwiseAbs2().dot(omega2_) + z.dot(a_s_) * gap +
-                          0.5 * s_ss_ * gap * gap + 0.5 * (e_cc_ - s_ss_) * top * top;
+                          0.5 * s_ss_ * gap * gap + 0.5 * stiffness_tt_ * top * top;
     return {kinetic, strain};
 }
 
@@ -343,10 +344,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // whose A part does not couple z with the lift and clamp (A_fc e = -A_ff S).
     const double du_t = 2 * w_t;
     du_ = 2 * w_;
-    const double stiffness_tt = e_cc_ - s_ss_;
     if (params_.damped())
         report.work.damping = (du_.cwiseAbs2().dot(damping_) + 2 * du_t * alpha * m_t_.dot(du_) +
-                               (alpha * mass_tt_ + beta * stiffness_tt) * du_t * du_t) / dt;
+                               (alpha * mass_tt_ + beta * stiffness_tt_) * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the
     // residual of the reduced equations' rows of both (lift and clamp), less the contact
@@ -354,9 +354,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // energy balance; with every finite mode the lift's row is zero and this is the clamped
     // rows' residual, as in the full body.
     double r = m_t_.dot(c1 * w_ - c2 * zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
-               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + stiffness_tt * (top + w_t);
+               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + stiffness_tt_ * (top + w_t);
     if (params_.damped())
-        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt_ * du_t) + beta * stiffness_tt * du_t);
+        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt_ * du_t) + beta * stiffness_tt_ * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy

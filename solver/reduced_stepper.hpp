@@ -111,6 +111,7 @@ private:
     Eigen::Index nf_ = 0;  // free dofs
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, e_cc_ = 0;
     double mass_tt_ = 0;   // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)
+    double stiffness_tt_ = 0;  // e_cc - s_ss: their stiffness (t^T A t)
     std::array<std::unique_ptr<StepOperators>, 2> cache_;
     StepOperators& build_operators(double dt);
     void start_run();

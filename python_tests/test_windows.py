@@ -56,6 +56,27 @@ def test_the_reduced_body_is_bit_identical_to_linux(unzipped, linux_copy, modes)
     assert_same_bits(fmpy.simulate_fmu(unzipped, **run), fmpy.simulate_fmu(linux_copy, **run))
 
 
+def test_result_files_in_a_new_non_ascii_folder_equal_linux(unzipped, linux_copy, tmp_path):
+    """Field and edge output through solver/c_file.hpp's Windows side (UTF-16 paths): a first
+    run makes the folder, whose name is not ASCII, and its parent; a second run into it replaces
+    every file and removes a stale snapshot. The DLL writes the bytes linux64 writes."""
+    written = {}
+    for name, fmu in (("win64", unzipped), ("linux64", linux_copy)):
+        folder = tmp_path / name / "résultats ü" / "nested"
+        directory = f"Z:{folder}" if name == "win64" else str(folder)  # wine's Z: is /
+        run = dict(stop_time=1e-3, output_interval=1e-4,
+                   start_values={"result_directory": directory, "field_output_interval": 2e-4,
+                                 "edge_output_interval": 1e-4})
+        fmpy.simulate_fmu(fmu, **run)
+        assert (folder / "contactbody_000000.vtu").is_file(), sorted(tmp_path.rglob("*"))
+        (folder / "contactbody_000099.vtu").write_text("a longer earlier run's")
+        fmpy.simulate_fmu(fmu, **run)
+        written[name] = {p.name: p.read_bytes() for p in folder.iterdir()}
+    assert "contactbody_000099.vtu" not in written["win64"]
+    assert {"contactbody_edge.npy", "contactbody.pvd", "contactbody_000005.vtu"} <= set(written["win64"])
+    assert written["win64"] == written["linux64"]
+
+
 def assert_same_bits(windows, linux):
     for name in linux.dtype.names:
         assert [float(x).hex() for x in windows[name]] == [float(x).hex() for x in linux[name]], name

@@ -154,6 +154,17 @@ def test_windows_binary_imports_only_system_dlls(fmu, tmp_path):
         assert {"fmi2DoStep", "fmi3DoStep", "fmi3InstantiateCoSimulation"} <= set(exported)
 
 
+@pytest.mark.parametrize("fmu", FMUS, ids=lambda p: p.stem)
+def test_binaries_carry_no_folder_of_the_build_machine(fmu):
+    """Source paths (__FILE__ in CHOLMOD's error reports) are relative to the project
+    (-ffile-prefix-map): a binary shows nothing of where it was built, and a clone elsewhere
+    builds the same bytes."""
+    with zipfile.ZipFile(fmu) as z:
+        for name in z.namelist():
+            if name.startswith("binaries/") and not name.endswith("/"):
+                assert str(ROOT).encode() not in z.read(name), name
+
+
 def test_fmu_is_small_and_carries_the_licences():
     assert FMU.stat().st_size <= 4e6, FMU.stat().st_size  # with every platform
     quoted = re.search(r"The FMU is ([\d.]+) MB zipped", (ROOT / "README.md").read_text())

@@ -1,6 +1,7 @@
 # Packages ContactBody.fmu (FMI 2.0), ContactBody_fmi3.fmu (FMI 3.0), BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
 # default: what users get) their binaries come from this project built again for each platform
-# with a toolchain from cmake/: linux64 and aarch64-linux by zig (glibc 2.17), win64 by MinGW-w64. Without it
+# with a toolchain from cmake/: linux64 and aarch64-linux by zig (glibc 2.17), macOS x86_64 and
+# arm64 by zig (macOS 11), win64 by MinGW-w64. Without it
 # (the sanitizer job) the FMU holds the native build's linux64 binary only.
 # The modelDescriptions are written by native tools from the variable tables.
 
@@ -14,19 +15,24 @@ endforeach()
 
 set(fmus ContactBody ${COMPANIONS})
 set(licenses ${PROJECT_SOURCE_DIR}/LICENSE)
-# The platform table (platforms.json): name (the FMI 2.0 folder), FMI 3.0 tuple, toolchain file,
-# library suffix, the hosts built for it, the licences of the runtime linked in.
+# The platform table (platforms.json): name, FMI 2.0 folder, FMI 3.0 tuple, toolchain file,
+# library suffix, the hosts built for it, the licences of the runtime linked in. Each row's
+# binaries go to FMI 3.0's folder of its tuple; rows that share an FMI 2.0 folder (darwin64)
+# are joined there into one universal binary.
 file(READ ${PROJECT_SOURCE_DIR}/platforms.json platform_table)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/platforms.json)
 string(JSON platform_count LENGTH ${platform_table} platforms)
 math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
-  python_package_file(ZIG ziglang zig)
+  if(NOT ZIG)  # scripts/setup.sh passes a zig outside the clone (its libc++ builds are cached by path)
+    python_package_file(ZIG ziglang zig)
+  endif()
   get_filename_component(ZIG_LIB ${ZIG} DIRECTORY)
   set(license_names LICENSE)
   foreach(i RANGE ${platform_last})
     string(JSON platform GET ${platform_table} platforms ${i} name)
+    string(JSON fmi2_folder GET ${platform_table} platforms ${i} fmi2_folder)
     string(JSON tuple GET ${platform_table} platforms ${i} fmi3_tuple)
     string(JSON toolchain GET ${platform_table} platforms ${i} toolchain)
     string(JSON suffix GET ${platform_table} platforms ${i} library_suffix)
@@ -52,12 +58,16 @@ if(CONTACTBODY_PORTABLE)
         endif()
       endforeach()
     endif()
-    set(platform_tuple_${platform} ${tuple})
     set(dir ${CMAKE_BINARY_DIR}/${platform})
     set(products)
+    if(NOT fmi2_folder IN_LIST fmi2_folders)
+      list(APPEND fmi2_folders ${fmi2_folder})
+      set(fmi2_suffix_${fmi2_folder} ${suffix})
+    endif()
     foreach(fmu IN LISTS fmus)
       list(APPEND products ${dir}/${fmu}${suffix})
-      set(${fmu}_binaries ${${fmu}_binaries} ${platform} ${dir}/${fmu}${suffix})
+      list(APPEND ${fmu}_fmi3_binaries ${tuple} ${dir}/${fmu}${suffix})
+      list(APPEND ${fmu}_slices_${fmi2_folder} ${dir}/${fmu}${suffix})
     endforeach()
     string(REPLACE ";" "|" hosts_arg "${hosts}")
     ExternalProject_Add(binaries_${platform}
@@ -70,13 +80,33 @@ if(CONTACTBODY_PORTABLE)
       INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
     list(APPEND binary_targets binaries_${platform})
   endforeach()
+  # FMI 2.0's folders: one binary each, a universal one where rows share the folder.
+  foreach(fmi2_folder IN LISTS fmi2_folders)
+    foreach(fmu IN LISTS fmus)
+      set(slices ${${fmu}_slices_${fmi2_folder}})
+      list(LENGTH slices slice_count)
+      if(slice_count EQUAL 1)
+        list(APPEND ${fmu}_binaries ${fmi2_folder} ${slices})
+      else()
+        find_program(LLVM_LIPO NAMES llvm-lipo-14 llvm-lipo REQUIRED)  # Debian's llvm-14
+        set(universal ${CMAKE_BINARY_DIR}/${fmi2_folder}/${fmu}${fmi2_suffix_${fmi2_folder}})
+        add_custom_command(OUTPUT ${universal}
+          COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/${fmi2_folder}
+          COMMAND ${LLVM_LIPO} -create -output ${universal} ${slices}
+          DEPENDS ${slices} ${binary_targets}
+          COMMENT "Joining ${fmu}'s ${fmi2_folder} binary (${slice_count} architectures)")
+        list(APPEND ${fmu}_binaries ${fmi2_folder} ${universal})
+      endif()
+    endforeach()
+  endforeach()
 else()
   # The native build's binary, in the table's first platform's folders (linux64).
   include(cmake/fmu_binaries.cmake)
-  string(JSON native GET ${platform_table} platforms 0 name)
-  string(JSON platform_tuple_${native} GET ${platform_table} platforms 0 fmi3_tuple)
+  string(JSON native GET ${platform_table} platforms 0 fmi2_folder)
+  string(JSON native_tuple GET ${platform_table} platforms 0 fmi3_tuple)
   foreach(fmu IN LISTS fmus)
     set(${fmu}_binaries ${native} $<TARGET_FILE:${fmu}>)
+    set(${fmu}_fmi3_binaries ${native_tuple} $<TARGET_FILE:${fmu}>)
     list(APPEND binary_targets ${fmu})
   endforeach()
   set(license_names LICENSE)
@@ -133,14 +163,8 @@ add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_
         LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}
         DEPENDS ${binary_targets})
 # The FMI 3.0 FMU: the same binaries under FMI 3.0's platform tuples.
-set(fmi3_binaries)
-set(list ${ContactBody_binaries})
-while(list)
-  list(POP_FRONT list platform binary)
-  list(APPEND fmi3_binaries ${platform_tuple_${platform}} ${binary})
-endwhile()
 add_fmu(ContactBody_fmi3 GENERATOR generate_model_description GENERATOR_ARGS --fmi3
-        BINARIES ${fmi3_binaries} LICENSES ${contactbody_licenses}
+        BINARIES ${ContactBody_fmi3_binaries} LICENSES ${contactbody_licenses}
         LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
 foreach(companion IN LISTS COMPANIONS)
   add_fmu(${companion} GENERATOR ${companion}_model_description BINARIES ${${companion}_binaries}

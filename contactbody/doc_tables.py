@@ -291,7 +291,7 @@ def impact(data):
 def platforms(data):
     """The platform table (platforms.json): where each binary is and how it is tested."""
     header = ["platform", "FMI 2.0 folder", "FMI 3.0 folder", "built with", "tested"]
-    rows = [[p["name"], f"`binaries/{p['name']}`", f"`binaries/{p['fmi3_tuple']}`",
+    rows = [[p["name"], f"`binaries/{p['fmi2_folder']}`", f"`binaries/{p['fmi3_tuple']}`",
              f"`{p['toolchain']}`", p["tested"]] for p in data["platforms"]]
     return table(header, rows)
 

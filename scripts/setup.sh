@@ -10,7 +10,6 @@ packages=(build-essential cmake ninja-build f2c libeigen3-dev libgtest-dev valgr
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
           python3-getfem  # the work-precision benchmark's GetFEM series and its test
-          llvm-14  # only benchmarks/macos_cost.py: llvm-otool/-nm/-lipo check the macOS dylibs
           locales)  # a decimal-comma locale, below
 install_missing() {
     local missing=()
@@ -46,8 +45,22 @@ if [ ! -f "${WINEPREFIX:-$HOME/.wine}/system.reg" ]; then
     WINEDEBUG=-all /usr/lib/wine/wine64 wineboot --init >/dev/null 2>&1 || true
 fi
 
+# zig (requirements.txt's pin) outside the clone, in the user's cache folder: zig keeps the
+# libc++ it builds for each target (about 100 s of 2 cores each, five zig platforms) under
+# the path of its own installation, so a zig inside .venv builds them anew in every fresh
+# clone, and one at a path that stays builds them once per machine.
+zig_version=$(sed -n 's/^ziglang==//p' requirements.txt)
+zig_home="${XDG_CACHE_HOME:-$HOME/.cache}/contactbody/ziglang-$zig_version"
+if [ ! -x "$zig_home/ziglang/zig" ]; then
+    rm -rf "$zig_home.partial"
+    .venv/bin/pip install -q --disable-pip-version-check --no-deps --target "$zig_home.partial" \
+        "ziglang==$zig_version"
+    rm -rf "$zig_home"
+    mv "$zig_home.partial" "$zig_home"
+fi
+
 # fmpy's wheel also ships a cmake: use Debian's. The build makes the portable FMUs: their
-# linux64 binaries with zig (from .venv), their win64 ones with MinGW-w64 (CMakeLists.txt).
+# Linux and macOS binaries with zig, their win64 ones with MinGW-w64 (CMakeLists.txt).
 /usr/bin/cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
+    -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DZIG="$zig_home/ziglang/zig" >/dev/null
 /usr/bin/cmake --build build

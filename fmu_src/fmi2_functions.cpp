@@ -117,6 +117,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn);
         // A configured copy's start values (contactbody.system's SSP components).
         instance->model.set_defaults(read_start_values(start_values_path(fmuResourceLocation)));
+        instance->model.set_resources(resources_directory(fmuResourceLocation), /*edge_arrays=*/false);
         return instance.release();
     } catch (const std::exception& e) {
         return fail(e.what());

@@ -227,6 +227,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
         if (resourcePath && *resourcePath)
             instance->model.set_defaults(
                 read_start_values(std::string(resourcePath) + "/start_values.txt"));
+        instance->model.set_resources(resourcePath ? resourcePath : "", /*edge_arrays=*/true);
         return instance.release();
     } catch (const std::exception& e) {
         return fail(e.what());

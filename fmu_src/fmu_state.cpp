@@ -89,13 +89,13 @@ public:
                  std::to_string(expected));
         return doubles_of(n, what);
     }
-    // The reduced body's coordinates: their count depends on its basis, which the body checks
-    // on restore (Body::fits); here only that they are fewer than the mesh's dofs.
+    // The reduced body's coordinates, or a mesh file's dofs: their count depends on the basis
+    // or the file, which the body checks on restore (Body::fits); here only a bound.
     Eigen::VectorXd vector_up_to(const char* what, Eigen::Index limit) {
         const uint64_t n = value<uint64_t>(what);
         if (n < 2 || n > static_cast<uint64_t>(limit))
-            fail(std::string(what) + " has " + std::to_string(n) + " entries, the reduced body "
-                 "needs between 2 and " + std::to_string(limit));
+            fail(std::string(what) + " has " + std::to_string(n) + " entries, between 2 and " +
+                 std::to_string(limit) + " expected");
         return doubles_of(n, what);
     }
     Eigen::VectorXd doubles_of(uint64_t n, const char* what) {
@@ -249,7 +249,7 @@ FmuState deserialize(const char* bytes, size_t size) {
             r.fail(e.what());
         }
     }
-    if (values.edge_nodes != values.nx + 1) r.fail("edge_nodes is not nx + 1");
+    if (values.mesh.empty() && values.edge_nodes != values.nx + 1) r.fail("edge_nodes is not nx + 1");
     s.model.start_time = r.finite("start time");
     for (double& x : s.model.input_rates) x = r.finite("input derivative");
     for (double& x : s.model.previous_inputs) x = r.finite("input at the last communication point");
@@ -270,12 +270,19 @@ FmuState deserialize(const char* bytes, size_t size) {
         } catch (const std::invalid_argument& e) {
             r.fail(e.what());
         }
-        const Eigen::Index dofs = 2 * static_cast<Eigen::Index>(values.nx + 1) * (values.ny + 1);
-        const Eigen::Index nc = values.nx + 1;
+        // The rectangle's dofs; a mesh's are known once it is read (Body::fits checks them on
+        // restore). Its contact nodes are edge_nodes, checked at initialization.
+        const Eigen::Index dofs = values.mesh.empty()
+                                      ? 2 * static_cast<Eigen::Index>(values.nx + 1) * (values.ny + 1)
+                                      : 2 * static_cast<Eigen::Index>(max_nodes);
+        const Eigen::Index nc = values.edge_nodes;
         SimulationSnapshot& sim = s.model.simulation;
         sim.state.time = r.finite("time");
         // Every dof of the full body, or the reduced body's coordinates (its u, v: State).
-        if (values.modes == 0) {
+        if (values.modes == 0 && !values.mesh.empty()) {
+            sim.state.u = r.vector_up_to("displacement", dofs);
+            sim.state.v = r.vector("velocity", sim.state.u.size());
+        } else if (values.modes == 0) {
             sim.state.u = r.vector("displacement", dofs);
             sim.state.v = r.vector("velocity", dofs);
         } else {

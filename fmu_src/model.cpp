@@ -28,6 +28,13 @@ void as_model_error(F&& f) {
     }
 }
 
+// An absolute path on any platform: /..., \\server\..., C:/... or C:\...
+bool is_absolute_path(const std::string& path) {
+    if (!path.empty() && (path[0] == '/' || path[0] == '\\')) return true;
+    return path.size() > 2 && std::isalpha(static_cast<unsigned char>(path[0])) && path[1] == ':' &&
+           (path[2] == '/' || path[2] == '\\');
+}
+
 }  // namespace
 
 void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std::string>>& values) {
@@ -158,7 +165,8 @@ void ContactBodyModel::set_input_derivative(const Variable& v, int order, double
 // reset and rerun with other inputs or contact parameters), with the same results as a new one.
 void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
-    const SceneParameters scene = values.scene();
+    SceneParameters scene = values.scene();
+    if (!scene.mesh.empty() && !is_absolute_path(scene.mesh)) scene.mesh = resources_ + scene.mesh;
     try {
         if (sim_ && same_discretization(sim_->body().parameters(), scene)) {
             sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
@@ -229,8 +237,14 @@ void ContactBodyModel::write_due_fields() {
     next_field_output_ = static_cast<uint64_t>(std::floor(elapsed / interval + 1e-9)) + 1;
 }
 
+void ContactBodyModel::set_resources(std::string folder, bool edge_arrays) {
+    if (!folder.empty() && folder.back() != '/' && folder.back() != '\\') folder += '/';
+    resources_ = std::move(folder);
+    edge_arrays_ = edge_arrays;
+}
+
 void ContactBodyModel::check_structure() const {
-    if (values_.edge_nodes != values_.nx + 1)
+    if (values_.mesh.empty() && values_.edge_nodes != values_.nx + 1)
         throw ModelError(concat("edge_nodes = ", values_.edge_nodes, " but nx + 1 = ", values_.nx + 1,
                                 ": the edge arrays hold one value per bottom node (setting nx "
                                 "sets edge_nodes; set edge_nodes only to nx + 1)"));
@@ -240,6 +254,17 @@ void ContactBodyModel::initialize() {
     if (!rebuild_ && sim_) return;
     check_structure();
     build_simulation(values_);
+    if (!values_.mesh.empty()) {
+        const int contact_nodes = static_cast<int>(sim_->body().num_contact_nodes());
+        if (edge_arrays_ && values_.edge_nodes != contact_nodes) {
+            const int given = values_.edge_nodes;
+            sim_.reset();
+            throw ModelError(concat("edge_nodes = ", given, " but the mesh ", values_.mesh, " has ",
+                                    contact_nodes, " contact nodes: set edge_nodes = ", contact_nodes,
+                                    " (the size of the edge arrays)"));
+        }
+        values_.edge_nodes = contact_nodes;
+    }
     open_field_output();
     values_.out = Observables{};
     previous_inputs_ = {values_.foundation_velocity, values_.top_displacement, values_.top_force};

@@ -41,6 +41,11 @@ public:
     // which fmi2Reset returns to. Throws ModelError naming a bad name or value.
     void set_defaults(const std::vector<std::pair<std::string, std::string>>& values);
     void reset();
+    // The FMU's resources folder (a relative mesh path is taken from it; "" if the importer
+    // gave none) and whether the instance has the edge arrays (FMI 3.0), which then hold
+    // edge_nodes values: a mesh's contact nodes must be that many. Without the arrays
+    // (FMI 2.0) edge_nodes takes the mesh's count.
+    void set_resources(std::string folder, bool edge_arrays);
     void set_start_time(double t);
     // `initialized` is true after fmi2ExitInitializationMode: only inputs and tunable
     // parameters may then change.
@@ -64,7 +69,8 @@ public:
     // Restores a saved state; refuses one saved with other fixed parameters (another mesh).
     void load(const ModelState& state);
 
-    // Throws ModelError unless edge_nodes = nx + 1 (the FMI 3.0 arrays' size).
+    // Throws ModelError unless edge_nodes = nx + 1 (the FMI 3.0 arrays' size) for the
+    // rectangle (a mesh's count is known once it is read, at initialization).
     void check_structure() const;
     // Builds the simulation from the parameters if they changed (throws ModelError).
     void initialize();
@@ -94,6 +100,8 @@ private:
     uint64_t next_edge_output_ = 0;
     bool rebuild_ = true;
     double start_time_ = 0;
+    std::string resources_;
+    bool edge_arrays_ = false;
 };
 
 }  // namespace contactbody::fmu

@@ -25,6 +25,11 @@ int hex_digit(char c) {
 }  // namespace
 
 std::string start_values_path(const char* resource_location) {
+    const std::string folder = resources_directory(resource_location);
+    return folder.empty() ? "" : folder + "start_values.txt";
+}
+
+std::string resources_directory(const char* resource_location) {
     if (!resource_location) return "";
     std::string uri = resource_location;
     const std::string scheme = "file:";
@@ -46,7 +51,7 @@ std::string start_values_path(const char* resource_location) {
         decoded[2] == ':')
         decoded = decoded.substr(1);
     if (!decoded.empty() && decoded.back() != '/') decoded += '/';
-    return decoded + "start_values.txt";
+    return decoded;
 }
 
 std::vector<std::pair<std::string, std::string>> read_start_values(const std::string& path) {

@@ -15,6 +15,8 @@ namespace contactbody::fmu {
 // The file's path from fmi2Instantiate's fmuResourceLocation (a file URI); "" if there is
 // no location or it is not a file URI.
 std::string start_values_path(const char* resource_location);
+// The resources folder itself, with a trailing '/' ("" as above).
+std::string resources_directory(const char* resource_location);
 
 // (name, value) pairs of the file, in order; none if there is no file. Throws
 // std::runtime_error naming the line of a malformed one.

@@ -55,6 +55,8 @@ void log_initialized(Instance* instance, const char* function) {
     instance->factorizations_logged = sim.body().factorizations();
     if (std::string summary = sim.body().summary(); !summary.empty())
         instance->log(Status::ok, LogCategory::events, summary);
+    for (const std::string& note : sim.body().discretization().mesh_notes)
+        instance->log(Status::ok, LogCategory::events, note);
     instance->log(Status::ok, LogCategory::events, "initialized");
     log_warnings(instance, function, sim);
 }

@@ -196,11 +196,12 @@ namespace {
 const std::vector<Variable>& table() {
     static const std::vector<Variable> rows = checked({
         // Parameters (docs/variables.md lists them)
+        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused"),
         real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"),
         real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"),
         integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx),
         integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both),
-        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Bottom nodes on the contact edge, the size of the edge arrays: always nx + 1 (setting nx sets it; another value is refused when Configuration Mode ends and at initialization)").as_structural(Standard::fmi3).as_fmu_only(),
+        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
         real("density", 5, &Values::density, "kg/m3", 1000, 1e-3, inf, "Density rho"),
         real("lambda", 6, &Values::lambda, "Pa", 300e6, none, none, "First Lame coefficient (lambda + mu > 0)"),
         real("mu", 7, &Values::mu, "Pa", 150e6, 1, inf, "Shear modulus"),
@@ -278,7 +279,9 @@ SceneParameters Values::scene() const {
         [&](const char* name, Reuse, auto& field) {
             const Variable& v = *find_variable(name);
             using Field = std::decay_t<decltype(field)>;
-            if constexpr (std::is_floating_point_v<Field>)
+            if constexpr (std::is_same_v<Field, std::string>)
+                field = v.string(values);
+            else if constexpr (std::is_floating_point_v<Field>)
                 field = v.real(values);
             else  // int, a bool (0 or 1) or an enumeration
                 field = static_cast<Field>(v.integer(values));

@@ -15,9 +15,10 @@ constexpr const char* guid = "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
 
 // Everything the variables read and write, as plain data.
 struct Values {
+    std::string mesh;  // empty: the rectangle; else a Gmsh file (resources/-relative or absolute)
     double width, height, density, lambda, mu, friction_coefficient;
     int nx, ny, mass_matrix;
-    int edge_nodes;  // nx + 1: the size of the FMI 3.0 edge arrays (follows nx)
+    int edge_nodes;  // contact nodes (the rectangle's nx + 1): the size of the FMI 3.0 edge arrays
     double internal_step, contact_tolerance, initial_gap;
     double damping_mass, damping_stiffness, min_internal_step;
     int input_interpolation;  // InputInterpolation

@@ -30,9 +30,13 @@ std::vector<Point> normalized_points(const Mesh& mesh) {
     std::vector<Point> p(mesh.num_nodes());
     for (int n = 0; n < mesh.num_nodes(); ++n) {
         const Point q = mesh.point(n);
-        p[n] = {2 * q.x / mesh.width - 1, 2 * q.y / mesh.height - 1};
+        p[n] = {2 * (q.x - mesh.x_min) / mesh.width() - 1, 2 * (q.y - mesh.y_min) / mesh.height() - 1};
     }
     return p;
+}
+
+std::string mesh_name(const Mesh& mesh) {
+    return mesh.is_rectangle() ? "the rectangle" : "the mesh " + mesh.source;
 }
 
 // Row of the symmetric-form constraint matrix for entry (i, j).
@@ -145,7 +149,8 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(CCt);
     if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(5))
         throw std::invalid_argument(
-            "mass redistribution: mesh too coarse (needs ny >= 2) to keep the six moments");
+            "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the six moments "
+            "without its contact nodes (the rectangle needs ny >= 2); use mass_matrix = 0 or 3");
     const Eigen::Matrix<double, 6, 1> y = CCt.ldlt().solve(Cm - target);
 
     Triplets corrected;
@@ -166,7 +171,7 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     for (const auto& e : corrected)
         restricted.emplace_back(position[e.row()], position[e.col()], e.value());
     Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(static_cast<int>(rest.size()), restricted));
-    if (llt.info() != Eigen::Success)
+    if (llt.info() != Eigen::Success && mesh.is_rectangle())
         throw std::invalid_argument(
             "mass redistribution: the corrected mass matrix is not positive definite on this "
             "mesh (nx = " + std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) +
@@ -174,6 +179,12 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
             "for nx >= 2, ny = 3 for nx >= 3, ny = 4 for nx >= 7, and ny >= 5 never failed "
             "(checked up to nx = 1000); a larger nx does not help. Use ny >= 5, or mass_matrix "
             "= 0 or 3 (consistent mass)");
+    if (llt.info() != Eigen::Success)
+        throw std::invalid_argument(
+            "mass redistribution: the least-change redistribution over the contact nodes of " +
+            mesh_name(mesh) + " is not positive definite (its cells next to the contact boundary "
+            "carry too little of the mass moments): refine the mesh near the contact boundary, "
+            "or use mass_matrix = 0 or 3 (consistent mass)");
     return redistributed;
 }
 

@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace contactbody {
 

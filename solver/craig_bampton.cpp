@@ -282,7 +282,7 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
         problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap - contact_u_[i]; },
+        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; },
         [&](int i) { return contact_v_[nc + i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();
@@ -326,7 +326,7 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     report.top_reaction_x = rx;
 
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, solver_.status(), [&](int i) { return contact_u_[i]; },
         [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
 

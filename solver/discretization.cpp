@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "mesh/gmsh.hpp"
 #include "text.hpp"
 
 namespace contactbody {
@@ -54,12 +55,14 @@ bool contact_at_end_of_step(MassVariant v) {
 void check_parameters(const SceneParameters& p) {
     require_positive("width", p.width);
     require_positive("height", p.height);
-    if (p.nx < 1 || p.nx > max_cells_per_direction)
-        reject("nx", "between 1 and " + std::to_string(max_cells_per_direction), p.nx);
-    if (p.ny < 1 || p.ny > max_cells_per_direction)
-        reject("ny", "between 1 and " + std::to_string(max_cells_per_direction), p.ny);
-    if (static_cast<long>(p.nx + 1) * (p.ny + 1) > max_nodes)
-        reject("nx", "such that (nx+1)(ny+1) <= " + std::to_string(max_nodes), p.nx);
+    if (p.mesh.empty()) {  // the rectangle's cells (a mesh file is checked as it is read)
+        if (p.nx < 1 || p.nx > max_cells_per_direction)
+            reject("nx", "between 1 and " + std::to_string(max_cells_per_direction), p.nx);
+        if (p.ny < 1 || p.ny > max_cells_per_direction)
+            reject("ny", "between 1 and " + std::to_string(max_cells_per_direction), p.ny);
+        if (static_cast<long>(p.nx + 1) * (p.ny + 1) > max_nodes)
+            reject("nx", "such that (nx+1)(ny+1) <= " + std::to_string(max_nodes), p.nx);
+    }
     require_positive("density", p.density);
     require_positive("mu", p.mu);
     if (!(std::isfinite(p.lambda) && p.lambda + p.mu > 0))
@@ -80,7 +83,7 @@ void check_parameters(const SceneParameters& p) {
     const int variant = static_cast<int>(p.mass_matrix);
     if (variant < 0 || variant >= num_mass_variants)
         reject("mass_matrix", "0, 1, 2, 3 or 4", variant);
-    if (redistributes_normal(p.mass_matrix) && p.ny < 2)
+    if (redistributes_normal(p.mass_matrix) && p.mesh.empty() && p.ny < 2)
         reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
     require_positive("internal_step", p.internal_step);
     require_positive("min_internal_step", p.min_internal_step);
@@ -108,7 +111,8 @@ void check_parameters(const SceneParameters& p) {
 Discretization discretize(const SceneParameters& p) {
     check_parameters(p);
     Discretization d;
-    d.mesh = make_structured_mesh(p.width, p.height, p.nx, p.ny);
+    d.mesh = p.mesh.empty() ? make_structured_mesh(p.width, p.height, p.nx, p.ny)
+                            : read_gmsh_mesh(p.mesh, max_nodes, d.mesh_notes);
     d.A = stiffness_matrix(d.mesh, p.lambda, p.mu);
     d.strain_energy = StrainEnergy(d.mesh, p.lambda, p.mu);
 

@@ -33,6 +33,9 @@ bool contact_at_end_of_step(MassVariant v);
 enum class Reuse { rebuilds_discretization, keeps_discretization };
 
 struct SceneParameters {
+    // The body's mesh: empty for the rectangle of width, height, nx, ny; else a Gmsh file
+    // (solver/mesh/gmsh.hpp), whose path the FMU resolves against its resources/ folder.
+    std::string mesh;
     double width = 0.1, height = 0.1;
     int nx = 20, ny = 20;
     double density = 1000, lambda = 300e6, mu = 150e6;
@@ -77,6 +80,7 @@ struct SceneParameters {
     template <class F, class... P>
     static void for_each(F&& f, P&... p) {
         constexpr Reuse rebuild = Reuse::rebuilds_discretization, keep = Reuse::keeps_discretization;
+        f("mesh", rebuild, p.mesh...);
         f("width", rebuild, p.width...);
         f("height", rebuild, p.height...);
         f("nx", rebuild, p.nx...);
@@ -131,6 +135,7 @@ void check_parameters(const SceneParameters& p);
 
 struct Discretization {
     Mesh mesh;
+    std::vector<std::string> mesh_notes;  // what reading the mesh did that the log should say
     bool contact_at_end_of_step = false;  // else on u^{k+1/2} (the paper's midpoint)
     SparseMatrix A;                 // all dofs
     StrainEnergy strain_energy;     // 1/2 u^T A u, >= 0 and exact for translations

@@ -317,7 +317,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
         problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap - contact_u_[i]; },
+        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; },
         [&](int i) { return contact_v_[nc + i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();
@@ -377,7 +377,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     report.top_reaction_x = rx;
 
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, solver_.status(), [&](int i) { return contact_u_[i]; },
         [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
 

@@ -268,10 +268,19 @@ std::string rate_warning(const SceneParameters& p, double speed) {
 }  // namespace
 
 double wedging_friction(const SceneParameters& p) {
+    if (!p.mesh.empty()) return std::numeric_limits<double>::infinity();  // not measured
     return stability_map::damped_no_steady_state[nearest_column(p.ny)];
 }
 
 std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
+    if (!p.mesh.empty()) {  // the maps place a body by the rectangle's cells: none for a mesh
+        if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped())
+            return "settings not covered: the stability maps behind these warnings were measured "
+                   "on the rectangle, and say nothing of the mesh " + p.mesh + "; there, undamped "
+                   "steady sliding with friction was unstable for every F > 0 on every mesh "
+                   "measured: consider damping_stiffness";
+        return "";
+    }
     const bool rate = p.friction_coefficient > 0 && rate_law(p).active();
     const std::string why = rate ? rate_warning(p, sliding_speed)
                             : p.friction_coefficient > 0 ? friction_warning(p)

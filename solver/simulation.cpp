@@ -126,16 +126,41 @@ void Simulation::static_initial_state(double top, double force) {
     clamped.modes = 0;  // the full body's path; a reduced body takes its projection (exact:
                         // the static response to edge forces is in its basis)
     Stepper path_stepper(clamped);
-    const double probe = -1e-4 * p.height;
-    const State s = quasi_static_path(path_stepper, probe);
     const Discretization& d = path_stepper.discretization();
-    double pressing = 0;  // the clamp's force on the body, downwards (A symmetric: col = row)
-    for (int dof : d.top_dofs)
-        if (dof % 2 == 1) pressing -= d.A.col(dof).dot(s.u);
+    const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
+        double pressing = 0;                             // (A symmetric: col = row)
+        for (int dof : d.top_dofs)
+            if (dof % 2 == 1) pressing -= d.A.col(dof).dot(s.u);
+        return pressing;
+    };
+    double probe = -1e-4 * d.mesh.clamp_height();
+    State s = quasi_static_path(path_stepper, probe);
+    double pressing = pressing_force(s);
     if (!(pressing > 0))
         throw std::invalid_argument("initial_state = static: the clamped load path carries no "
                                     "force; use initial_state = paper");
-    const double scale = force / pressing;
+    // A contact boundary of several heights (a mesh's curved one) touches more as it is
+    // pressed: the state no longer scales with the clamp. The clamp's displacement for the
+    // force is then found by secant steps on the force, each a load path of its own.
+    const bool flat = std::all_of(d.mesh.contact_heights.begin(), d.mesh.contact_heights.end(),
+                                  [](double h) { return h == 0; });
+    if (!flat) {
+        double previous_probe = 0, previous_pressing = 0;
+        for (int iteration = 0; std::abs(pressing - force) > 1e-12 * force; ++iteration) {
+            if (iteration == 60)
+                throw std::invalid_argument("initial_state = static: the clamp's displacement for "
+                                            "top_force was not found in 60 load paths; use "
+                                            "initial_state = paper");
+            const double next = probe + (force - pressing) * (probe - previous_probe) /
+                                            (pressing - previous_pressing);
+            previous_probe = probe;
+            previous_pressing = pressing;
+            probe = std::isfinite(next) && next < 0 ? next : 2 * probe;
+            s = quasi_static_path(path_stepper, probe);
+            pressing = pressing_force(s);
+        }
+    }
+    const double scale = flat ? force / pressing : 1.0;
     State full;
     full.u = scale * s.u;
     for (Eigen::Index dof = 1; dof < full.u.size(); dof += 2) full.u[dof] -= p.initial_gap;
@@ -167,7 +192,7 @@ void Simulation::initial_reactions() {
         const size_t i = static_cast<size_t>(k);
         const int node = d.mesh.contact_nodes[i];
         const double share = d.mesh.edge_share(i);
-        const double gap = p.initial_gap + full.u[dof_y(node)];
+        const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[dof_y(node)];
         const bool touching = gap <= 0;
         double normal = 0, friction = 0;
         if (multipliers) {
@@ -273,7 +298,7 @@ void Simulation::update_edge(int substeps) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
-        edge_.gap[i] = body_->parameters().initial_gap +
+        edge_.gap[i] = body_->parameters().initial_gap + mesh.contact_heights[i] +
                        body_->contact_height(state_, static_cast<int>(i));
     }
     edge_.slip_velocity = c.slip_velocity;
@@ -327,20 +352,21 @@ void Simulation::check_plausible() {
     // The top edge's travel: below the foundation the body would be compressed to nothing
     // (nothing sensible follows); beyond the body's height either way, a warning.
     const double top = body_->top_position(state_);
-    if (!(top > -(p.height + p.initial_gap))) {
+    const double height = body_->discretization().mesh.clamp_height();
+    if (!(top > -(height + p.initial_gap))) {
         Text msg;
         msg << "at t = " << state_.time << " the top edge is at top_position = " << top
-            << " m, at or below the foundation (the body is " << p.height << " m high, "
+            << " m, at or below the foundation (the body is " << height << " m high, "
             << p.initial_gap << " m above it): the body would be compressed to nothing, where "
             << "linear elasticity means nothing; check top_displacement (or top_force) and its "
             << "coupling";
         throw NumericalFailure(msg.str());
     }
-    if (std::abs(top) > p.height && !travel_warned_) {
+    if (std::abs(top) > height && !travel_warned_) {
         travel_warned_ = true;
         Text msg;
         msg << "at t = " << state_.time << " the top edge has moved by top_position = " << top
-            << " m, more than the body's height " << p.height << " m: check top_displacement "
+            << " m, more than the body's height " << height << " m: check top_displacement "
             << "(or top_force) and its coupling";
         warnings_.push_back(msg.str());
     }

@@ -140,7 +140,7 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     s.u.setZero(mesh.num_dofs());
     s.v.setZero(mesh.num_dofs());
     for (int n = 0; n < mesh.num_nodes(); ++n)
-        s.u[dof_y(n)] = top_displacement * mesh.point(n).y / mesh.height;
+        s.u[dof_y(n)] = top_displacement * (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
     for (int dof : d.moving_dofs)
         s.v[dof] = dof % 2 == 0 ? p.initial_velocity_x : p.initial_velocity_y;
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
@@ -304,7 +304,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     const bool implicit = d.contact_at_end_of_step;
     const bool touching = set_contact_conditions(
         problem_, params_, implicit, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap + s.u[dof_y(d.mesh.contact_nodes[i])]; },  // g - u_N^k
+        [&](int i) { return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])]; },  // g - u_N^k
         [&](int i) { return s.v[dof_x(d.mesh.contact_nodes[i])]; });
     SubstepReport report;
     if (touching) {
@@ -358,7 +358,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         if (friction) snapshot_.slip[i] = w_[node_x(i)] - problem_.slip_origin[i];
     }
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap,
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
         [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
 

@@ -142,12 +142,13 @@ int add_node_contact(SubstepReport& report, double& sticking, double lN, double 
 
 // After a substep, what both steppers report of the edge: the snapshot's multipliers, slip
 // velocities and node states, and each node's share of the report (add_node_contact), given
-// each node's u_N^k, uN_old(i), and its increments over the substep, duN(i) and dux(i).
+// each node's u_N^k, uN_old(i), and its increments over the substep, duN(i) and dux(i); node
+// i's gap at rest is initial_gap + heights[i] (the mesh's contact_heights).
 // The snapshot's vectors are sized once (the substep allocates nothing after the first).
 template <class NormalOld, class NormalStep, class TangentialStep>
 void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::VectorXd& sticking,
                     const Eigen::VectorXd& lambda, double dt, double foundation_velocity,
-                    double initial_gap, bool touching,
+                    double initial_gap, const std::vector<double>& heights, bool touching,
                     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
                     NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& dux) {
     const Eigen::Index nc = sticking.size();
@@ -164,7 +165,7 @@ void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::Vec
         snapshot.slip_velocity[i] = (dx - foundation_step) / dt;
         snapshot.state[i] = static_cast<signed char>(add_node_contact(
             report, sticking[i], snapshot.lambda_N[i], snapshot.lambda_T[i], uN_old(i), duN(i), dx,
-            foundation_step, initial_gap, friction, touching,
+            foundation_step, initial_gap + heights[static_cast<size_t>(i)], friction, touching,
             touching ? status[i] : NodeStatus::open));
     }
     report.corner_lambda_N = snapshot.lambda_N[0];

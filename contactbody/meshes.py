@@ -1,0 +1,168 @@
+"""Gmsh meshes for ContactBody's `mesh` parameter, written by the real Gmsh (the `gmsh` wheel,
+its Python API): the shapes the tests, the Hertz benchmark and the examples use. Each file
+holds first-order triangles in the x-y plane and the physical line groups "contact" and
+"clamp" that the FMU reads (docs/contract.md, "A mesh from Gmsh").
+
+    from contactbody import meshes
+    meshes.half_disk("roller.msh", radius=0.05, contact_size=5e-4, far_size=5e-3)
+
+Gmsh is only the writer: the FMU reads the MSH format itself and links no Gmsh.
+"""
+import contextlib
+import math
+import pathlib
+
+VERSIONS = {"4.1": 4.1, "2.2": 2.2}
+
+
+@contextlib.contextmanager
+def session(name):
+    """One Gmsh model, quiet, finalized whatever happens."""
+    import gmsh
+    gmsh.initialize(interruptible=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add(name)
+        yield gmsh
+    finally:
+        gmsh.finalize()
+
+
+def write(gmsh, path, version="4.1", binary=False):
+    gmsh.option.setNumber("Mesh.MshFileVersion", VERSIONS[version])
+    gmsh.option.setNumber("Mesh.Binary", int(binary))
+    path = pathlib.Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    gmsh.write(str(path))
+    return path
+
+
+def rectangle(path, width=0.1, height=0.1, nx=20, ny=20, shift=(0.0, 0.0), version="4.1"):
+    """The FMU's own rectangle (solver/mesh/mesh.cpp: nodes numbered row by row from the bottom,
+    cells split as GetFEM's regular simplices), moved by `shift`, as a Gmsh file: bottom edge
+    "contact", top edge "clamp". Given to `mesh`, it is the body of mesh = "" (shift (0, 0))."""
+    node = lambda i, j: j * (nx + 1) + i + 1  # Gmsh tags from 1
+    coords, tris = [], []
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            coords += [shift[0] + i * width / nx, shift[1] + j * height / ny, 0.0]
+    for j in range(ny):
+        for i in range(nx):
+            n00, n10, n01, n11 = node(i, j), node(i + 1, j), node(i, j + 1), node(i + 1, j + 1)
+            tris += [n00, n10, n11, n00, n11, n01] if (i + j) % 2 == 0 else [n00, n10, n01, n10, n11, n01]
+    lines = lambda j: [t for i in range(nx) for t in (node(i, j), node(i + 1, j))]
+    with session("rectangle") as gmsh:
+        discrete_mesh(gmsh, coords, tris, {"contact": lines(0), "clamp": lines(ny)})
+        return write(gmsh, path, version)
+
+
+def discrete_mesh(gmsh, coords, triangles, groups, surface_group="body"):
+    """Nodes (x, y, z flat, tags from 1), triangles (node tags, three each) and line groups
+    {name: node tags, two per line} as Gmsh discrete entities with physical groups."""
+    surface = gmsh.model.addDiscreteEntity(2)
+    n = len(coords) // 3
+    gmsh.model.mesh.addNodes(2, surface, list(range(1, n + 1)), coords)
+    gmsh.model.mesh.addElementsByType(surface, 2, [], triangles)
+    gmsh.model.addPhysicalGroup(2, [surface], name=surface_group)
+    for name, nodes in groups.items():
+        curve = gmsh.model.addDiscreteEntity(1)
+        gmsh.model.mesh.addElementsByType(curve, 1, [], nodes)
+        gmsh.model.addPhysicalGroup(1, [curve], name=name)
+
+
+def _refine_near(gmsh, point, fine, coarse, distance, fine_distance=None):
+    """Element size `fine` within `fine_distance` (by default `distance`/10) of `point`,
+    growing to `coarse` at `distance`."""
+    field = gmsh.model.mesh.field
+    d = field.add("Distance")
+    field.setNumbers(d, "PointsList", [point])
+    t = field.add("Threshold")
+    field.setNumber(t, "InField", d)
+    field.setNumber(t, "SizeMin", fine)
+    field.setNumber(t, "SizeMax", coarse)
+    field.setNumber(t, "DistMin", fine_distance if fine_distance is not None else distance / 10)
+    field.setNumber(t, "DistMax", distance)
+    field.setAsBackgroundMesh(t)
+    for option in ("Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromPoints", "Mesh.MeshSizeFromCurvature"):
+        gmsh.option.setNumber(option, 0)
+
+
+def half_disk(path, radius=0.05, contact_size=5e-4, far_size=5e-3, refine_distance=None,
+              fine_distance=None, contact_angle=180.0, version="4.1"):
+    """A half-cylinder's cross-section: its flat face on top (y = radius, "clamp"), its arc
+    below touching y = 0 at x = 0; the arc within `contact_angle` degrees around the bottom is
+    "contact". Elements of `contact_size` within `fine_distance` of the bottom point (by
+    default a tenth of `refine_distance`), `far_size` beyond `refine_distance` (by default
+    radius / 2)."""
+    r = radius
+    with session("half_disk") as gmsh:
+        geo = gmsh.model.geo
+        c = geo.addPoint(0, r, 0)
+        left, right, bottom = geo.addPoint(-r, r, 0), geo.addPoint(r, r, 0), geo.addPoint(0, 0, 0)
+        half = math.radians(contact_angle) / 2
+        arcs = []
+        if contact_angle < 180:
+            a = geo.addPoint(-r * math.sin(half), r - r * math.cos(half), 0)
+            b = geo.addPoint(r * math.sin(half), r - r * math.cos(half), 0)
+            free_left, contact_left = geo.addCircleArc(left, c, a), geo.addCircleArc(a, c, bottom)
+            contact_right, free_right = geo.addCircleArc(bottom, c, b), geo.addCircleArc(b, c, right)
+            arcs = [free_left, contact_left, contact_right, free_right]
+            contact = [contact_left, contact_right]
+        else:
+            arcs = [geo.addCircleArc(left, c, bottom), geo.addCircleArc(bottom, c, right)]
+            contact = arcs
+        top = geo.addLine(right, left)
+        loop = geo.addCurveLoop(arcs + [top])
+        surface = geo.addPlaneSurface([loop])
+        geo.synchronize()
+        gmsh.model.addPhysicalGroup(2, [surface], name="body")
+        gmsh.model.addPhysicalGroup(1, contact, name="contact")
+        gmsh.model.addPhysicalGroup(1, [top], name="clamp")
+        _refine_near(gmsh, bottom, contact_size, far_size, refine_distance or r / 2, fine_distance)
+        gmsh.model.mesh.generate(2)
+        return write(gmsh, path, version)
+
+
+def plate_with_hole(path, width=0.1, height=0.06, hole=(0.05, 0.03, 0.015), size=0.005, version="4.1"):
+    """A rectangle (bottom "contact", top "clamp") with a circular hole (x, y, radius)."""
+    with session("plate_with_hole") as gmsh:
+        occ = gmsh.model.occ
+        plate = occ.addRectangle(0, 0, 0, width, height)
+        disk = occ.addDisk(hole[0], hole[1], 0, hole[2], hole[2])
+        occ.cut([(2, plate)], [(2, disk)])
+        occ.synchronize()
+        surface = gmsh.model.getEntities(2)[0][1]
+        bottom, top = [], []
+        for dim, tag in gmsh.model.getBoundary([(2, surface)], oriented=False):
+            x0, y0, _, x1, y1, _ = gmsh.model.getBoundingBox(dim, tag)
+            if abs(y1 - y0) < 1e-6 and abs(y0) < 1e-6:  # OCC pads its boxes by its tolerance
+                bottom.append(tag)
+            elif abs(y1 - y0) < 1e-6 and abs(y1 - height) < 1e-6:
+                top.append(tag)
+        gmsh.model.addPhysicalGroup(2, [surface], name="body")
+        gmsh.model.addPhysicalGroup(1, bottom, name="contact")
+        gmsh.model.addPhysicalGroup(1, top, name="clamp")
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        gmsh.model.mesh.generate(2)
+        return write(gmsh, path, version)
+
+
+def pad(path, width=0.06, height=0.02, chamfer=0.004, slot_width=0.006, slot_depth=0.008,
+        size=1e-3, version="4.1"):
+    """A brake-pad-like block: chamfered bottom corners, a slot cut up from the middle of its
+    bottom face; the two bottom faces beside the slot are "contact", the top face "clamp"."""
+    w, h, c, sw, sd = width, height, chamfer, slot_width, slot_depth
+    outline = [(c, 0), (w / 2 - sw / 2, 0), (w / 2 - sw / 2, sd), (w / 2 + sw / 2, sd),
+               (w / 2 + sw / 2, 0), (w - c, 0), (w, c), (w, h), (0, h), (0, c)]
+    with session("pad") as gmsh:
+        geo = gmsh.model.geo
+        points = [geo.addPoint(x, y, 0) for x, y in outline]
+        lines = [geo.addLine(points[k], points[(k + 1) % len(points)]) for k in range(len(points))]
+        surface = geo.addPlaneSurface([geo.addCurveLoop(lines)])
+        geo.synchronize()
+        gmsh.model.addPhysicalGroup(2, [surface], name="body")
+        gmsh.model.addPhysicalGroup(1, [lines[0], lines[4]], name="contact")
+        gmsh.model.addPhysicalGroup(1, [lines[7]], name="clamp")
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        gmsh.model.mesh.generate(2)
+        return write(gmsh, path, version)

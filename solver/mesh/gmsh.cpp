@@ -1,0 +1,534 @@
+#include "gmsh.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+
+#include "../c_file.hpp"
+#include "../text.hpp"
+
+namespace contactbody {
+
+namespace {
+
+// Whitespace-separated tokens of the whole file, each knowing its line; a quoted token
+// ("contact") is one token without its quotes.
+class Tokens {
+public:
+    Tokens(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
+
+    [[noreturn]] void fail(const std::string& what, int line = -1) const {
+        Text msg;
+        msg << "mesh " << path_ << ", line " << (line < 0 ? line_ : line) << ": " << what;
+        throw std::invalid_argument(msg.str());
+    }
+    bool at_end() {
+        skip_blanks();
+        return pos_ >= text_.size();
+    }
+    int line() const { return line_; }
+    std::string_view next(const char* what) {
+        if (at_end()) fail(std::string("the file ends where ") + what + " should be");
+        if (text_[pos_] == '"') {
+            const size_t close = text_.find('"', pos_ + 1);
+            if (close == std::string::npos) fail("a quoted name has no closing quote");
+            std::string_view t(text_.data() + pos_ + 1, close - pos_ - 1);
+            pos_ = close + 1;
+            return t;
+        }
+        const size_t start = pos_;
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+        return std::string_view(text_.data() + start, pos_ - start);
+    }
+    long integer(const char* what) {
+        const std::string_view t = next(what);
+        long value = 0;
+        const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
+        if (error != std::errc() || stop != t.data() + t.size())
+            fail(std::string(what) + " must be a whole number (got \"" + std::string(t) + "\")");
+        return value;
+    }
+    long count(const char* what, long limit) {
+        const long n = integer(what);
+        if (n < 0 || n > limit) {
+            Text msg;
+            msg << what << " must be between 0 and " << limit << " (got " << n << ")";
+            fail(msg.str());
+        }
+        return n;
+    }
+    // A coordinate: any number the format can write, nan and inf included (checked later,
+    // with the node's tag).
+    double real(const char* what) {
+        std::string_view t = next(what);
+        if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);
+        double value = 0;
+        const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
+        if ((error != std::errc() && error != std::errc::result_out_of_range) || stop != t.data() + t.size())
+            fail(std::string(what) + " must be a number (got \"" + std::string(t) + "\")");
+        return value;
+    }
+    void expect(std::string_view word) {
+        const int at = (skip_blanks(), line_);
+        const std::string_view t = next(std::string(word).c_str());
+        if (t != word) fail("expected " + std::string(word) + ", found \"" + std::string(t) + "\"", at);
+    }
+    // Past "$End<name>" (a section this reader does not need).
+    void skip_section(std::string_view name) {
+        const std::string end = "$End" + std::string(name.substr(1));
+        while (next(end.c_str()) != end) {
+        }
+    }
+
+private:
+    void skip_blanks() {
+        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+            if (text_[pos_] == '\n') ++line_;
+            ++pos_;
+        }
+    }
+    std::string path_, text_;
+    size_t pos_ = 0;
+    int line_ = 1;
+};
+
+std::string read_whole_file(const std::string& path) {
+    File f = open_file(path, "rb");
+    if (!f) {
+        Text msg;
+        msg << "mesh " << path << ": cannot open it (" << std::strerror(errno) << ")";
+        throw std::invalid_argument(msg.str());
+    }
+    std::string text;
+    char buffer[1 << 16];
+    size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
+    if (std::ferror(f.get())) {
+        Text msg;
+        msg << "mesh " << path << ": cannot read it (" << std::strerror(errno) << ")";
+        throw std::invalid_argument(msg.str());
+    }
+    return text;
+}
+
+// Gmsh's element types: number of nodes, and why it is refused (empty: taken).
+struct ElementType {
+    int nodes;
+    const char* refused;
+};
+bool element_type(long type, ElementType& t) {
+    static const std::map<long, ElementType> types = {
+        {15, {1, ""}},
+        {1, {2, ""}},
+        {2, {3, ""}},
+        {8, {3, "a 3-node (second-order) line"}},
+        {26, {4, "a 4-node (third-order) line"}},
+        {9, {6, "a 6-node (second-order) triangle"}},
+        {20, {9, "a 9-node (third-order) triangle"}},
+        {21, {10, "a 10-node (third-order) triangle"}},
+        {3, {4, "a 4-node quadrangle"}},
+        {10, {9, "a 9-node quadrangle"}},
+        {16, {8, "an 8-node quadrangle"}},
+        {4, {4, "a tetrahedron (3D)"}},
+        {5, {8, "a hexahedron (3D)"}},
+        {6, {6, "a prism (3D)"}},
+        {7, {5, "a pyramid (3D)"}},
+        {11, {10, "a 10-node tetrahedron (3D)"}},
+        {12, {27, "a 27-node hexahedron (3D)"}},
+        {13, {18, "an 18-node prism (3D)"}},
+        {14, {14, "a 14-node pyramid (3D)"}},
+        {17, {20, "a 20-node hexahedron (3D)"}},
+        {18, {15, "a 15-node prism (3D)"}},
+        {19, {13, "a 13-node pyramid (3D)"}},
+    };
+    const auto it = types.find(type);
+    if (it == types.end()) return false;
+    t = it->second;
+    return true;
+}
+
+struct RawElement {
+    long tag;
+    int line;
+    int dim;
+    std::vector<long> nodes;
+    std::vector<long> physicals;  // the physical groups (tags, of its dimension) it belongs to
+};
+
+struct RawNode {
+    double x, y, z;
+    int line;
+};
+
+struct RawMesh {
+    std::map<std::pair<int, long>, std::string> physical_names;  // (dim, tag) -> name
+    std::map<long, RawNode> nodes;                               // tag -> node
+    std::vector<RawElement> elements;
+};
+
+constexpr long max_count = 100'000'000;
+
+void read_physical_names(Tokens& in, RawMesh& m) {
+    const long n = in.count("the number of physical names", max_count);
+    for (long k = 0; k < n; ++k) {
+        const int dim = static_cast<int>(in.count("a physical name's dimension", 3));
+        const long tag = in.integer("a physical tag");
+        m.physical_names[{dim, tag}] = std::string(in.next("a physical name"));
+    }
+    in.expect("$EndPhysicalNames");
+}
+
+// MSH 4.1's entities: (dim, tag) -> its physical tags.
+using Entities = std::map<std::pair<int, long>, std::vector<long>>;
+
+void read_entities(Tokens& in, Entities& entities) {
+    long counts[4];
+    for (long& c : counts) c = in.count("an entity count", max_count);
+    for (int dim = 0; dim < 4; ++dim)
+        for (long k = 0; k < counts[dim]; ++k) {
+            const long tag = in.integer("an entity tag");
+            for (int c = 0; c < (dim == 0 ? 3 : 6); ++c) in.real("an entity's bounding box");
+            std::vector<long>& physicals = entities[{dim, tag}];
+            const long np = in.count("an entity's number of physical tags", max_count);
+            for (long p = 0; p < np; ++p) physicals.push_back(in.integer("a physical tag"));
+            if (dim > 0) {
+                const long nb = in.count("an entity's number of bounding entities", max_count);
+                for (long b = 0; b < nb; ++b) in.integer("a bounding entity's tag");
+            }
+        }
+    in.expect("$EndEntities");
+}
+
+void add_node(Tokens& in, RawMesh& m, long tag, int line, long max_nodes) {
+    RawNode node;
+    node.line = line;
+    node.x = in.real("a node's x");
+    node.y = in.real("a node's y");
+    node.z = in.real("a node's z");
+    if (!m.nodes.emplace(tag, node).second) in.fail("node " + std::to_string(tag) + " is defined twice", line);
+    if (static_cast<long>(m.nodes.size()) > max_nodes)
+        in.fail("more than " + std::to_string(max_nodes) + " nodes, the most a body may have", line);
+}
+
+void check_node_count(Tokens& in, long n, long max_nodes) {
+    if (n > max_nodes)
+        in.fail(std::to_string(n) + " nodes: a body has at most " + std::to_string(max_nodes));
+}
+
+void read_nodes_41(Tokens& in, RawMesh& m, long max_nodes) {
+    const long blocks = in.count("the number of node blocks", max_count);
+    check_node_count(in, in.count("the number of nodes", max_count), max_nodes);
+    in.integer("the smallest node tag");
+    in.integer("the largest node tag");
+    for (long b = 0; b < blocks; ++b) {
+        const int dim = static_cast<int>(in.count("a node block's dimension", 3));
+        in.integer("a node block's entity tag");
+        const long parametric = in.count("a node block's parametric flag", 1);
+        const long n = in.count("a node block's number of nodes", max_count);
+        std::vector<long> tags(static_cast<size_t>(n));
+        for (long& t : tags) t = in.integer("a node tag");
+        for (long t : tags) {
+            in.at_end();
+            const int line = in.line();
+            add_node(in, m, t, line, max_nodes);
+            if (parametric)
+                for (int p = 0; p < dim; ++p) in.real("a node's parametric coordinate");
+        }
+    }
+    in.expect("$EndNodes");
+}
+
+void read_nodes_22(Tokens& in, RawMesh& m, long max_nodes) {
+    const long n = in.count("the number of nodes", max_count);
+    check_node_count(in, n, max_nodes);
+    for (long k = 0; k < n; ++k) {
+        in.at_end();
+        const int line = in.line();
+        const long tag = in.integer("a node tag");
+        add_node(in, m, tag, line, max_nodes);
+    }
+    in.expect("$EndNodes");
+}
+
+void read_element_nodes(Tokens& in, long type, RawElement& e) {
+    ElementType t{};
+    if (!element_type(type, t))
+        in.fail("element type " + std::to_string(type) + " is not one Gmsh writes for a 2D mesh: "
+                "ContactBody needs a mesh with first-order triangles", e.line);
+    if (*t.refused)
+        in.fail(std::string("element ") + std::to_string(e.tag) + " is " + t.refused +
+                    ": ContactBody needs a mesh with first-order triangles (Gmsh: Mesh.ElementOrder = 1, "
+                    "no recombination, a 2D mesh)", e.line);
+    e.dim = type == 15 ? 0 : type == 1 ? 1 : 2;
+    for (int k = 0; k < t.nodes; ++k) e.nodes.push_back(in.integer("an element's node tag"));
+}
+
+void read_elements_41(Tokens& in, RawMesh& m, const Entities& entities) {
+    const long blocks = in.count("the number of element blocks", max_count);
+    in.count("the number of elements", max_count);
+    in.integer("the smallest element tag");
+    in.integer("the largest element tag");
+    for (long b = 0; b < blocks; ++b) {
+        const int dim = static_cast<int>(in.count("an element block's dimension", 3));
+        const long entity = in.integer("an element block's entity tag");
+        const long type = in.integer("an element type");
+        const long n = in.count("an element block's number of elements", max_count);
+        const auto it = entities.find({dim, entity});
+        for (long k = 0; k < n; ++k) {
+            RawElement e;
+            in.at_end();
+            e.line = in.line();
+            e.tag = in.integer("an element tag");
+            read_element_nodes(in, type, e);
+            if (it != entities.end()) e.physicals = it->second;
+            m.elements.push_back(std::move(e));
+        }
+    }
+    in.expect("$EndElements");
+}
+
+void read_elements_22(Tokens& in, RawMesh& m) {
+    const long n = in.count("the number of elements", max_count);
+    for (long k = 0; k < n; ++k) {
+        RawElement e;
+        in.at_end();
+        e.line = in.line();
+        e.tag = in.integer("an element tag");
+        const long type = in.integer("an element type");
+        const long ntags = in.count("an element's number of tags", 1000);
+        std::vector<long> tags;
+        for (long t = 0; t < ntags; ++t) tags.push_back(in.integer("an element tag's value"));
+        read_element_nodes(in, type, e);
+        if (ntags > 0 && tags[0] != 0) e.physicals.push_back(tags[0]);  // 2.2: physical first
+        m.elements.push_back(std::move(e));
+    }
+    in.expect("$EndElements");
+}
+
+RawMesh read_raw(const std::string& path, long max_nodes) {
+    Tokens in(path, read_whole_file(path));
+    if (in.at_end()) in.fail("the file is empty (a Gmsh MSH file starts with $MeshFormat)");
+    in.expect("$MeshFormat");
+    const std::string version(in.next("the format's version"));
+    const std::string file_type(in.next("the format's file type"));
+    if (file_type != "0")
+        in.fail("a binary MSH file (file type " + file_type + "): save it as ASCII (Gmsh: "
+                "Mesh.Binary = 0, or gmsh -format msh41 without -bin)");
+    if (version != "4.1" && version != "2.2")
+        in.fail("MSH version " + version + " is not read: save it as MSH 4.1 or 2.2, ASCII "
+                "(Gmsh: -format msh41 or msh22)");
+    in.next("the format's data size");
+    in.expect("$EndMeshFormat");
+    RawMesh m;
+    Entities entities;
+    bool nodes = false, elements = false;
+    while (!in.at_end()) {
+        const int line = in.line();
+        const std::string section(in.next("a section"));
+        if (section.empty() || section[0] != '$') in.fail("expected a section ($Name), found \"" + section + "\"", line);
+        if (section == "$PhysicalNames") {
+            read_physical_names(in, m);
+        } else if (section == "$Entities" && version == "4.1") {
+            read_entities(in, entities);
+        } else if (section == "$Nodes") {
+            if (nodes) in.fail("a second $Nodes section", line);
+            version == "4.1" ? read_nodes_41(in, m, max_nodes) : read_nodes_22(in, m, max_nodes);
+            nodes = true;
+        } else if (section == "$Elements") {
+            if (elements) in.fail("a second $Elements section", line);
+            version == "4.1" ? read_elements_41(in, m, entities) : read_elements_22(in, m);
+            elements = true;
+        } else {
+            in.skip_section(section);
+        }
+    }
+    if (!nodes || !elements) in.fail(std::string("the file has no ") + (nodes ? "$Elements" : "$Nodes") + " section", 0);
+    return m;
+}
+
+std::string node_where(long tag, const RawNode& n) {
+    Text msg;
+    msg << "node " << tag << " (" << n.x << ", " << n.y << ")";
+    return msg.str();
+}
+
+}  // namespace
+
+Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::string>& notes) {
+    const RawMesh raw = read_raw(path, max_nodes);
+    const auto fail = [&](const std::string& what, int line) {
+        Text msg;
+        msg << "mesh " << path << ", line " << line << ": " << what;
+        throw std::invalid_argument(msg.str());
+    };
+    for (const auto& [tag, n] : raw.nodes) {
+        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+            fail(node_where(tag, n) + " has a coordinate that is not finite", n.line);
+        if (n.z != 0)
+            fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) +
+                     ": the mesh must lie in the x-y plane (z = 0)", n.line);
+    }
+    // The groups' tags by name, per dimension.
+    std::map<std::string, std::vector<std::pair<int, long>>> groups;
+    for (const auto& [key, name] : raw.physical_names) groups[name].push_back(key);
+    const auto in_group = [&](const RawElement& e, const char* name) {
+        const auto it = groups.find(name);
+        if (it == groups.end()) return false;
+        for (long p : e.physicals)
+            for (const auto& key : it->second)
+                if (key.first == e.dim && key.second == p) return true;
+        return false;
+    };
+
+    Mesh m;
+    m.source = path;
+    // Points in the order of their tags (a file written from the rectangle numbers its nodes
+    // as the rectangle does).
+    std::unordered_map<long, int> index;  // node tag -> point
+    std::vector<long> tag_of;
+    for (const auto& [tag, n] : raw.nodes) {
+        index.emplace(tag, static_cast<int>(m.points.size()));
+        m.points.push_back({n.x, n.y});
+        tag_of.push_back(tag);
+    }
+    std::vector<int> triangle_lines;
+    std::vector<long> triangle_tags;
+    std::vector<char> used(m.points.size(), 0);
+    for (const RawElement& e : raw.elements) {
+        if (e.dim != 2) continue;
+        std::array<int, 3> tri{};
+        for (int a = 0; a < 3; ++a) {
+            const long tag = e.nodes[static_cast<size_t>(a)];
+            const auto it = index.find(tag);
+            if (it == index.end())
+                fail("element " + std::to_string(e.tag) + " names node " + std::to_string(tag) +
+                         ", which $Nodes does not define", e.line);
+            tri[static_cast<size_t>(a)] = it->second;
+            used[static_cast<size_t>(it->second)] = 1;
+        }
+        m.triangles.push_back(tri);
+        triangle_lines.push_back(e.line);
+        triangle_tags.push_back(e.tag);
+    }
+    if (m.triangles.empty()) fail("the file holds no triangles: ContactBody needs a mesh with first-order triangles", 0);
+    for (size_t n = 0; n < used.size(); ++n)
+        if (!used[n]) {
+            const RawNode& r = raw.nodes.at(tag_of[n]);
+            fail(node_where(tag_of[n], r) + " belongs to no triangle", r.line);
+        }
+
+    // Orientation: counter-clockwise, as the assembly expects. A mesh whose triangles all turn
+    // the other way (its surface's normal is -z) is turned over as a whole; one that mixes the
+    // two is folded.
+    double extent = 0;
+    for (const Point& p : m.points) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+    std::vector<double> areas;
+    size_t clockwise = 0;
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+        const auto& tri = m.triangles[t];
+        const Point &a = m.point(tri[0]), &b = m.point(tri[1]), &c = m.point(tri[2]);
+        const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+        const double scale = std::max({std::abs(b.x - a.x), std::abs(c.x - a.x), std::abs(b.y - a.y),
+                                       std::abs(c.y - a.y)});
+        if (!(std::abs(area) > 1e-10 * scale * scale))
+            fail("triangle " + std::to_string(triangle_tags[t]) + " is degenerate (area " +
+                     format_number(area) + " m^2: its three nodes are on one line or coincide)",
+                 triangle_lines[t]);
+        areas.push_back(area);
+        if (area < 0) ++clockwise;
+    }
+    if (clockwise == m.triangles.size()) {
+        for (auto& tri : m.triangles) std::swap(tri[1], tri[2]);
+        notes.push_back("mesh " + path + ": every triangle was clockwise (its surface faces -z); "
+                        "all were turned counter-clockwise");
+    } else if (clockwise > 0) {
+        const bool minority_clockwise = 2 * clockwise <= m.triangles.size();
+        for (size_t t = 0; t < areas.size(); ++t)
+            if ((areas[t] < 0) == minority_clockwise)
+                fail("triangle " + std::to_string(triangle_tags[t]) + " is inverted: it turns " +
+                         (minority_clockwise ? "clockwise" : "counter-clockwise") + " where " +
+                         std::to_string(minority_clockwise ? m.triangles.size() - clockwise : clockwise) +
+                         " others turn the other way (a folded mesh)",
+                     triangle_lines[t]);
+    }
+
+    // The boundary groups.
+    for (const char* name : {"contact", "clamp"})
+        if (!groups.count(name))
+            fail(std::string("no physical group named \"") + name + "\": the mesh needs one of boundary "
+                     "lines named \"contact\" (may touch the foundation) and one named \"clamp\" (driven "
+                     "as the top edge)", 0);
+    std::vector<char> contact(m.points.size(), 0), clamp(m.points.size(), 0);
+    std::vector<std::array<int, 2>> contact_lines;
+    size_t contact_elements = 0, clamp_elements = 0;
+    for (const RawElement& e : raw.elements) {
+        const bool c = in_group(e, "contact"), k = in_group(e, "clamp");
+        if (!c && !k) continue;
+        std::vector<int> nodes;
+        for (long tag : e.nodes) {
+            const auto it = index.find(tag);
+            if (it == index.end())
+                fail("element " + std::to_string(e.tag) + " of the " + (c ? "contact" : "clamp") +
+                         " group names node " + std::to_string(tag) + ", which no triangle has", e.line);
+            nodes.push_back(it->second);
+        }
+        for (int n : nodes) (c ? contact : clamp)[static_cast<size_t>(n)] = 1;
+        if (c && k) for (int n : nodes) clamp[static_cast<size_t>(n)] = 1;
+        if (c && e.dim == 1) contact_lines.push_back({nodes[0], nodes[1]});
+        (c ? contact_elements : clamp_elements) += 1;
+        if (k && c) clamp_elements += 1;
+    }
+    if (contact_elements == 0) fail("the physical group \"contact\" holds no element of this mesh", 0);
+    if (clamp_elements == 0) fail("the physical group \"clamp\" holds no element of this mesh", 0);
+    size_t both = 0;
+    for (int n = 0; n < m.num_nodes(); ++n) {
+        if (clamp[static_cast<size_t>(n)]) {
+            m.top_nodes.push_back(n);
+            if (contact[static_cast<size_t>(n)]) ++both;
+        } else if (contact[static_cast<size_t>(n)]) {
+            m.contact_nodes.push_back(n);
+        }
+    }
+    if (both > 0)
+        notes.push_back("mesh " + path + ": " + std::to_string(both) + " node" + (both > 1 ? "s" : "") +
+                        " of both the contact and the clamp group driven by the clamp (not in the contact set)");
+    if (m.contact_nodes.empty()) fail("every node of the contact group is also the clamp's: no node can touch", 0);
+
+    // Every part of the body hangs from the clamp.
+    std::vector<int> parent(m.points.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto root = [&](int n) {
+        while (parent[static_cast<size_t>(n)] != n) n = parent[static_cast<size_t>(n)] = parent[static_cast<size_t>(parent[static_cast<size_t>(n)])];
+        return n;
+    };
+    for (const auto& tri : m.triangles)
+        for (int a = 1; a < 3; ++a) parent[static_cast<size_t>(root(tri[static_cast<size_t>(a)]))] = root(tri[0]);
+    std::vector<char> held(m.points.size(), 0);
+    for (int n : m.top_nodes) held[static_cast<size_t>(root(n))] = 1;
+    for (int n = 0; n < m.num_nodes(); ++n)
+        if (!held[static_cast<size_t>(root(n))]) {
+            const RawNode& r = raw.nodes.at(tag_of[static_cast<size_t>(n)]);
+            fail(node_where(tag_of[static_cast<size_t>(n)], r) + " is in a part of the body not "
+                     "connected to the clamp (a free part would have no equilibrium)", r.line);
+        }
+
+    finish_mesh(m, contact_lines);
+    for (size_t i = 0; i < m.contact_nodes.size(); ++i)
+        if (!(m.contact_shares[i] > 0)) {
+            const long tag = tag_of[static_cast<size_t>(m.contact_nodes[i])];
+            fail(node_where(tag, raw.nodes.at(tag)) + " of the contact group carries no length of "
+                     "the foundation (its contact lines are vertical, or it is on none): put it in no "
+                     "contact line, or give the contact boundary some extent along x", raw.nodes.at(tag).line);
+        }
+    return m;
+}
+
+}  // namespace contactbody

@@ -1,0 +1,23 @@
+// A body's mesh from a Gmsh file: MSH 4.1 or 2.2, ASCII (the format is Gmsh's documented one;
+// Gmsh itself is not linked in: its licence does not fit an FMU). The file holds first-order
+// triangles in the x-y plane, in metres, and two physical groups of boundary lines by name:
+// "contact" (may touch the foundation) and "clamp" (driven as the rectangle's top edge). A
+// node in both is the clamp's.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh.hpp"
+
+namespace contactbody {
+
+// Throws std::invalid_argument "mesh FILE, line N: what is wrong" (line 0: the file as a
+// whole) for anything it cannot take: no file, a binary or unknown version, an element other
+// than points, lines and first-order triangles, a missing group, a degenerate or inverted
+// triangle, a node of no triangle, a part not connected to the clamp, a non-finite or
+// out-of-plane coordinate, more than max_nodes nodes, a contact node that carries no length of
+// the foundation. `notes` receives what was done that the user should know (for the log).
+Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::string>& notes);
+
+}  // namespace contactbody

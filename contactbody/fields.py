@@ -64,6 +64,19 @@ def strain_energy(points, triangles, u, lam, mu):
     return float((area * density).sum())
 
 
+def von_mises(points, triangles, u, lam, mu):
+    """The von Mises stress of each triangle (Pa), plane strain (sigma_zz = lam tr eps)."""
+    _, grad = _geometry(points, triangles)
+    g = np.einsum("tkd,tkc->tcd", grad, u[triangles, :2])
+    eps = 0.5 * (g + g.transpose(0, 2, 1))
+    trace = eps[:, 0, 0] + eps[:, 1, 1]
+    sxx = lam * trace + 2 * mu * eps[:, 0, 0]
+    syy = lam * trace + 2 * mu * eps[:, 1, 1]
+    sxy = 2 * mu * eps[:, 0, 1]
+    szz = lam * trace
+    return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
+
+
 def kinetic_energy(points, triangles, v, density):
     """1/2 v^T M v with the consistent P1 mass matrix."""
     return 0.5 * density * l2_squared(points, triangles, v[:, :2])

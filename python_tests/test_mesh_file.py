@@ -265,3 +265,83 @@ def test_a_relative_path_is_taken_from_the_fmus_resources(tmp_path):
     a = run(dict(DAMPED, mesh="roller.msh"), fmu=copy)
     b = run(dict(DAMPED, mesh=str(path)))
     assert all(np.array_equal(a[n], b[n]) for n in OUTPUTS)
+
+
+def test_force_control_static_start_on_a_curved_boundary_carries_the_force(tmp_path):
+    """Under top_control = force the half-disk's contact grows with the load: the clamp's
+    displacement for top_force is found by load paths, and at t = 0 the contact carries it."""
+    path = meshes.half_disk(tmp_path / "roller.msh", contact_size=1e-3, far_size=5e-3)
+    r = simulate_fmu(str(FMU), stop_time=1e-5, output_interval=1e-5, output=OUTPUTS + ["top_position"],
+                     start_values={"mesh": str(path), "top_control": 1, "top_force": 3e4,
+                                   "initial_state": 1, "friction_coefficient": 0.0,
+                                   "foundation_velocity": 0.0, "mass_matrix": 0})
+    assert r["normal_force"][0] == pytest.approx(3e4, rel=1e-9)
+    assert r["active_contact_nodes"][0] > 2  # more than the bottom node: the contact spread
+    assert r["top_position"][0] < 0
+
+
+def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
+    """edge_nodes must be the mesh's contact node count: another value is refused naming it;
+    with it, the arrays sum to the scalar outputs."""
+    from contactbody.system import configured_copy
+    path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
+    nodes, clamp, contact = mesh_counts(path)
+    fmi3 = FMU.with_name("ContactBody_fmi3.fmu")
+    messages = []
+    with pytest.raises(Exception):
+        simulate_fmu(str(fmi3), start_values={"mesh": str(path)}, stop_time=1e-4,
+                     logger=lambda *a: messages.append(str(a[-1])), debug_logging=True)
+    assert any(f"set edge_nodes = {contact}" in m for m in messages), messages[-3:]
+    copy = tmp_path / "configured.fmu"
+    copy.write_bytes(configured_copy(fmi3, {"edge_nodes": contact}))
+    r = simulate_fmu(str(copy), start_values={"mesh": str(path), "friction_coefficient": 0.3},
+                     stop_time=4e-4, output_interval=2e-4,
+                     output=["normal_force", "edge_x", "edge_pressure", "edge_state"])
+    x = r["edge_x"][-1]
+    assert x.shape == (contact,) and np.all(np.diff(x) >= 0)
+    assert np.count_nonzero(r["edge_state"][-1]) > 0
+
+
+def test_a_state_saved_on_a_mesh_restores_bit_for_bit(tmp_path):
+    from contactbody.fmu import Instance
+    path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
+    md = fmpy.read_model_description(str(FMU))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzipped = fmpy.extract(str(FMU), str(tmp_path / "unzipped"))
+    inst = Instance(md, unzipped, "mesh_state")
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setString([vr["mesh"]], [str(path)])
+    inst.setReal([vr["friction_coefficient"]], [0.5])
+    inst.exitInitializationMode()
+    refs = [vr[n] for n in OUTPUTS if n != "active_contact_nodes"]
+    for k in range(5):
+        inst.doStep(k * 1e-4, 1e-4)
+    blob = inst.serializeFMUstate(inst.getFMUstate())
+    expected = []
+    for k in range(5, 10):
+        inst.doStep(k * 1e-4, 1e-4)
+        expected.append(inst.getReal(refs))
+    inst.setFMUstate(inst.deSerializeFMUstate(blob))
+    again = []
+    for k in range(5, 10):
+        inst.doStep(k * 1e-4, 1e-4)
+        again.append(inst.getReal(refs))
+    assert again == expected
+    inst.close()
+
+
+def test_field_output_writes_the_meshs_own_triangles(tmp_path):
+    from contactbody import fields
+    path = meshes.pad(tmp_path / "pad.msh", size=2e-3)
+    with meshes.session("count") as gmsh:
+        gmsh.open(str(path))
+        types, tags, _ = gmsh.model.mesh.getElements(2)
+        triangles = sum(len(t) for t in tags)
+    simulate_fmu(str(FMU), stop_time=2e-4, output_interval=1e-4,
+                 start_values={"mesh": str(path), "result_directory": str(tmp_path / "out"),
+                               "field_output_interval": 1e-4})
+    snapshots = fields.read_collection(tmp_path / "out" / "contactbody.pvd")
+    points, tris, data = fields.read_field(snapshots[-1][1])
+    assert len(tris) == triangles and len(snapshots) == 3
+    assert np.abs(data["displacement"]).max() > 0

@@ -10,7 +10,9 @@ packages=(build-essential cmake ninja-build f2c libeigen3-dev libgtest-dev valgr
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
           python3-getfem  # the work-precision benchmark's GetFEM series and its test
-          locales)  # a decimal-comma locale, below
+          locales  # a decimal-comma locale, below
+          # the gmsh wheel's libgmsh (contactbody.meshes writes the test meshes with it)
+          libglu1-mesa libgl1 libxcursor1 libxft2 libxinerama1 libgomp1)
 install_missing() {
     local missing=()
     for p in "$@"; do

@@ -182,9 +182,12 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     if (llt.info() != Eigen::Success)
         throw std::invalid_argument(
             "mass redistribution: the least-change redistribution over the contact nodes of " +
-            mesh_name(mesh) + " is not positive definite (its cells next to the contact boundary "
-            "carry too little of the mass moments): refine the mesh near the contact boundary, "
-            "or use mass_matrix = 0 or 3 (consistent mass)");
+            mesh_name(mesh) + " is not positive definite. The least change spreads its correction "
+            "over every entry of the mass matrix alike, and the small cells of a mesh graded along "
+            "its contact boundary cannot carry their part (a half-disk whose contact arc grows from "
+            "0.1 to 4 mm cells fails, one of uniform cells along the arc does not): keep the cells "
+            "along the contact group of one size, make the contact group shorter, or use "
+            "mass_matrix = 0 or 3 (consistent mass)");
     return redistributed;
 }
 

@@ -105,13 +105,31 @@ static State quasi_static_path(Body& body, double top, double start = 0) {
 // and Coulomb friction are positively homogeneous, so the state scales exactly with the
 // clamp's displacement, and the scale that makes the reaction equal the force is one
 // division. An initial gap is then closed by a rigid shift, which strains nothing.
+//
+// A contact boundary of several heights (a mesh's curved one) touches more as it is pressed.
+// The midpoint contact's end-of-step state u^{k+1} = 2 u^{k+1/2} - u^k then overshoots the
+// static one where the contact set grew within the substep, so such a path is run by the full
+// body with the contact at the end of the step (static for dt -> inf: the variant's mass does
+// not enter), and the body takes its projection. The state no longer scales with the clamp
+// either: under force control the clamp's displacement for the force is found by secant steps
+// on the force, each a load path of its own.
 void Simulation::static_initial_state(double top, double force) {
     const SceneParameters& p = body_->parameters();
+    const std::vector<double>& heights = body_->discretization().mesh.contact_heights;
+    const bool flat = std::all_of(heights.begin(), heights.end(), [](double h) { return h == 0; });
     if (!p.force_control) {
         const double time = state_.time;
         // A top pressed below the gap touches: close the gap rigidly first (above).
         const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
-        state_ = quasi_static_path(*body_, top, start);
+        if (flat) {
+            state_ = quasi_static_path(*body_, top, start);
+        } else {
+            SceneParameters path = p;
+            path.mass_matrix = MassVariant::standard_implicit_contact;
+            path.modes = 0;
+            Stepper path_stepper(path);
+            state_ = body_->from_full(quasi_static_path(path_stepper, top, start));
+        }
         state_.time = time;
         return;
     }
@@ -123,6 +141,7 @@ void Simulation::static_initial_state(double top, double force) {
     SceneParameters clamped = p;
     clamped.force_control = false;
     clamped.initial_gap = 0;
+    if (!flat) clamped.mass_matrix = MassVariant::standard_implicit_contact;
     clamped.modes = 0;  // the full body's path; a reduced body takes its projection (exact:
                         // the static response to edge forces is in its basis)
     Stepper path_stepper(clamped);
@@ -139,12 +158,7 @@ void Simulation::static_initial_state(double top, double force) {
     if (!(pressing > 0))
         throw std::invalid_argument("initial_state = static: the clamped load path carries no "
                                     "force; use initial_state = paper");
-    // A contact boundary of several heights (a mesh's curved one) touches more as it is
-    // pressed: the state no longer scales with the clamp. The clamp's displacement for the
-    // force is then found by secant steps on the force, each a load path of its own.
-    const bool flat = std::all_of(d.mesh.contact_heights.begin(), d.mesh.contact_heights.end(),
-                                  [](double h) { return h == 0; });
-    if (!flat) {
+    if (!flat) {  // (above)
         double previous_probe = 0, previous_pressing = 0;
         for (int iteration = 0; std::abs(pressing - force) > 1e-12 * force; ++iteration) {
             if (iteration == 60)

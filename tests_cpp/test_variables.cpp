@@ -63,6 +63,7 @@ TEST(Variables, SceneTakesEveryParameter) {
     for (const Variable& v : variables()) {
         if (v.causality != Causality::parameter || v.fmu_only) continue;
         if (v.real) v.real(values) = v.start + 1;
+        else if (v.string) v.string(values) += "mesh.msh";
         else if (v.type == Type::Enumeration) v.integer(values) = v.start == 0 ? 1 : 0;
         else v.integer(values) = static_cast<int>(v.start) + 1;
     }

@@ -119,9 +119,10 @@ fmi3Status get_values(fmi3Instance instance_, const char* function, const char* 
             throw ModelError(
                 "nValues is " + std::to_string(nValues) + ", the variables hold " +
                 std::to_string(needed) +
-                (array_size ? " (each edge array holds edge_nodes = nx + 1 = " +
-                                  std::to_string(array_size) +
-                                  " values; an importer that sizes arrays from the "
+                (array_size ? " (each edge array holds edge_nodes = " +
+                                  std::to_string(array_size) + " values, nx + 1 for the "
+                                  "rectangle, a mesh's contact nodes; an importer that sizes "
+                                  "arrays from the "
                                   "modelDescription needs the start of edge_nodes changed too)"
                             : std::string()));
         }
@@ -171,11 +172,19 @@ fmi3Status set_values(fmi3Instance instance_, const char* function, const char* 
     });
 }
 
-// Types of which this FMU has no variables: any value reference is refused.
+// Types of which this FMU has no variables: any value reference is refused, and so is
+// nValues > 0 without one, as get_values and set_values refuse a count that is not the
+// variables' (no value references hold no values).
 fmi3Status no_variables(fmi3Instance instance_, const char* function, unsigned states,
-                        const char* type, const fmi3ValueReference vr[], size_t nvr) {
+                        const char* type, const fmi3ValueReference vr[], size_t nvr,
+                        size_t nValues) {
     BEGIN(function, states)
     REQUIRE(function, vr, nvr)
+    if (nvr == 0 && nValues != 0) {
+        instance->error(function, "nValues is " + std::to_string(nValues) +
+                                      ", the variables hold 0 (no value references)");
+        return fmi3Error;
+    }
     if (nvr == 0) return fmi3OK;
     instance->error(function, "value reference " + std::to_string(vr[0]) + " is not of type " +
                                   type + " (this FMU has no " + type + " variables)");
@@ -333,12 +342,12 @@ fmi3Status fmi3Reset(fmi3Instance instance_) {
     }
 #define NO_VARIABLES(Type, T)                                                                   \
     fmi3Status fmi3Get##Type(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,  \
-                             T[], size_t) {                                                     \
-        return no_variables(instance, "fmi3Get" #Type, readable, #Type, vr, nvr);               \
+                             T[], size_t nValues) {                                             \
+        return no_variables(instance, "fmi3Get" #Type, readable, #Type, vr, nvr, nValues);      \
     }                                                                                           \
     fmi3Status fmi3Set##Type(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,  \
-                             const T[], size_t) {                                               \
-        return no_variables(instance, "fmi3Set" #Type, settable, #Type, vr, nvr);               \
+                             const T[], size_t nValues) {                                       \
+        return no_variables(instance, "fmi3Set" #Type, settable, #Type, vr, nvr, nValues);      \
     }
 
 GETTER(Float64, fmi3Float64)
@@ -360,13 +369,13 @@ NO_VARIABLES(UInt32, fmi3UInt32)
 NO_VARIABLES(Boolean, fmi3Boolean)
 
 fmi3Status fmi3GetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
-                         size_t[], fmi3Binary[], size_t) {
-    return no_variables(instance, "fmi3GetBinary", readable, "Binary", vr, nvr);
+                         size_t[], fmi3Binary[], size_t nValues) {
+    return no_variables(instance, "fmi3GetBinary", readable, "Binary", vr, nvr, nValues);
 }
 
 fmi3Status fmi3SetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
-                         const size_t[], const fmi3Binary[], size_t) {
-    return no_variables(instance, "fmi3SetBinary", settable, "Binary", vr, nvr);
+                         const size_t[], const fmi3Binary[], size_t nValues) {
+    return no_variables(instance, "fmi3SetBinary", settable, "Binary", vr, nvr, nValues);
 }
 
 // ---- stepping ----

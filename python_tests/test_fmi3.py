@@ -1,6 +1,7 @@
 """The same body as an FMI 3.0 Co-Simulation FMU (build/ContactBody_fmi3.fmu), from
 the same variable table and the same binary, with the contact edge as arrays sized by the
 structural parameter edge_nodes = nx + 1."""
+import ctypes
 import pathlib
 import shutil
 import zipfile
@@ -467,3 +468,23 @@ def test_only_enabled_categories_reach_the_logger(md3, unzipped3):
         assert calls[-1][:2] == (3, "logStatusError"), calls[-1]
     finally:
         slave.freeInstance()
+
+
+@pytest.mark.parametrize("type_, ctype", [
+    ("Float32", ctypes.c_float), ("Int8", ctypes.c_int8), ("UInt8", ctypes.c_uint8),
+    ("Int16", ctypes.c_int16), ("UInt16", ctypes.c_uint16), ("UInt32", ctypes.c_uint32),
+    ("Boolean", ctypes.c_bool), ("Float64", ctypes.c_double), ("Int32", ctypes.c_int32),
+    ("Int64", ctypes.c_int64), ("UInt64", ctypes.c_uint64)])
+def test_values_without_value_references_are_refused_alike(make3, type_, ctype):
+    """No value references hold no values: nValues = 5 is an error for every type, those the
+    FMU has variables of and those it has none of (issue 42, F); nValues = 0 is fine."""
+    inst = make3()
+    inst.enterInitializationMode()
+    values = (ctype * 5)()
+    references = (ctypes.c_uint32 * 1)()
+    for function in (f"fmi3Get{type_}", f"fmi3Set{type_}"):
+        call = getattr(inst.slave, function)  # fmpy's wrapper: raises on a status other than OK
+        with pytest.raises(FMICallException):
+            call(inst.slave.component, references, 0, values, 5)
+        assert "nValues is 5, the variables hold 0" in inst.text(), inst.text()[-300:]
+        call(inst.slave.component, references, 0, values, 0)

@@ -93,20 +93,46 @@ def test_the_reduced_body_on_a_mesh_is_the_full_body_with_every_mode(tmp_path):
     assert relative_difference(after(reduced), after(full), [n for n in OUTPUTS if n != "active_contact_nodes"]) < 1e-8
 
 
-def fmu_log(start_values, fmu=FMU):
-    """(raised error or None, every log message) of an initialization."""
-    messages = []
-    logger = lambda *args: messages.append(args[-1].decode() if isinstance(args[-1], bytes) else str(args[-1]))
+MODEL_DESCRIPTION = fmpy.read_model_description(str(FMU))
+
+
+@pytest.fixture(scope="module")
+def unzipped_fmu(tmp_path_factory):
+    return fmpy.extract(str(FMU), str(tmp_path_factory.mktemp("unzipped")))
+
+
+def fmu_log(start_values, unzipped):
+    """(raised error or None, every log message) of an initialization with these values, on an
+    instance of our own that is freed whatever happens."""
+    from fmpy.fmi1 import FMICallException
+    from contactbody.fmu import Instance
+    types = {v.name: (v.type, v.valueReference) for v in MODEL_DESCRIPTION.modelVariables}
+    inst = Instance(MODEL_DESCRIPTION, unzipped, "mesh_log")
     try:
-        simulate_fmu(str(fmu), start_values=start_values, stop_time=1e-4, output_interval=1e-4,
-                     logger=logger, debug_logging=True)
-    except Exception as error:  # fmpy raises on the error status
-        return error, messages
-    return None, messages
+        inst.setDebugLogging(True, [])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        for name, value in start_values.items():
+            kind, vr = types[name]
+            if kind == "String":
+                inst.setString([vr], [value])
+            elif kind == "Real":
+                inst.setReal([vr], [value])
+            else:
+                inst.setInteger([vr], [value])
+        try:
+            inst.exitInitializationMode()
+            inst.doStep(0, 1e-5)
+            error = None
+        except FMICallException as e:
+            error = e
+        return error, [m[2] for m in inst.messages]
+    finally:
+        inst.close()
 
 
-def refused(start_values, *needles):
-    error, messages = fmu_log(start_values)
+def refused(start_values, unzipped, *needles):
+    error, messages = fmu_log(start_values, unzipped)
     assert error is not None, "initialization went through"
     text = "\n".join(messages)
     for needle in needles:
@@ -120,28 +146,28 @@ def write_text(tmp_path, name, text):
     return path
 
 
-def test_missing_file(tmp_path):
-    refused({"mesh": str(tmp_path / "nowhere.msh")}, f"mesh {tmp_path / 'nowhere.msh'}: cannot open it")
+def test_missing_file(tmp_path, unzipped_fmu):
+    refused({"mesh": str(tmp_path / "nowhere.msh")}, unzipped_fmu, f"mesh {tmp_path / 'nowhere.msh'}: cannot open it")
 
 
-def test_binary_file(tmp_path):
+def test_binary_file(tmp_path, unzipped_fmu):
     with meshes.session("binary") as gmsh:
         gmsh.model.occ.addRectangle(0, 0, 0, 0.1, 0.05)
         gmsh.model.occ.synchronize()
         gmsh.model.mesh.generate(2)
         path = meshes.write(gmsh, tmp_path / "binary.msh", binary=True)
-    refused({"mesh": str(path)}, "line 2: a binary MSH file")
+    refused({"mesh": str(path)}, unzipped_fmu, "line 2: a binary MSH file")
 
 
 @pytest.mark.parametrize("version", [4.0, 3.0])
-def test_unknown_version(tmp_path, version):
+def test_unknown_version(tmp_path, version, unzipped_fmu):
     with meshes.session("old") as gmsh:
         gmsh.model.occ.addRectangle(0, 0, 0, 0.1, 0.05)
         gmsh.model.occ.synchronize()
         gmsh.model.mesh.generate(2)
         gmsh.option.setNumber("Mesh.MshFileVersion", version)
         gmsh.write(str(tmp_path / "old.msh"))
-    refused({"mesh": str(tmp_path / "old.msh")}, "line 2: MSH version", "is not read")
+    refused({"mesh": str(tmp_path / "old.msh")}, unzipped_fmu, "line 2: MSH version", "is not read")
 
 
 def pressed_block(gmsh, order=1, recombine=False, volume=False):
@@ -171,23 +197,23 @@ def pressed_block(gmsh, order=1, recombine=False, volume=False):
     ("quadrangles", "is a 4-node quadrangle"),
     ("volume", "(3D)"),
 ])
-def test_elements_other_than_first_order_triangles(tmp_path, kind, needle):
+def test_elements_other_than_first_order_triangles(tmp_path, kind, needle, unzipped_fmu):
     with meshes.session(kind) as gmsh:
         pressed_block(gmsh, order=2 if kind == "second_order" else 1,
                       recombine=kind == "quadrangles", volume=kind == "volume")
         path = meshes.write(gmsh, tmp_path / f"{kind}.msh")
-    refused({"mesh": str(path)}, str(path), needle, "mesh with first-order triangles")
+    refused({"mesh": str(path)}, unzipped_fmu, str(path), needle, "mesh with first-order triangles")
 
 
 @pytest.mark.parametrize("group", ["contact", "clamp"])
-def test_missing_group(tmp_path, group):
+def test_missing_group(tmp_path, group, unzipped_fmu):
     with meshes.session("no_group") as gmsh:
         coords = [0, 0, 0, 0.1, 0, 0, 0.1, 0.1, 0, 0, 0.1, 0]
         groups = {"contact": [1, 2], "clamp": [3, 4]}
         del groups[group]
         meshes.discrete_mesh(gmsh, coords, [1, 2, 3, 1, 3, 4], groups)
         path = meshes.write(gmsh, tmp_path / "no_group.msh")
-    refused({"mesh": str(path)}, f'no physical group named "{group}"')
+    refused({"mesh": str(path)}, unzipped_fmu, f'no physical group named "{group}"')
 
 
 def square_mesh(tmp_path, name, coords, triangles, groups=None):
@@ -199,41 +225,41 @@ def square_mesh(tmp_path, name, coords, triangles, groups=None):
 SQUARE = [0, 0, 0, 0.1, 0, 0, 0.1, 0.1, 0, 0, 0.1, 0]
 
 
-def test_degenerate_triangle(tmp_path):
+def test_degenerate_triangle(tmp_path, unzipped_fmu):
     coords = SQUARE + [0.05, 0.1, 0]  # node 5 on the top edge, between 3 and 4
     path = square_mesh(tmp_path, "degenerate", coords, [1, 2, 3, 1, 3, 4, 3, 5, 4])
-    refused({"mesh": str(path)}, "is degenerate")
+    refused({"mesh": str(path)}, unzipped_fmu, "is degenerate")
 
 
-def test_inverted_triangle(tmp_path):
+def test_inverted_triangle(tmp_path, unzipped_fmu):
     coords = SQUARE + [0.05, 0.05, 0]
     triangles = [1, 2, 5, 2, 3, 5, 3, 4, 5, 4, 5, 1]  # the last one clockwise
     path = square_mesh(tmp_path, "inverted", coords, triangles)
-    refused({"mesh": str(path)}, "is inverted")
+    refused({"mesh": str(path)}, unzipped_fmu, "is inverted")
 
 
-def test_node_of_no_triangle(tmp_path):
+def test_node_of_no_triangle(tmp_path, unzipped_fmu):
     path = square_mesh(tmp_path, "unused", SQUARE + [0.3, 0.3, 0], [1, 2, 3, 1, 3, 4])
-    refused({"mesh": str(path)}, "node 5 (0.3, 0.3) belongs to no triangle")
+    refused({"mesh": str(path)}, unzipped_fmu, "node 5 (0.3, 0.3) belongs to no triangle")
 
 
-def test_part_not_connected_to_the_clamp(tmp_path):
+def test_part_not_connected_to_the_clamp(tmp_path, unzipped_fmu):
     coords = SQUARE + [0.2, 0, 0, 0.3, 0, 0, 0.3, 0.05, 0]
     path = square_mesh(tmp_path, "loose", coords, [1, 2, 3, 1, 3, 4, 5, 6, 7],
                        {"contact": [1, 2, 5, 6], "clamp": [3, 4]})
-    refused({"mesh": str(path)}, "is in a part of the body not connected to the clamp")
+    refused({"mesh": str(path)}, unzipped_fmu, "is in a part of the body not connected to the clamp")
 
 
-def test_non_finite_coordinate(tmp_path):
+def test_non_finite_coordinate(tmp_path, unzipped_fmu):
     path = square_mesh(tmp_path, "finite", SQUARE, [1, 2, 3, 1, 3, 4])
     text = path.read_text().splitlines()
     line = next(k for k, l in enumerate(text) if l.startswith("0.1 0.1 0"))
     text[line] = "nan 0.1 0"
     path.write_text("\n".join(text) + "\n")
-    refused({"mesh": str(path)}, f"line {line + 1}:", "not finite")
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {line + 1}:", "not finite")
 
 
-def test_too_many_nodes(tmp_path):
+def test_too_many_nodes(tmp_path, unzipped_fmu):
     path = square_mesh(tmp_path, "big", SQUARE, [1, 2, 3, 1, 3, 4])
     lines = path.read_text().splitlines()
     header = lines.index("$Nodes") + 1  # blocks, nodes, smallest and largest tag
@@ -242,15 +268,15 @@ def test_too_many_nodes(tmp_path):
     lines[header] = f"{blocks} 4000001 {first} {last}"
     text = "\n".join(lines) + "\n"
     path.write_text(text)
-    refused({"mesh": str(path)}, f"line {header + 1}: 4000001 nodes: a body has at most 4000000")
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {header + 1}: 4000001 nodes: a body has at most 4000000")
 
 
-def test_a_node_of_both_groups_is_the_clamps_and_the_log_says_so(tmp_path):
+def test_a_node_of_both_groups_is_the_clamps_and_the_log_says_so(tmp_path, unzipped_fmu):
     """The contact line runs up a side to the clamp: its top node is the clamp's."""
     coords = SQUARE
     path = square_mesh(tmp_path, "corner", coords, [1, 2, 3, 1, 3, 4],
                        {"contact": [1, 2, 2, 3], "clamp": [3, 4]})
-    error, messages = fmu_log({"mesh": str(path), "mass_matrix": 0})
+    error, messages = fmu_log({"mesh": str(path), "mass_matrix": 0}, unzipped_fmu)
     assert error is None
     assert any("1 node of both the contact and the clamp group driven by the clamp" in m for m in messages)
 
@@ -287,10 +313,21 @@ def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
     path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
     nodes, clamp, contact = mesh_counts(path)
     fmi3 = FMU.with_name("ContactBody_fmi3.fmu")
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi3 import FMU3Slave
+    md3 = fmpy.read_model_description(str(fmi3))
     messages = []
-    with pytest.raises(Exception):
-        simulate_fmu(str(fmi3), start_values={"mesh": str(path)}, stop_time=1e-4,
-                     logger=lambda *a: messages.append(str(a[-1])), debug_logging=True)
+    slave = FMU3Slave(guid=md3.guid, unzipDirectory=fmpy.extract(str(fmi3), str(tmp_path / "fmi3")),
+                      modelIdentifier=md3.coSimulation.modelIdentifier, instanceName="edge")
+    slave.instantiate(loggingOn=True, logMessage=lambda env, status, category, message:
+                      messages.append(message.decode()))
+    try:
+        slave.enterInitializationMode()
+        slave.setString([next(v.valueReference for v in md3.modelVariables if v.name == "mesh")], [str(path)])
+        with pytest.raises(FMICallException):
+            slave.exitInitializationMode()
+    finally:
+        slave.freeInstance()
     assert any(f"set edge_nodes = {contact}" in m for m in messages), messages[-3:]
     copy = tmp_path / "configured.fmu"
     copy.write_bytes(configured_copy(fmi3, {"edge_nodes": contact}))
@@ -345,3 +382,20 @@ def test_field_output_writes_the_meshs_own_triangles(tmp_path):
     points, tris, data = fields.read_field(snapshots[-1][1])
     assert len(tris) == triangles and len(snapshots) == 3
     assert np.abs(data["displacement"]).max() > 0
+
+
+@pytest.mark.parametrize("contact_angle, far_size, carried", [
+    (180, 4e-3, False),  # the whole arc, cells from 0.1 to 4 mm along it
+    (180, 1e-3, True),   # the whole arc, cells of 1 mm along it
+    (20, 4e-3, True),    # the refined 20 degrees around the bottom only
+])
+def test_m_r_on_a_graded_contact_group(tmp_path, contact_angle, far_size, carried, unzipped_fmu):
+    """The least-change redistribution cannot be carried by a contact group whose cells grow
+    along it (docs/meshes.md): initialization says so and what to do; the others run."""
+    size = 1e-4 if far_size > 1e-3 else 1e-3
+    path = meshes.half_disk(tmp_path / "roller.msh", contact_size=size, far_size=far_size,
+                            fine_distance=4e-3, refine_distance=0.02, contact_angle=contact_angle)
+    error, messages = fmu_log({"mesh": str(path), "mass_matrix": 1, "foundation_velocity": 0.0}, unzipped_fmu)
+    assert (error is None) == carried, messages[-2:]
+    if not carried:
+        assert any("keep the cells along the contact group of one size" in m for m in messages)

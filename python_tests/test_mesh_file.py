@@ -337,6 +337,12 @@ def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
     x = r["edge_x"][-1]
     assert x.shape == (contact,) and np.all(np.diff(x) >= 0)
     assert np.count_nonzero(r["edge_state"][-1]) > 0
+    # Pressures per unit length of the foundation: each node carries half of each of its
+    # contact lines' x extent (the plate's flat bottom: half the spacing to either side).
+    dx = np.diff(x)
+    shares = np.concatenate([[dx[0] / 2], (dx[:-1] + dx[1:]) / 2, [dx[-1] / 2]])
+    for k in range(len(r)):
+        assert np.dot(shares, r["edge_pressure"][k]) == pytest.approx(r["normal_force"][k], rel=1e-12)
 
 
 def test_a_state_saved_on_a_mesh_restores_bit_for_bit(tmp_path):
@@ -399,3 +405,39 @@ def test_m_r_on_a_graded_contact_group(tmp_path, contact_angle, far_size, carrie
     assert (error is None) == carried, messages[-2:]
     if not carried:
         assert any("keep the cells along the contact group of one size" in m for m in messages)
+
+
+def test_a_model_reruns_a_mesh_over_reset_and_switches_to_another(tmp_path):
+    """contactbody.fmu.Model (studies, system models) resets its one instance between runs: a
+    mesh is kept over the reset (the same results as the first run), and another mesh, or
+    the rectangle, is taken when it changes."""
+    from contactbody.fmu import Model
+    hole = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
+    pad = meshes.pad(tmp_path / "pad.msh", size=2e-3)
+    outputs = ["normal_force", "friction_force", "energy"]
+    with Model() as model:
+        runs = [model.run(values, 0.002, 2e-4, outputs)[0] for values in (
+            {"mesh": str(hole), "friction_coefficient": 0.3},
+            {"mesh": str(hole), "friction_coefficient": 0.5},
+            {"mesh": str(hole), "friction_coefficient": 0.3},
+            {"mesh": str(pad), "friction_coefficient": 0.3},
+            {"friction_coefficient": 0.3})]
+    with Model() as fresh:
+        pad_alone = fresh.run({"mesh": str(pad), "friction_coefficient": 0.3}, 0.002, 2e-4, outputs)[0]
+    for name in outputs:
+        assert np.array_equal(runs[0][name], runs[2][name]), name
+        assert np.array_equal(runs[3][name], pad_alone[name]), name
+    assert not np.array_equal(runs[0]["friction_force"], runs[1]["friction_force"])
+    assert not np.array_equal(runs[3]["normal_force"], runs[4]["normal_force"])
+
+
+def test_the_stability_warning_does_not_claim_a_mesh(tmp_path, unzipped_fmu):
+    """The maps behind the warnings were measured on the rectangle: undamped sliding with
+    friction on a mesh is warned about as not covered, not placed on them."""
+    path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
+    error, messages = fmu_log({"mesh": str(path), "friction_coefficient": 0.3}, unzipped_fmu)
+    assert error is None
+    assert any("say nothing of the mesh" in m for m in messages), messages
+    error, messages = fmu_log({"mesh": str(path), "friction_coefficient": 0.3, "damping_stiffness": 4e-6},
+                              unzipped_fmu)
+    assert not any("stability maps" in m for m in messages)

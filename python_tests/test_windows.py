@@ -56,6 +56,19 @@ def test_the_reduced_body_is_bit_identical_to_linux(unzipped, linux_copy, modes)
     assert_same_bits(fmpy.simulate_fmu(unzipped, **run), fmpy.simulate_fmu(linux_copy, **run))
 
 
+def test_a_gmsh_mesh_in_a_non_ascii_folder_is_read_alike(unzipped, linux_copy, tmp_path):
+    """The mesh reader on Windows (C stdio through UTF-16 paths, from_chars): a Gmsh plate
+    with a hole in a folder whose name is not ASCII gives linux64's bits."""
+    from contactbody import meshes
+    path = meshes.plate_with_hole(tmp_path / "maillé ü" / "hole.msh", size=0.01)
+    results = []
+    for fmu, name in ((unzipped, f"Z:{path}"), (linux_copy, str(path))):
+        results.append(fmpy.simulate_fmu(fmu, stop_time=2e-3, output_interval=1e-4, start_values={
+            "mesh": name, "friction_coefficient": 0.3, "damping_stiffness": 4e-6}))
+    assert results[0]["normal_force"].max() > 0
+    assert_same_bits(*results)
+
+
 def test_result_files_in_a_new_non_ascii_folder_equal_linux(unzipped, linux_copy, tmp_path):
     """Field and edge output through solver/c_file.hpp's Windows side (UTF-16 paths): a first
     run makes the folder, whose name is not ASCII, and its parent; a second run into it replaces

@@ -201,13 +201,17 @@ void Simulation::initial_reactions() {
     product.noalias() = d.A * relative;
     const Eigen::Index nc = body_->num_contact_nodes();
     const bool multipliers = p.static_initial_state;
+    // A node on the foundation touches it. The full body's heights are exact there (u_y = 0 of
+    // the paper's state); the reduced body rebuilds them from its coordinates, to round-off
+    // of the displacements (1e-20 m where they are 1e-5 m), which must not decide.
+    const double resolution = 1e-12 * (full.u.size() ? full.u.cwiseAbs().maxCoeff() : 0.0);
     Observables o;
     for (Eigen::Index k = 0; k < nc; ++k) {
         const size_t i = static_cast<size_t>(k);
         const int node = d.mesh.contact_nodes[i];
         const double share = d.mesh.edge_share(i);
         const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[dof_y(node)];
-        const bool touching = gap <= 0;
+        const bool touching = gap <= resolution;
         double normal = 0, friction = 0;
         if (multipliers) {
             normal = -state_.lambda[k];

@@ -53,14 +53,18 @@ def test_a_shifted_body_is_the_same_body(tmp_path):
     assert relative_difference(b, a) < 1e-8
 
 
-@pytest.mark.parametrize("variant", [0, 1, 3, 4])
-def test_a_body_with_a_hole_keeps_its_energy_balance(tmp_path, variant):
+RATE_LAW = {"stribeck_velocity": 0.5, "static_friction_ratio": 1.5, "viscous_friction": 0.01}
+
+
+@pytest.mark.parametrize("variant, law", [(0, {}), (1, {}), (2, {}), (3, {}), (4, {}),
+                                          (1, RATE_LAW), (4, {"static_friction_ratio": 2.0})])
+def test_a_body_with_a_hole_keeps_its_energy_balance(tmp_path, variant, law):
     """E - E(0) = clamp + normal contact + friction - damping work to 1e-9 on a Gmsh-meshed
     plate with a hole, sliding with friction (the M_r variants redistribute over its contact
-    nodes)."""
+    nodes), Coulomb's law, a slip-rate law and static friction."""
     path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.006)
     r = run({"mesh": str(path), "mass_matrix": variant, "friction_coefficient": 0.3,
-             "damping_stiffness": 4e-6, "top_displacement": -2e-5}, stop_time=0.003)
+             "damping_stiffness": 4e-6, "top_displacement": -2e-5, **law}, stop_time=0.003)
     balance = r["clamp_work"] + r["normal_contact_work"] + r["friction_work"] - r["damping_work"]
     scale = np.max(np.abs(r["energy"]))
     assert np.max(np.abs(r["energy"] - r["energy"][0] - balance)) <= 1e-9 * scale

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "c_file.hpp"
+#include "mesh/gmsh.hpp"
 #include "text.hpp"
 
 namespace contactbody::fmu {
@@ -168,7 +169,10 @@ void ContactBodyModel::build_simulation(const Values& values) {
     SceneParameters scene = values.scene();
     if (!scene.mesh.empty() && !is_absolute_path(scene.mesh)) scene.mesh = resources_ + scene.mesh;
     try {
-        if (sim_ && same_discretization(sim_->body().parameters(), scene)) {
+        // The same parameters, and a mesh file as it was when the body was built from it.
+        if (sim_ && same_discretization(sim_->body().parameters(), scene) &&
+            (scene.mesh.empty() ||
+             gmsh_file_digest(scene.mesh) == sim_->body().discretization().mesh.file_digest)) {
             sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
                           values.foundation_velocity);
         } else {

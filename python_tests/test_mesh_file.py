@@ -445,3 +445,22 @@ def test_the_stability_warning_does_not_claim_a_mesh(tmp_path, unzipped_fmu):
     error, messages = fmu_log({"mesh": str(path), "friction_coefficient": 0.3, "damping_stiffness": 4e-6},
                               unzipped_fmu)
     assert not any("stability maps" in m for m in messages)
+
+
+def test_a_mesh_file_changed_between_runs_is_read_again(tmp_path):
+    """The body built from a file is kept over a reset only while the file is unchanged: a file
+    rewritten in place (the same path) gives the new body, as a new instance would."""
+    from contactbody.fmu import Model
+    path = tmp_path / "body.msh"
+    outputs = ["normal_force", "energy"]
+    values = {"mesh": str(path), "friction_coefficient": 0.3}
+    meshes.plate_with_hole(path, size=0.01)
+    with Model() as model:
+        first = model.run(values, 0.001, 1e-4, outputs)[0]
+        meshes.pad(path, size=2e-3)
+        second = model.run(values, 0.001, 1e-4, outputs)[0]
+    with Model() as fresh:
+        pad_alone = fresh.run(values, 0.001, 1e-4, outputs)[0]
+    assert not np.array_equal(first["normal_force"], second["normal_force"])
+    for name in outputs:
+        assert np.array_equal(second[name], pad_alone[name]), name

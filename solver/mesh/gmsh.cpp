@@ -168,7 +168,14 @@ struct RawNode {
     int line;
 };
 
+uint64_t digest(const std::string& text) {
+    uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
 struct RawMesh {
+    uint64_t digest = 0;
     std::map<std::pair<int, long>, std::string> physical_names;  // (dim, tag) -> name
     std::map<long, RawNode> nodes;                               // tag -> node
     std::vector<RawElement> elements;
@@ -314,7 +321,9 @@ void read_elements_22(Tokens& in, RawMesh& m) {
 }
 
 RawMesh read_raw(const std::string& path, long max_nodes) {
-    Tokens in(path, read_whole_file(path));
+    std::string text = read_whole_file(path);
+    const uint64_t file_digest = digest(text);
+    Tokens in(path, std::move(text));
     if (in.at_end()) in.fail("the file is empty (a Gmsh MSH file starts with $MeshFormat)");
     in.expect("$MeshFormat");
     const std::string version(in.next("the format's version"));
@@ -328,6 +337,7 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     in.next("the format's data size");
     in.expect("$EndMeshFormat");
     RawMesh m;
+    m.digest = file_digest;
     Entities entities;
     bool nodes = false, elements = false;
     while (!in.at_end()) {
@@ -362,6 +372,14 @@ std::string node_where(long tag, const RawNode& n) {
 
 }  // namespace
 
+uint64_t gmsh_file_digest(const std::string& path) {
+    try {
+        return digest(read_whole_file(path));
+    } catch (const std::invalid_argument&) {
+        return 0;
+    }
+}
+
 Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::string>& notes) {
     const RawMesh raw = read_raw(path, max_nodes);
     const auto fail = [&](const std::string& what, int line) {
@@ -390,6 +408,7 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
 
     Mesh m;
     m.source = path;
+    m.file_digest = raw.digest;
     // Points in the order of their tags (a file written from the rectangle numbers its nodes
     // as the rectangle does).
     std::unordered_map<long, int> index;  // node tag -> point

@@ -5,6 +5,7 @@
 // node in both is the clamp's.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,10 @@ namespace contactbody {
 // out-of-plane coordinate, more than max_nodes nodes, a contact node that carries no length of
 // the foundation. `notes` receives what was done that the user should know (for the log).
 Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::string>& notes);
+
+// A digest of the file's bytes (FNV-1a), the one read_gmsh_mesh keeps in Mesh::file_digest: a
+// body built from the file is reused over a reset only while the file is unchanged. 0 if the
+// file cannot be read.
+uint64_t gmsh_file_digest(const std::string& path);
 
 }  // namespace contactbody

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct Mesh {
     // error messages, the stability map's look-up).
     int nx = 0, ny = 0;
     std::string source;  // "the rectangle", or the file it was read from
+    uint64_t file_digest = 0;  // of the file's bytes (gmsh_file_digest): a changed file is another mesh
 
     int num_nodes() const { return static_cast<int>(points.size()); }
     int num_dofs() const { return 2 * num_nodes(); }

@@ -488,3 +488,48 @@ def test_values_without_value_references_are_refused_alike(make3, type_, ctype):
             call(inst.slave.component, references, 0, values, 5)
         assert "nValues is 5, the variables hold 0" in inst.text(), inst.text()[-300:]
         call(inst.slave.component, references, 0, values, 0)
+
+
+@pytest.mark.parametrize("standard", ["fmi2", "fmi3"])
+def test_a_refused_call_changes_nothing_in_either_standard(model_description, unzipped, make3,
+                                                           standard):
+    """The decision (issue 42, E; docs/contract.md, "Refused calls"): a call refused for its
+    arguments returns Error and leaves the instance as it was, in both standards alike. A run
+    with refused steps in it (step size 0, -1 and NaN, a communication point other than the
+    current time) continues to the same bits as a run without them."""
+    from contactbody.fmu import Instance
+    h = 1e-4
+    names = ["energy", "normal_force", "friction_force", "top_position"]
+
+    def run(refuse):
+        if standard == "fmi2":
+            inst = Instance(model_description, unzipped, "refused")
+            refs = [v.valueReference for v in model_description.modelVariables if v.name in names]
+            inst.setupExperiment(startTime=0)
+            inst.enterInitializationMode()
+            inst.exitInitializationMode()
+            step = lambda t, dt: inst.doStep(t, dt)
+            read = lambda: inst.getReal(refs)
+        else:
+            inst = make3()
+            md3 = fmpy.read_model_description(str(FMU3))
+            refs = [v.valueReference for v in md3.modelVariables if v.name in names]
+            inst.enterInitializationMode(startTime=0)
+            inst.exitInitializationMode()
+            step = lambda t, dt: inst.doStep(t, dt)
+            read = lambda: inst.getFloat64(refs)
+        rows = []
+        try:
+            for k in range(6):
+                if refuse and k in (2, 4):
+                    for t, dt in ((k * h, 0.0), (k * h, -1.0), (k * h, float("nan")), (k * h + 0.5, h)):
+                        with pytest.raises(FMICallException):
+                            step(t, dt)
+                step(k * h, h)
+                rows.append(read())
+        finally:
+            if standard == "fmi2":
+                inst.close()
+        return rows
+
+    assert run(refuse=True) == run(refuse=False)

@@ -161,8 +161,19 @@ def configured_copy(fmu_path, values: dict) -> bytes:
 
     FMI 3.0 (ContactBody_fmi3.fmu): the same, and a new nx also sets edge_nodes' start to
     nx + 1, so that an importer that sizes the edge arrays from the modelDescription (fmpy
-    does) records nx + 1 values."""
+    does) records nx + 1 values.
+
+    A `mesh` that names a file goes into the copy's resources/ and is named there by its file
+    name alone (the FMU looks for a relative mesh in its resources): the copy carries its body.
+    Strings are written as they are, numbers as Python writes them."""
     import xml.etree.ElementTree as ET
+    values = dict(values)
+    carried = {}
+    if values.get("mesh") and pathlib.Path(values["mesh"]).is_file():
+        mesh = pathlib.Path(values["mesh"])
+        carried[f"resources/{mesh.name}"] = mesh.read_bytes()
+        values["mesh"] = mesh.name
+    text = lambda value: value if isinstance(value, str) else repr(value)
     out = io.BytesIO()
     with zipfile.ZipFile(fmu_path) as src, zipfile.ZipFile(out, "w") as dst:
         for info in src.infolist():
@@ -180,11 +191,13 @@ def configured_copy(fmu_path, values: dict) -> bytes:
                     typed = next(iter(v)) if v.tag == "ScalarVariable" else v
                     start = typed.find("Start")
                     (typed if start is None else start).set(
-                        "start" if start is None else "value", repr(starts[v.get("name")]))
+                        "start" if start is None else "value", text(starts[v.get("name")]))
                 data = ET.tostring(root, encoding="UTF-8", xml_declaration=True)
             dst.writestr(info, data)
         dst.writestr("resources/start_values.txt", "".join(
-            f"{name} = {value!r}\n" for name, value in values.items()))
+            f"{name} = {text(value)}\n" for name, value in values.items()))
+        for name, data in carried.items():
+            dst.writestr(name, data)
     return out.getvalue()
 
 

@@ -464,3 +464,22 @@ def test_a_mesh_file_changed_between_runs_is_read_again(tmp_path):
     assert not np.array_equal(first["normal_force"], second["normal_force"])
     for name in outputs:
         assert np.array_equal(second[name], pad_alone[name]), name
+
+
+def test_a_configured_copy_carries_its_mesh(tmp_path):
+    """contactbody.system.configured_copy (the SSPs' components) puts a mesh file into the
+    copy's resources/ and names it there: the copy alone, without start values, runs the body
+    (the system models take their FMUs this way)."""
+    from contactbody.system import configured_copy
+    path = meshes.plate_with_hole(tmp_path / "elsewhere" / "hole.msh", size=0.01)
+    copy = tmp_path / "configured.fmu"
+    copy.write_bytes(configured_copy(FMU, {"mesh": str(path), "friction_coefficient": 0.3}))
+    with zipfile.ZipFile(copy) as z:
+        assert "resources/hole.msh" in z.namelist()
+        assert "mesh = hole.msh\n" in z.read("resources/start_values.txt").decode()
+    carried = run({}, fmu=copy)
+    direct = run({"mesh": str(path), "friction_coefficient": 0.3})
+    assert all(np.array_equal(carried[n], direct[n]) for n in OUTPUTS)
+    path.unlink()  # the copy needs the original no more
+    again = run({}, fmu=copy)
+    assert all(np.array_equal(again[n], direct[n]) for n in OUTPUTS)

@@ -83,7 +83,7 @@ def kinetic_energy(points, triangles, v, density):
 
 
 def interpolate_nested(coarse_points, coarse_values, nx, ny, width, height, fine_points):
-    """Evaluates a P1 field of the structured nx x ny mesh (its diagonals: solver/mesh.hpp) at the fine
+    """Evaluates a P1 field of the structured nx x ny mesh (its diagonals: solver/mesh/mesh.hpp) at the fine
     mesh's nodes. On nested meshes the result is the same field, exactly, as a fine P1 field."""
     hx, hy = width / nx, height / ny
     x, y = fine_points[:, 0] / hx, fine_points[:, 1] / hy

@@ -1,5 +1,5 @@
 """The FMU's map of its measured unstable regions is a committed header next to the code that
-reads it (solver/stability_map_data.hpp), written by an explicit command from the examples'
+reads it (solver/simulation/stability_map_data.hpp), written by an explicit command from the examples'
 results (scripts/write_stability_map.py); the C++ build needs no Python package for it, nor
 the FMI headers from fmpy (third_party/fmi-headers-2.0-3.0)."""
 import filecmp
@@ -18,9 +18,9 @@ import write_stability_map  # noqa: E402
 
 
 def test_the_committed_map_is_what_the_examples_measured():
-    committed = (ROOT / "solver" / "stability_map_data.hpp").read_text()
+    committed = (ROOT / "solver" / "simulation" / "stability_map_data.hpp").read_text()
     assert committed == write_stability_map.text(), (
-        "solver/stability_map_data.hpp differs from examples/results: run "
+        "solver/simulation/stability_map_data.hpp differs from examples/results: run "
         ".venv/bin/python scripts/write_stability_map.py")
 
 

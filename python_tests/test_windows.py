@@ -70,7 +70,7 @@ def test_a_gmsh_mesh_in_a_non_ascii_folder_is_read_alike(unzipped, linux_copy, t
 
 
 def test_result_files_in_a_new_non_ascii_folder_equal_linux(unzipped, linux_copy, tmp_path):
-    """Field and edge output through solver/c_file.hpp's Windows side (UTF-16 paths): a first
+    """Field and edge output through solver/util/c_file.hpp's Windows side (UTF-16 paths): a first
     run makes the folder, whose name is not ASCII, and its parent; a second run into it replaces
     every file and removes a stale snapshot. The DLL writes the bytes linux64 writes."""
     written = {}

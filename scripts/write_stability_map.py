@@ -1,5 +1,5 @@
-"""Writes the FMU's map of its measured unstable regions, solver/stability_map_data.hpp (read by
-solver/scheme_warnings.cpp), from the measurements in examples/results:
+"""Writes the FMU's map of its measured unstable regions, solver/simulation/stability_map_data.hpp (read by
+solver/simulation/scheme_warnings.cpp), from the measurements in examples/results:
 - damped_stability.json: the smallest stabilizing beta of steady sliding for each (nx, F),
   redistributed_normal, the paper's square body, about the admissible steady state;
 - frictionless_stability.json: max E / E(0) over 0.02 s without friction for each
@@ -22,7 +22,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from contactbody.stability import first_stable  # noqa: E402
 
-HEADER = ROOT / "solver" / "stability_map_data.hpp"
+HEADER = ROOT / "solver" / "simulation" / "stability_map_data.hpp"
 
 
 def number(x):

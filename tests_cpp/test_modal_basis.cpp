@@ -1,4 +1,4 @@
-// The reduced body's basis (solver/modal_basis.cpp): the identities of the construction in
+// The reduced body's basis (solver/body/modal_basis.cpp): the identities of the construction in
 // docs/decisions.md, "The reduced body", on the FMU's own matrices, and Spectra against a
 // dense solve.
 #include <gtest/gtest.h>

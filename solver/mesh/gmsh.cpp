@@ -12,8 +12,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include "../c_file.hpp"
-#include "../text.hpp"
+#include "c_file.hpp"
+#include "text.hpp"
 
 namespace contactbody {
 

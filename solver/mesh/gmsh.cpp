@@ -499,11 +499,13 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
                          " group names node " + std::to_string(tag) + ", which no triangle has", e.line);
             nodes.push_back(it->second);
         }
-        for (int n : nodes) (c ? contact : clamp)[static_cast<size_t>(n)] = 1;
-        if (c && k) for (int n : nodes) clamp[static_cast<size_t>(n)] = 1;
+        for (int n : nodes) {
+            if (c) contact[static_cast<size_t>(n)] = 1;
+            if (k) clamp[static_cast<size_t>(n)] = 1;
+        }
         if (c && e.dim == 1) contact_lines.push_back({nodes[0], nodes[1]});
-        (c ? contact_elements : clamp_elements) += 1;
-        if (k && c) clamp_elements += 1;
+        contact_elements += c;
+        clamp_elements += k;
     }
     if (contact_elements == 0) fail("the physical group \"contact\" holds no element of this mesh", 0);
     if (clamp_elements == 0) fail("the physical group \"clamp\" holds no element of this mesh", 0);

@@ -227,7 +227,8 @@ const std::vector<Variable>& table() {
         real("static_friction_ratio", 27, &Values::static_friction_ratio, "", 1, 1, max_static_friction_ratio, "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)"),
         real("stribeck_velocity", 32, &Values::stribeck_velocity, "m/s", 0, 0, inf, "Slip-rate law: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity) + viscous_friction |v| with F_d = friction_coefficient, F_s = static_friction_ratio x F_d and v the scheme's slip rate, taken implicitly in the step; 0 = no Stribeck term (F_s is then the stick memory of static_friction_ratio)"),
         real("viscous_friction", 33, &Values::viscous_friction, "s/m", 0, 0, max_viscous_friction, "Slip-rate law: the viscous term c_v |v| of F(v) (see stribeck_velocity); 0 = none"),
-        integer("modes", 34, &Values::modes, 0, 0, max_reduced_modes, "The body: 0 = the full mesh; m > 0 = the reduced body: the contact edge kept exact and massless, the interior reduced to its m lowest modes plus the edge's residual attachment modes (massless boundary component mode synthesis); under top_control = force the plate's translation is one more coordinate. At most the body's finite modes (free dofs less massless ones), and of a body above 2000 free dofs at most 500 and at most a quarter of them. The basis is built at initialization and kept over a reset"),
+        integer("modes", 34, &Values::modes, 0, 0, max_reduced_modes, "The body: 0 = the full mesh; m > 0 = the reduced body: the contact edge kept exact, the interior reduced to its m lowest modes plus the edge's residual attachment modes (massless boundary component mode synthesis; reduced_edge chooses whether the edge's x dofs keep their mass); under top_control = force the plate's translation is one more coordinate. At most the body's finite modes (free dofs less massless ones), and of a body above 2000 free dofs at most 500 and at most a quarter of them. The basis is built at initialization and kept over a reset"),
+        enumeration("reduced_edge", 36, &Values::reduced_edge, "ReducedEdge", 0, "The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose x dofs have no mass); by_variant takes the default measured for each mass_matrix (docs/decisions.md)"),
         // Inputs
         real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, "Horizontal velocity V of the rigid foundation").as_input(Input::foundation_velocity),
         real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, "Prescribed vertical displacement of the top edge").as_input(Input::top_displacement),
@@ -361,6 +362,7 @@ const std::vector<EnumerationType>& enumeration_types() {
         {"InputInterpolation", {"hold", "ramp"}},
         {"TopControl", {"displacement", "force"}},
         {"InitialState", {"paper", "static"}},
+        {"ReducedEdge", {"by_variant", "massless", "tangential_mass"}},
         {"ContactState", {"open", "stick", "slip"}},
     };
     return types;

@@ -29,6 +29,7 @@ struct Values {
     double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
     int modes;  // 0: the full body
+    int reduced_edge;  // ReducedEdge
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;  // 0: no edge history

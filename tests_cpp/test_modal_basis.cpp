@@ -64,7 +64,7 @@ void expect_identities(const Discretization& d, const ModalBasis& b) {
 
 TEST(ModalBasis, SpectraAgreesWithTheDenseSolve) {
     const Discretization d = discretize(scene(8, MassVariant::redistributed_normal));
-    const ModalBasis spectra = build_modal_basis(d, 10, 0);
+    const ModalBasis spectra = build_modal_basis(d, 10, false, 0);
     const ModalBasis dense = build_modal_basis(d, 10);
     ASSERT_FALSE(spectra.dense);
     ASSERT_TRUE(dense.dense);

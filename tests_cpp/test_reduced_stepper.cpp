@@ -1,7 +1,8 @@
 // The reduced body against the full body: with every finite mode it is the full
 // body in other coordinates, so 500 substeps of both agree to round-off in every variant,
 // with friction, damping and a moving clamp or a plate under force control; with fewer modes
-// its own energy balance closes.
+// its own energy balance closes. Both contact edges (reduced_edge): massless, and with the
+// contact x dofs carrying the variant's tangential mass.
 #include <gtest/gtest.h>
 
 #include "reduced_stepper.hpp"
@@ -47,18 +48,25 @@ SubstepLoad load_at(int k, double dt) {
 // full body itself turns a 1e-14 change of its initial velocity into a change of its normal
 // force of order one (variant 0, after about 270 substeps) or 1e-7 (variant 3), so the reduced
 // body is held to the full body's own sensitivity there.
-static void expect_all_modes_give_the_full_body(bool force_control) {
+static void expect_all_modes_give_the_full_body(bool force_control, ReducedEdge edge) {
     const double dt = 2e-6;
+    const bool tangential = edge == ReducedEdge::tangential_mass;
     for (int v = 0; v < num_mass_variants; ++v) {
         SCOPED_TRACE(v);
         SceneParameters p = scene(static_cast<MassVariant>(v));
         if (force_control) p = force_controlled(p);
+        p.reduced_edge = edge;
+        if (tangential && p.mass_matrix == MassVariant::redistributed_both) {  // no x mass to keep
+            EXPECT_THROW(ReducedStepper(p, 3), std::invalid_argument);
+            continue;
+        }
         const bool sensitive = !redistributes_normal(p.mass_matrix);
         Stepper full(p), perturbed(p);
         // Every finite mode of the clamped body (force control adds the plate's translation).
         SceneParameters clamped = p;
         clamped.force_control = false;
-        ReducedStepper reduced(p, finite_mode_count(discretize(clamped)));
+        ReducedStepper reduced(p, finite_mode_count(discretize(clamped), tangential));
+        EXPECT_EQ(reduced.tangential_mass(), tangential);
         State s = full.initial_state(load_at(0, dt).top_start), t = s;
         t.v *= 1 + 1e-14;
         ReducedState r = reduced.from_full(s);
@@ -115,22 +123,35 @@ static void expect_all_modes_give_the_full_body(bool force_control) {
     }
 }
 
-TEST(ReducedStepper, AllModesGiveTheFullBody) { expect_all_modes_give_the_full_body(false); }
+TEST(ReducedStepper, AllModesGiveTheFullBody) {
+    expect_all_modes_give_the_full_body(false, ReducedEdge::massless);
+}
+
+TEST(ReducedStepper, AllModesGiveTheFullBodyWithTheTangentialMassEdge) {
+    expect_all_modes_give_the_full_body(false, ReducedEdge::tangential_mass);
+}
 
 // Under force control the plate's translation is a coordinate of the reduced body beside the
 // clamped body's modes (reduced_stepper.hpp): with every mode, again the full body.
 TEST(ReducedStepper, AllModesGiveTheFullBodyUnderForceControl) {
-    expect_all_modes_give_the_full_body(true);
+    expect_all_modes_give_the_full_body(true, ReducedEdge::massless);
+}
+
+TEST(ReducedStepper, AllModesGiveTheFullBodyUnderForceControlWithTheTangentialMassEdge) {
+    expect_all_modes_give_the_full_body(true, ReducedEdge::tangential_mass);
 }
 
 // With a few modes the reduced body is another model, with its own energy identity:
 // E - E(0) = clamp + normal contact + friction - damping, to round-off.
-static void expect_energy_balance_with_few_modes(bool force_control) {
+static void expect_energy_balance_with_few_modes(bool force_control, ReducedEdge edge) {
     const double dt = 2e-6;
     for (int v = 0; v < num_mass_variants; ++v) {
         SCOPED_TRACE(v);
         SceneParameters p = scene(static_cast<MassVariant>(v));
         if (force_control) p = force_controlled(p);
+        p.reduced_edge = edge;
+        if (edge == ReducedEdge::tangential_mass && p.mass_matrix == MassVariant::redistributed_both)
+            continue;
         p.stribeck_velocity = 2.0;
         p.static_friction_ratio = 1.5;
         p.viscous_friction = 0.01;
@@ -160,9 +181,19 @@ static void expect_energy_balance_with_few_modes(bool force_control) {
     }
 }
 
-TEST(ReducedStepper, EnergyBalanceClosesWithFewModes) { expect_energy_balance_with_few_modes(false); }
+TEST(ReducedStepper, EnergyBalanceClosesWithFewModes) {
+    expect_energy_balance_with_few_modes(false, ReducedEdge::massless);
+}
+
+TEST(ReducedStepper, EnergyBalanceClosesWithFewModesWithTheTangentialMassEdge) {
+    expect_energy_balance_with_few_modes(false, ReducedEdge::tangential_mass);
+}
 
 // The top force's work over the plate's motion, with the plate's kinetic energy in E.
 TEST(ReducedStepper, EnergyBalanceClosesWithFewModesUnderForceControl) {
-    expect_energy_balance_with_few_modes(true);
+    expect_energy_balance_with_few_modes(true, ReducedEdge::massless);
+}
+
+TEST(ReducedStepper, EnergyBalanceClosesWithFewModesUnderForceControlWithTheTangentialMassEdge) {
+    expect_energy_balance_with_few_modes(true, ReducedEdge::tangential_mass);
 }

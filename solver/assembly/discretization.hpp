@@ -27,6 +27,15 @@ constexpr int num_mass_variants = 5;
 // is lambda_N (gap - u_N^k) <= 0 at every active node: contact can only take energy out.
 bool redistributes_normal(MassVariant v);
 bool contact_at_end_of_step(MassVariant v);
+struct SceneParameters;
+// Whether the reduced body of p keeps its contact x dofs with mass (reduced_edge resolved).
+bool reduced_edge_has_tangential_mass(const SceneParameters& p);
+
+// The reduced body's contact edge (docs/decisions.md, "The reduced body's contact edge"):
+// massless (the residual attachment modes of every contact dof, MacNeal), or with the contact
+// x dofs as coordinates of their own that carry the variant's tangential mass (Craig-Bampton
+// constraint modes; the normal dofs stay massless). by_variant takes the measured default.
+enum class ReducedEdge : int { by_variant = 0, massless = 1, tangential_mass = 2 };
 
 // Whether a scene parameter changes the Discretization (A, M, C, the unknowns) and so the
 // factors, or only what a run does with them.
@@ -70,6 +79,7 @@ struct SceneParameters {
     // The body: 0 the full mesh; m > 0 the reduced body (docs/decisions.md, "The reduced
     // body"): the contact edge exact and massless, the interior reduced to its m lowest modes.
     int modes = 0;
+    ReducedEdge reduced_edge = ReducedEdge::by_variant;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 
     // Every field once: f(name, reuse, the field of each p...) with the FMU variable that sets
@@ -107,6 +117,7 @@ struct SceneParameters {
         f("max_energy", keep, p.max_energy...);
         f("max_energy_ratio", keep, p.max_energy_ratio...);
         f("modes", rebuild, p.modes...);  // the basis is built from the discretization
+        f("reduced_edge", rebuild, p.reduced_edge...);
     }
 };
 

@@ -39,24 +39,38 @@ private:
     mutable Eigen::VectorXd t_, r_;
 };
 
-// The contact unknowns as signed free positions: N_i = -e_y(i), T_i = +e_x(i) (the stepper's B).
+// The contact unknowns as signed free positions: N_i = -e_y(i), T_i = +e_x(i) (the stepper's B),
+// the x ones only where the tangential dofs are not held.
 struct ContactRows {
     std::vector<int> position;
     std::vector<double> sign;
 };
-ContactRows contact_rows(const Discretization& d) {
+ContactRows contact_rows(const Discretization& d, bool hold_tangential) {
     ContactRows b;
     for (int y : d.contact_y) b.position.push_back(y), b.sign.push_back(-1);
-    for (int x : d.contact_x) b.position.push_back(x), b.sign.push_back(1);
+    if (!hold_tangential)
+        for (int x : d.contact_x) b.position.push_back(x), b.sign.push_back(1);
     return b;
+}
+
+// The columns `positions` of an identity of n rows: a sparse selection.
+SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (size_t j = 0; j < positions.size(); ++j) t.emplace_back(positions[j], static_cast<int>(j), 1.0);
+    SparseMatrix P(n, static_cast<Eigen::Index>(positions.size()));
+    P.setFromTriplets(t.begin(), t.end());
+    return P;
 }
 
 }  // namespace
 
-int finite_mode_count(const Discretization& d) {
+int finite_mode_count(const Discretization& d, bool hold_tangential) {
     int massless = 0;
     for (Eigen::Index k = 0; k < d.M_free.rows(); ++k) massless += d.M_free.coeff(k, k) == 0;
-    return static_cast<int>(d.M_free.rows()) - massless;
+    int held_with_mass = 0;
+    if (hold_tangential)
+        for (int x : d.contact_x) held_with_mass += d.M_free.coeff(x, x) != 0;
+    return static_cast<int>(d.M_free.rows()) - massless - held_with_mass;
 }
 
 LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit) {
@@ -129,31 +143,55 @@ LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes
     return out;
 }
 
-ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit) {
+ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tangential, int dense_limit) {
     const auto start = std::chrono::steady_clock::now();
     if (d.plate_index >= 0)
         throw std::invalid_argument(
             "build_modal_basis needs a clamped top: under force control the body and the plate "
             "translate freely (the reduced body builds its basis on the clamped body and adds "
             "the translation)");
-    const int finite = finite_mode_count(d);
+    const int finite = finite_mode_count(d, hold_tangential);
     if (modes < 1 || modes > finite)
         throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +
-                                    std::to_string(finite) + " finite modes");
+                                    std::to_string(finite) + " finite modes" +
+                                    (hold_tangential ? " with its contact x dofs held (reduced_edge = tangential_mass)" : ""));
     const Eigen::Index n = d.A_free.rows();
+    // The held dofs X and the rest I: the modes, the residual and the static solves are the
+    // rest's (with nothing held, the free dofs themselves).
+    const std::vector<int> held = hold_tangential ? d.contact_x : std::vector<int>{};
+    std::vector<int> rest, rest_index(static_cast<size_t>(n), -1);
+    {
+        std::vector<bool> is_held(static_cast<size_t>(n), false);
+        for (int x : held) is_held[static_cast<size_t>(x)] = true;
+        for (int p = 0; p < n; ++p)
+            if (!is_held[static_cast<size_t>(p)]) rest_index[static_cast<size_t>(p)] = static_cast<int>(rest.size()), rest.push_back(p);
+    }
+    const SparseMatrix Pi = selection(n, rest), Px = selection(n, held);
+    const SparseMatrix A_rest = held.empty() ? SparseMatrix() : SparseMatrix(Pi.transpose() * d.A_free * Pi);
+    const SparseMatrix M_rest = held.empty() ? SparseMatrix() : SparseMatrix(Pi.transpose() * d.M_free * Pi);
+    const SparseMatrix& A_II = held.empty() ? d.A_free : A_rest;
+    const SparseMatrix& M_II = held.empty() ? d.M_free : M_rest;
+    const Eigen::Index ni = A_II.rows();
+    // A matrix on the rest's rows as one on every free dof (zero on X's rows).
+    const auto expand = [&](Eigen::MatrixXd rows) -> Eigen::MatrixXd {
+        if (held.empty()) return rows;
+        return Pi * rows;
+    };
+
     ModalBasis basis;
-    LowestModes lowest = lowest_modes(d.A_free, d.M_free, modes, dense_limit);
+    LowestModes lowest = lowest_modes(A_II, M_II, modes, dense_limit);
     basis.dense = lowest.dense;
     basis.eigensolver_iterations = lowest.iterations;
     basis.operator_applications = lowest.applications;
     basis.omega2 = std::move(lowest.omega2);
-    basis.modes = std::move(lowest.modes);
+    const Eigen::MatrixXd modes_rest = std::move(lowest.modes);
     const auto& solve = lowest.solve;
 
-    // Residual attachment modes of the contact unknowns.
-    const ContactRows b = contact_rows(d);
+    // Residual attachment modes of the contact unknowns that are not held.
+    ContactRows b = contact_rows(d, hold_tangential);
+    for (int& p : b.position) p = rest_index[static_cast<size_t>(p)];
     const Eigen::Index nb = static_cast<Eigen::Index>(b.position.size());
-    Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(n, nb);
+    Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(ni, nb);
     for (Eigen::Index j = 0; j < nb; ++j) Bt(b.position[static_cast<size_t>(j)], j) = b.sign[static_cast<size_t>(j)];
     // B X for a dense X: its signed rows at the contact positions (B is a signed selection).
     const auto rows_of = [&](const Eigen::MatrixXd& X) {
@@ -162,26 +200,44 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit
             out.row(r) = b.sign[static_cast<size_t>(r)] * X.row(b.position[static_cast<size_t>(r)]);
         return out;
     };
-    const Eigen::MatrixXd modal_part = rows_of(basis.modes).transpose();  // modes^T B^T
+    const Eigen::MatrixXd modal_part = rows_of(modes_rest).transpose();  // modes^T B^T
     Eigen::MatrixXd psi = solve(Bt);
     // The contact dofs' static flexibility, B A^-1 B^T: the scale below which G is round-off.
     const double flexibility = rows_of(psi).diagonal().maxCoeff();
-    psi.noalias() -= basis.modes * (basis.omega2.cwiseInverse().asDiagonal() * modal_part);
+    psi.noalias() -= modes_rest * (basis.omega2.cwiseInverse().asDiagonal() * modal_part);
     Eigen::MatrixXd G = rows_of(psi);
     G = 0.5 * (G + G.transpose()).eval();
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> g(G);
     std::vector<Eigen::Index> kept;
     for (Eigen::Index j = 0; j < g.eigenvalues().size(); ++j)
         if (g.eigenvalues()[j] > 1e-9 * flexibility) kept.push_back(j);
-    basis.residual.resize(n, static_cast<Eigen::Index>(kept.size()));
+    Eigen::MatrixXd residual(ni, static_cast<Eigen::Index>(kept.size()));
     for (size_t j = 0; j < kept.size(); ++j)
-        basis.residual.col(static_cast<Eigen::Index>(j)) =
+        residual.col(static_cast<Eigen::Index>(j)) =
             psi * g.eigenvectors().col(kept[j]) / std::sqrt(g.eigenvalues()[kept[j]]);
+    basis.modes = expand(modes_rest);
+    basis.residual = expand(residual);
 
-    // The clamp's static lift.
+    // The clamp's static lift, and the held dofs' constraint modes.
     Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(d.clamped_dofs.size()));
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) e[static_cast<Eigen::Index>(k)] = d.clamped_dofs[k] % 2 == 1;
-    basis.lift = -solve(Eigen::MatrixXd(d.A_free_clamped * e)).col(0);
+    const Eigen::VectorXd Afc_e = d.A_free_clamped * e;
+    if (held.empty()) {
+        basis.lift = -solve(Eigen::MatrixXd(Afc_e)).col(0);
+        basis.constraint.resize(n, 0);
+    } else {
+        const SparseMatrix A_IX = Pi.transpose() * d.A_free * Px, A_XX = Px.transpose() * d.A_free * Px;
+        const Eigen::MatrixXd C = -solve(Eigen::MatrixXd(A_IX));
+        basis.constraint = Pi * C + Eigen::MatrixXd(Px);
+        // The lift with X held, plus the constraint modes that free X: K_XX s_X = the held
+        // dofs' reaction, K_XX = A_XX + A_XI C (Guyan's condensed stiffness).
+        const Eigen::VectorXd held_lift = -solve(Eigen::MatrixXd(Pi.transpose() * Afc_e)).col(0);
+        const Eigen::VectorXd reaction = -(A_IX.transpose() * held_lift + Px.transpose() * Afc_e);
+        Eigen::MatrixXd K_XX = Eigen::MatrixXd(A_XX) + A_IX.transpose() * C;
+        K_XX = 0.5 * (K_XX + K_XX.transpose()).eval();
+        const Eigen::VectorXd s_X = K_XX.llt().solve(reaction);
+        basis.lift = Pi * Eigen::VectorXd(held_lift + C * s_X) + Px * s_X;
+    }
     basis.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return basis;
 }

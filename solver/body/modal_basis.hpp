@@ -22,8 +22,14 @@ struct ModalBasis {
     // with every finite mode kept only the massless contact dofs' columns remain, and
     // residual^T M residual = 0 there.
     Eigen::MatrixXd residual;  // n_f x k
+    // The tangential-mass edge (hold_tangential): the contact x dofs kept as coordinates of
+    // their own, X. The modes and the residual are then those of the body with X held (zero
+    // on X's rows; the residual of the contact normal dofs only), and these are Craig-Bampton's
+    // constraint modes: identity on X's rows, -A_II^-1 A_IX on the rest (I). They carry the
+    // mass of X and of the interior they drag along. n_f x n_X; n_f x 0 for the massless edge.
+    Eigen::MatrixXd constraint;
     // -A_ff^-1 A_fc e: the free dofs' static response to a unit top displacement (displacement
-    // control: every clamped y dof moves by 1, the x ones stay).
+    // control: every clamped y dof moves by 1, the x ones stay), X free in either edge.
     Eigen::VectorXd lift;
     // What it cost: wall seconds, and the eigensolver's restarts and operator applications
     // (0 for the dense path).
@@ -38,7 +44,9 @@ struct ModalBasis {
 // largest eigenvalues are 1 / omega^2. Throws std::invalid_argument for a count out of range
 // or force control (A_ff is then singular: the plate and body translate freely), and
 // std::runtime_error naming the cause when the eigensolver does not converge.
-ModalBasis build_modal_basis(const Discretization& d, int modes, int dense_limit = 400);
+// hold_tangential builds the tangential-mass edge's basis (constraint above).
+ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tangential = false,
+                             int dense_limit = 400);
 
 // The lowest `modes` modes of A x = omega^2 M x (A positive definite, M semi-definite),
 // ascending, mass-normalized, and A^-1 for the residual and static shapes that follow: dense
@@ -56,7 +64,8 @@ struct LowestModes {
 };
 LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit = 400);
 
-// Free dofs minus those without mass: the number of finite modes.
-int finite_mode_count(const Discretization& d);
+// Free dofs minus those without mass: the number of finite modes; with the contact x dofs held,
+// those of the rest (the modes build_modal_basis can compute).
+int finite_mode_count(const Discretization& d, bool hold_tangential = false);
 
 }  // namespace contactbody

@@ -22,23 +22,38 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
       disc_(discretize(params)),
       clamped_(params.force_control ? std::optional<Discretization>(clamped_discretization(params))
                                     : std::nullopt),
-      basis_(build_modal_basis(basis_disc(), modes)),
+      basis_(build_modal_basis(basis_disc(), modes, reduced_edge_has_tangential_mass(params))),
       plate_mass_(params.force_control ? params.top_mass : 0.0) {
     const Discretization& d = basis_disc();
-    const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols(), n = m + k;
+    const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols();
+    nd_ = m + k;
+    nx_ = basis_.constraint.cols();
+    const Eigen::Index n = nd_ + nx_;
     nf_ = static_cast<Eigen::Index>(d.free_dofs.size());
     omega2_.resize(n);
-    omega2_ << basis_.omega2, Eigen::VectorXd::Ones(k);
+    omega2_ << basis_.omega2, Eigen::VectorXd::Ones(k), Eigen::VectorXd::Zero(nx_);
     mass_.resize(n);
-    mass_ << Eigen::VectorXd::Ones(m), Eigen::VectorXd::Zero(k);
+    mass_ << Eigen::VectorXd::Ones(m), Eigen::VectorXd::Zero(k), Eigen::VectorXd::Zero(nx_);
+    const Eigen::MatrixXd& TC = basis_.constraint;  // the X coordinates' columns of T
+    mass_x_ = Eigen::MatrixXd::Zero(n, nx_);
+    if (nx_ > 0) {
+        const Eigen::MatrixXd MTC = d.M_free * TC, ATC = d.A_free * TC;
+        mass_x_.topRows(m) = basis_.modes.transpose() * MTC;
+        const Eigen::MatrixXd Mxx = TC.transpose() * MTC, Axx = TC.transpose() * ATC;
+        mass_x_.bottomRows(nx_) = 0.5 * (Mxx + Mxx.transpose());
+        stiffness_xx_ = 0.5 * (Axx + Axx.transpose());
+        stiffness_xx_factor_.compute(stiffness_xx_);
+    }
 
     const int nc = num_contact_nodes();
     Bhat_.resize(2 * nc, n);
     Blift_.resize(2 * nc);
     for (int i = 0; i < nc; ++i) {  // N_i = -e_y(i), T_i = +e_x(i), as the stepper's B
         const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_x[static_cast<size_t>(i)];
-        Bhat_.row(i) << -basis_.modes.row(y), -basis_.residual.row(y);
-        Bhat_.row(nc + i) << basis_.modes.row(x), basis_.residual.row(x);
+        Bhat_.row(i).head(nd_) << -basis_.modes.row(y), -basis_.residual.row(y);
+        Bhat_.row(nc + i).head(nd_) << basis_.modes.row(x), basis_.residual.row(x);
+        Bhat_.row(i).tail(nx_) = -TC.row(y);
+        Bhat_.row(nc + i).tail(nx_) = TC.row(x);
         Blift_[i] = -basis_.lift[y];
         Blift_[nc + i] = basis_.lift[x];
     }
@@ -55,8 +70,10 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     m_c_ = Eigen::VectorXd::Zero(n);
     m_s_.head(m) = basis_.modes.transpose() * MS;
     m_c_.head(m) = basis_.modes.transpose() * Me;
+    m_s_.tail(nx_) = TC.transpose() * MS;
+    m_c_.tail(nx_) = TC.transpose() * Me;
     a_s_.resize(n);
-    a_s_ << basis_.modes.transpose() * AS, basis_.residual.transpose() * AS;
+    a_s_ << basis_.modes.transpose() * AS, basis_.residual.transpose() * AS, TC.transpose() * AS;
     m_t_ = m_s_ + m_c_;
     mu_ss_ = S.dot(MS);
     mu_cs_ = S.dot(Me);
@@ -77,8 +94,10 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     }
     clamp_x_.mass = Eigen::VectorXd::Zero(n);
     clamp_x_.mass.head(m) = basis_.modes.transpose() * M_fx;
+    clamp_x_.mass.tail(nx_) = TC.transpose() * M_fx;
     clamp_x_.stiffness.resize(n);
-    clamp_x_.stiffness << basis_.modes.transpose() * A_fx, basis_.residual.transpose() * A_fx;
+    clamp_x_.stiffness << basis_.modes.transpose() * A_fx, basis_.residual.transpose() * A_fx,
+        TC.transpose() * A_fx;
     clamp_x_.mass_lift = S.dot(M_fx);
     clamp_x_.stiffness_lift = S.dot(A_fx);
     clamp_x_.mass_top = all_e.dot(M_ex);
@@ -95,6 +114,9 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     bw_.resize(2 * nc);
     du_.resize(n);
     contact_force_.resize(n);
+    dw_.resize(n);
+    tail_.resize(nx_);
+    form_.resize(nx_);
 }
 
 // What a new stepper of params_ is, but for the discretization, the basis and the operators.
@@ -120,7 +142,9 @@ std::string ReducedStepper::summary() const {
     Text msg;
     msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(basis_disc())
         << " finite) and " << basis_.residual.cols() << " residual attachment modes of the "
-        << num_contact_nodes() << " contact nodes; basis "
+        << num_contact_nodes() << " contact nodes"
+        << (nx_ > 0 ? " (normal), the tangential-mass edge: its x dofs kept with their constraint modes" : ", the massless edge")
+        << "; basis "
         << (restarts_ > 0 ? "kept from the last run (built" : "built") << " in "
         << basis_.setup_seconds << " s, " << (basis_.dense ? "dense eigensolver" : "Lanczos, ")
         << (basis_.dense ? "" : std::to_string(basis_.operator_applications) + " operator applications")
@@ -143,10 +167,11 @@ State ReducedStepper::from_full(const State& full) const {
         u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.u[n];
         v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.v[n];
     }
-    const auto project = [&](const Eigen::VectorXd& x, auto&& z) {  // diag(A_hat)^-1 T^T A x
+    const auto project = [&](const Eigen::VectorXd& x, auto&& z) {  // A_hat^-1 T^T A x
         const Eigen::VectorXd Ax = d.A_free * x;
-        z << basis_.modes.transpose() * Ax, basis_.residual.transpose() * Ax;
-        z = z.cwiseQuotient(omega2_);
+        z.head(nd_) << basis_.modes.transpose() * Ax, basis_.residual.transpose() * Ax;
+        z.head(nd_) = z.head(nd_).cwiseQuotient(omega2_.head(nd_));
+        if (nx_ > 0) z.tail(nx_) = stiffness_xx_factor_.solve(basis_.constraint.transpose() * Ax);
     };
     project(u, s.u.head(n));
     project(v, s.v.head(n));
@@ -159,10 +184,10 @@ State ReducedStepper::from_full(const State& full) const {
 void ReducedStepper::to_full(const State& s, State& full) const {
     const Discretization& d = basis_disc();
     const Eigen::Index m = basis_.modes.cols(), n = size();
-    const Eigen::VectorXd u = basis_.modes * s.u.head(m) + basis_.residual * s.u.segment(m, n - m) +
-                              basis_.lift * s.u[n];
-    const Eigen::VectorXd v = basis_.modes * s.v.head(m) + basis_.residual * s.v.segment(m, n - m) +
-                              basis_.lift * s.v[n];
+    const Eigen::VectorXd u = basis_.modes * s.u.head(m) + basis_.residual * s.u.segment(m, nd_ - m) +
+                              basis_.constraint * s.u.segment(nd_, nx_) + basis_.lift * s.u[n];
+    const Eigen::VectorXd v = basis_.modes * s.v.head(m) + basis_.residual * s.v.segment(m, nd_ - m) +
+                              basis_.constraint * s.v.segment(nd_, nx_) + basis_.lift * s.v[n];
     full.u.setZero(d.mesh.num_dofs());
     full.v.setZero(d.mesh.num_dofs());
     for (size_t j = 0; j < d.free_dofs.size(); ++j) {
@@ -186,17 +211,55 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     const Eigen::Index n = size();
     const auto z = s.u.head(n), zdot = s.v.head(n);
     const double tau = s.v[n], tc = s.v[n + 1], top = s.u[n + 1], gap = s.u[n] - top;
-    const double kinetic = 0.5 * zdot.cwiseAbs2().dot(mass_) + zdot.dot(m_s_ * tau + m_c_ * tc) +
+    const double kinetic = 0.5 * mass_form(zdot) + zdot.dot(m_s_ * tau + m_c_ * tc) +
                            0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) +
                            0.5 * plate_mass_ * tc * tc;
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
-    const double strain = 0.5 * z.cwiseAbs2().dot(omega2_) + z.dot(a_s_) * gap +
+    const double strain = 0.5 * stiffness_form(z) + z.dot(a_s_) * gap +
                           0.5 * s_ss_ * gap * gap + 0.5 * stiffness_tt_ * top * top;
     // Both are positive semi-definite forms, here expanded into terms that cancel for a body
     // moving rigidly: what is left below zero is round-off (issue 42 saw -2.7e-13 J/m), and
     // the full body's energies are >= 0 by construction.
     return {std::max(kinetic, 0.0), std::max(strain, 0.0)};
+}
+
+double ReducedStepper::tail_mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    if (nx_ == 0) return 0;
+    form_.noalias() = 2 * mass_x_.topRows(nd_).transpose() * x.head(nd_);
+    form_.noalias() += mass_x_.bottomRows(nx_) * x.tail(nx_);
+    return x.tail(nx_).dot(form_);
+}
+
+double ReducedStepper::tail_stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    if (nx_ == 0) return 0;
+    form_.noalias() = stiffness_xx_ * x.tail(nx_);
+    return x.tail(nx_).dot(form_);
+}
+
+double ReducedStepper::mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    const double diagonal = x.cwiseAbs2().dot(mass_);
+    return nx_ == 0 ? diagonal : diagonal + tail_mass_form(x);
+}
+
+double ReducedStepper::stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    const double diagonal = x.cwiseAbs2().dot(omega2_);
+    return nx_ == 0 ? diagonal : diagonal + tail_stiffness_form(x);
+}
+
+void ReducedStepper::solve_step(const StepOperators& ops, Eigen::Ref<Eigen::VectorXd> x) const {
+    if (nx_ == 0) {
+        x = x.cwiseProduct(ops.inverse_stiffness);
+        return;
+    }
+    // Eliminate the diagonal block, solve the Schur complement on X, substitute back.
+    Eigen::VectorXd& t = tail_;
+    t = x.tail(nx_);
+    t.noalias() -= ops.tail_coupling.transpose() * x.head(nd_);
+    ops.tail_schur.solveInPlace(t);
+    x.head(nd_) = x.head(nd_).cwiseProduct(ops.inverse_stiffness.head(nd_));
+    x.head(nd_).noalias() -= ops.tail_coupling * t;
+    x.tail(nx_) = t;
 }
 
 double ReducedStepper::energy(const ReducedState& s) const {
@@ -253,14 +316,30 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
     auto ops = std::make_unique<StepOperators>();
     ops->dt = dt;
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
+    const double c = c1 + c2 * params_.damping_mass;
     ops->inverse_stiffness = (c1 * mass_ + c2 * damping_ + omega2_).cwiseInverse();
-    ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
+    if (nx_ == 0) {
+        ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
+    } else {
+        ops->inverse_stiffness.tail(nx_).setZero();
+        ops->tail_coupling = c * (ops->inverse_stiffness.head(nd_).asDiagonal() * mass_x_.topRows(nd_));
+        Eigen::MatrixXd schur = c * mass_x_.bottomRows(nx_) +
+                                (1 + c2 * params_.damping_stiffness) * stiffness_xx_ -
+                                c * mass_x_.topRows(nd_).transpose() * ops->tail_coupling;
+        ops->tail_schur.compute(0.5 * (schur + schur.transpose()));
+        if (ops->tail_schur.info() != Eigen::Success)
+            throw std::runtime_error("the tangential-mass edge's step matrix is not positive definite");
+        Eigen::MatrixXd response = Bhat_.transpose();  // K^-1 B_hat^T
+        for (Eigen::Index j = 0; j < response.cols(); ++j) solve_step(*ops, response.col(j));
+        ops->delassus = Bhat_ * response;
+        ops->delassus = 0.5 * (ops->delassus + ops->delassus.transpose()).eval();
+    }
     if (params_.force_control) {
         // The plate's row: the lift's mass with the plate's (C has the body's mass only), and
         // no stiffness (A S = 0). W gains the rank-one g g^T / schur, g = B S - c B T h.
-        const double c = c1 + c2 * params_.damping_mass;
         const double k_pp = c1 * (mass_tt_ + plate_mass_) + c2 * params_.damping_mass * mass_tt_;
-        ops->plate_coupling = ops->inverse_stiffness.cwiseProduct(m_t_);
+        ops->plate_coupling = m_t_;
+        solve_step(*ops, ops->plate_coupling);
         ops->plate_schur = k_pp - c * c * m_t_.dot(ops->plate_coupling);
         const Eigen::VectorXd g = Blift_ - c * (Bhat_ * ops->plate_coupling);
         ops->delassus += g * g.transpose() / ops->plate_schur;
@@ -305,7 +384,13 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     double w_t = plate ? 0.0 : 0.5 * (load.top_start + load.top_end) - top;
     rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
            omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
-    w_ = ops.inverse_stiffness.cwiseProduct(rhs_);
+    if (nx_ > 0) {  // M_hat's and A_hat's X block
+        rhs_.noalias() += c2 * mass_x_ * zdot.tail(nx_);
+        rhs_.tail(nx_).noalias() += c2 * mass_x_.topRows(nd_).transpose() * zdot.head(nd_);
+        rhs_.tail(nx_).noalias() -= stiffness_xx_ * z.tail(nx_);
+    }
+    w_ = rhs_;
+    solve_step(ops, w_);
     if (plate) {
         w_t = (c2 * (m_t_.dot(zdot) + (mass_tt_ + plate_mass_) * top_rate) - load.top_force -
                c * m_t_.dot(w_)) / ops.plate_schur;
@@ -331,7 +416,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         report.contact_sweeps = info.sweeps;
         report.contact_solved = true;
         contact_force_.noalias() = Bhat_.topRows(unknowns).transpose() * s.lambda;
-        w_ += ops.inverse_stiffness.cwiseProduct(contact_force_);
+        dw_ = contact_force_;
+        solve_step(ops, dw_);
+        w_ += dw_;
         if (plate) {  // the plate's share of the contact forces' response
             const double dw_t = (Blift_.head(unknowns).dot(s.lambda) -
                                  c * ops.plate_coupling.dot(contact_force_)) / ops.plate_schur;
@@ -349,7 +436,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const double du_t = 2 * w_t;
     du_ = 2 * w_;
     if (params_.damped())
-        report.work.damping = (du_.cwiseAbs2().dot(damping_) + 2 * du_t * alpha * m_t_.dot(du_) +
+        report.work.damping = (du_.cwiseAbs2().dot(damping_) + alpha * tail_mass_form(du_) +
+                               beta * tail_stiffness_form(du_) + 2 * du_t * alpha * m_t_.dot(du_) +
                                (alpha * mass_tt_ + beta * stiffness_tt_) * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the

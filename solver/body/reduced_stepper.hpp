@@ -7,6 +7,10 @@
 // translation, since A annihilates translations) carries the plate: its coordinate is then an
 // unknown with the plate's and the body's mass, coupled to the modes through the mass only,
 // and the step matrix is the diagonal bordered by that one row.
+// The tangential-mass edge (reduced_edge) appends the contact x dofs X to z as coordinates of
+// their own (the basis' constraint modes): M_hat and A_hat gain a dense X block, coupled to
+// the modes through the mass only, and the step matrix is solved through its Schur
+// complement on X (n_c square, factored once per substep size).
 #pragma once
 
 #include <array>
@@ -21,7 +25,8 @@
 namespace contactbody {
 
 // A reduced state is a State in the basis' coordinates (Body): u = (z, lift_at, top) and
-// v = (zdot, lift_rate, top_rate), where z holds the m modal then the k residual coordinates,
+// v = (zdot, lift_rate, top_rate), where z holds the m modal, the k residual and (the
+// tangential-mass edge) the n_c tangential coordinates,
 // top and top_rate are the clamp's displacement and velocity, and lift_at the lift's
 // coordinate in the free dofs, u_free = T z + lift * lift_at. The lift moves with the clamp's
 // midpoint increments, as the full body's free dofs do, so it differs from top after a jump
@@ -37,7 +42,8 @@ public:
     const Discretization& discretization() const override { return disc_; }
     const SceneParameters& parameters() const override { return params_; }
     const ModalBasis& basis() const { return basis_; }
-    Eigen::Index size() const { return static_cast<Eigen::Index>(omega2_.size()); }  // m + k
+    Eigen::Index size() const { return static_cast<Eigen::Index>(omega2_.size()); }  // m + k + n_X
+    bool tangential_mass() const { return nx_ > 0; }
     int modes() const override { return static_cast<int>(basis_.modes.cols()); }
     // Keeps the basis (it depends on the discretization and the mode count only).
     void restart(const SceneParameters& params) override;
@@ -76,7 +82,11 @@ public:
 private:
     struct StepOperators {
         double dt = 0;
-        Eigen::VectorXd inverse_stiffness;  // 1 / diag(4/dt^2 M + 2/dt C + A)
+        Eigen::VectorXd inverse_stiffness;  // 1 / diag(4/dt^2 M + 2/dt C + A); 0 on X
+        // The tangential-mass edge: K = [D, c M_dX; c M_Xd, K_XX] (c = 4/dt^2 + 2/dt alpha),
+        // solved through D^-1 c M_dX and the Schur complement K_XX - c^2 M_Xd D^-1 M_dX.
+        Eigen::MatrixXd tail_coupling;      // D^-1 c M_dX (n_d x n_X)
+        Eigen::LLT<Eigen::MatrixXd> tail_schur;
         Eigen::MatrixXd delassus;           // B T K^-1 T^T B^T, (N, T) x (N, T)
         // Force control, the plate's bordered row: K = [D, c m_t; c m_t^T, k_pp] with
         // c = 4/dt^2 + 2/dt alpha, h = D^-1 m_t, and its Schur complement k_pp - c^2 m_t^T h.
@@ -84,6 +94,13 @@ private:
         double plate_schur = 0;
     };
     const StepOperators& operators_for(double dt);
+    // x <- K^-1 x for the step matrix K of ops (x holds the right-hand side).
+    void solve_step(const StepOperators& ops, Eigen::Ref<Eigen::VectorXd> x) const;
+    // x^T M_hat x and x^T A_hat x, and M_hat x.
+    double mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+    double stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+    double tail_mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+    double tail_stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
 
     SceneParameters params_;
     Discretization disc_;
@@ -93,8 +110,14 @@ private:
     const Discretization& basis_disc() const { return clamped_ ? *clamped_ : disc_; }
     ModalBasis basis_;
     double plate_mass_ = 0;  // force control: the plate's own mass (kg/m), else 0
-    Eigen::VectorXd omega2_;   // diag(A_hat): modal omega^2, then 1 for the residual
-    Eigen::VectorXd mass_;     // diag(M_hat): 1 for the modes, 0 for the residual
+    Eigen::VectorXd omega2_;   // diag(A_hat): modal omega^2, then 1 for the residual, 0 on X
+    Eigen::VectorXd mass_;     // diag(M_hat): 1 for the modes, 0 for the residual and on X
+    // The tangential-mass edge's X block: M_hat's columns of X (the residual's rows zero:
+    // massless) and A_hat's X block (Guyan's condensed stiffness; A_hat has no X coupling).
+    Eigen::Index nd_ = 0, nx_ = 0;  // diagonal coordinates (m + k), tangential ones (0 or n_c)
+    Eigen::MatrixXd mass_x_;        // n x n_X: (M_dX; M_XX)
+    Eigen::MatrixXd stiffness_xx_;  // n_X x n_X
+    Eigen::LLT<Eigen::MatrixXd> stiffness_xx_factor_;
     Eigen::MatrixXd Bhat_;     // B T: signed rows of the basis at the contact unknowns (N, T)
     Eigen::VectorXd Blift_;    // B lift
     // The lift S and the clamp e against the basis and each other (residual rows of the mass
@@ -124,7 +147,8 @@ private:
     double problem_dt_ = -1;
     bool problem_friction_ = false;
     // Workspace, sized once: the substep allocates nothing.
-    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_, contact_force_;
+    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_, contact_force_, dw_;
+    mutable Eigen::VectorXd tail_, form_;  // solve_step's, the X block's forms'
 };
 
 }  // namespace contactbody

@@ -272,6 +272,29 @@ double wedging_friction(const SceneParameters& p) {
     return stability_map::damped_no_steady_state[nearest_column(p.ny)];
 }
 
+std::string massless_edge_warning(const SceneParameters& p) {
+    if (p.modes == 0 || reduced_edge_has_tangential_mass(p) || p.friction_coefficient == 0)
+        return "";
+    const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
+    const bool weakening = p.stribeck_velocity > 0 && p.static_friction_ratio > 1;
+    if (!weakening && p.friction_coefficient <= c_over_b) return "";
+    Text msg;
+    msg << "modes = " << p.modes << " with the massless contact edge: the edge has no tangential "
+        << "mass, so with ";
+    if (weakening)
+        msg << "friction that drops with the slip rate (static_friction_ratio = "
+            << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity << " m/s)";
+    else
+        msg << "F = " << p.friction_coefficient << " above c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b;
+    msg << " a substep can have several solutions, or none the solver reaches, at any substep "
+           "size (as with mass_matrix = redistributed_both, paper section 6): reducing "
+           "internal_step does not help. "
+        << (p.mass_matrix == MassVariant::redistributed_both
+                ? "mass_matrix = redistributed_normal with reduced_edge = tangential_mass, or modes = 0 with mass_matrix = redistributed_normal, keeps the tangential mass"
+                : "reduced_edge = tangential_mass keeps the edge's tangential mass (or modes = 0, the full body)");
+    return msg.str();
+}
+
 std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
     if (!p.mesh.empty()) {  // the maps place a body by the rectangle's cells: none for a mesh
         if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped())

@@ -24,6 +24,12 @@ namespace contactbody {
 //   the message says so and judges the damped map at F(sliding speed), which ignores dF/dv.
 std::string scheme_warning(const SceneParameters& p, double sliding_speed = 0);
 
+// The reduced body with the massless edge, where its substeps can have several solutions at
+// any size (no tangential mass: as redistributed_both, paper section 6): friction that drops
+// with the slip rate, or F > c/b. Names the setting that keeps the tangential mass; empty
+// where none of this applies.
+std::string massless_edge_warning(const SceneParameters& p);
+
 // The smallest friction coefficient from which the damped stability map found no steady
 // sliding state (the clamped body wedges) on the mesh nearest this body's; inf where none.
 double wedging_friction(const SceneParameters& p);

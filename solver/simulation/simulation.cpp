@@ -61,6 +61,7 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
                    std::to_string(params.modes) + " has not been mapped)";
         warnings_.push_back(std::move(why));
     }
+    if (std::string why = massless_edge_warning(params); !why.empty()) warnings_.push_back(std::move(why));
 }
 
 // A quasi-static load path: the top displacement goes from `start` to `top` in 10 substeps so
@@ -526,7 +527,9 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
         << "substep of this step " << sums.avg.active_contact_nodes << " of "
         << body_->num_contact_nodes() << " contact nodes were in contact, "
         << sums.avg.slipping_contact_nodes << " slipping. " << e.what() << ". ";
-    if (p.friction_coefficient > c_over_b) {
+    if (const std::string why = massless_edge_warning(p); !why.empty()) {
+        msg << "Cause: " << why;
+    } else if (p.friction_coefficient > c_over_b) {
         msg << "F exceeds c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b
             << (p.mass_matrix == MassVariant::redistributed_both
                     ? ": with redistributed_both the step can then have several solutions at "

@@ -4,7 +4,8 @@
 // multipliers; counts the distinct converged solutions. At the first substep with several,
 // it restarts that substep from each other solution as warm start (Newton stops at once on
 // an exact solution) and runs on: how far the trajectories part.
-//   stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA
+// With MODES and EDGE the reduced body (modes, reduced_edge: 1 massless, 2 tangential_mass).
+//   stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA [MODES EDGE]
 // Prints JSON.
 #include <cstdio>
 #include <cstdlib>
@@ -59,8 +60,8 @@ std::vector<Eigen::VectorXd> solutions(const ContactProblem& p, const Eigen::Vec
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 10) {
-        std::fprintf(stderr, "usage: stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA\n");
+    if (argc != 10 && argc != 12) {
+        std::fprintf(stderr, "usage: stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA [MODES EDGE]\n");
         return 2;
     }
     SceneParameters p;
@@ -75,6 +76,10 @@ int main(int argc, char** argv) {
     p.damping_stiffness = std::atof(argv[9]);
     p.static_initial_state = true;
     p.max_energy_ratio = 0;
+    if (argc == 12) {
+        p.modes = std::atoi(argv[10]);
+        p.reduced_edge = static_cast<ReducedEdge>(std::atoi(argv[11]));
+    }
     StepInputs in;
     in.foundation_velocity = std::atof(argv[8]);
     in.top_displacement = -2.5e-5;
@@ -101,8 +106,10 @@ int main(int argc, char** argv) {
     }
     const double energy_end = sim.observables().energy;
     std::printf("{\"mass_matrix\": %s, \"nx\": %d, \"dt\": %g, \"steps\": %d, \"most_solutions\": %d, "
-                "\"substeps_with_several\": %d, \"first\": %d, \"failed_starts\": %d, \"energy_end\": %.17g",
-                argv[1], p.nx, dt, steps, most, several, first, failed_starts, energy_end);
+                "\"substeps_with_several\": %d, \"first\": %d, \"failed_starts\": %d, \"energy_end\": %.17g, "
+                "\"modes\": %d, \"reduced_edge\": %d",
+                argv[1], p.nx, dt, steps, most, several, first, failed_starts, energy_end, p.modes,
+                p.modes > 0 ? (reduced_edge_has_tangential_mass(p) ? 2 : 1) : 0);
     // The trajectories from each solution of the first ambiguous substep.
     std::printf(", \"branches\": [");
     for (size_t b = 0; b < alternatives.size(); ++b) {

@@ -24,12 +24,15 @@ REALS = ["energy", "kinetic_energy", "strain_energy", "friction_work", "normal_f
          "top_velocity"]
 
 
-def finite_modes(nx, ny, variant):
+def finite_modes(nx, ny, variant, edge=0):
     """Free dofs (every node but the top row, x and y) less the massless ones: the bottom
-    edge's normal dofs where M_r redistributes (1, 2, 4), and its tangential ones too (2)."""
+    edge's normal dofs where M_r redistributes (1, 2, 4), and its tangential ones too (2); with
+    the tangential-mass edge (reduced_edge = 2, the default for variants 0, 3, 4) less the
+    edge's x dofs too, which are coordinates of their own."""
     free = 2 * (nx + 1) * ny
     massless = {0: 0, 1: 1, 2: 2, 3: 0, 4: 1}[variant] * (nx + 1)
-    return free - massless
+    tangential = edge == 2 or (edge == 0 and variant in (0, 3, 4))
+    return free - massless - (nx + 1 if tangential else 0)
 
 
 def start(md, unzipped, values, name="reduced"):
@@ -68,15 +71,16 @@ def balance_of(rows, e0):
             - col["friction_work"] + col["damping_work"]), col
 
 
-@pytest.mark.parametrize("variant", [1, 2, 4])
-def test_every_mode_gives_the_full_body(model_description, unzipped, variant):
+@pytest.mark.parametrize("variant, edge", [(1, 0), (2, 0), (4, 0), (1, 2), (4, 1)])
+def test_every_mode_gives_the_full_body(model_description, unzipped, variant, edge):
     """500 substeps (10 steps of 50): every real output equals the full body's to 1e-10 of
-    its largest value. Variants 0 and 3 put mass on the contact dofs, where the full body itself
-    turns a 1e-14 change into one of order one (tests_cpp/test_reduced_stepper.cpp)."""
+    its largest value, with either contact edge (edge 0: the variant's default). Variants 0 and
+    3 put mass on the contact dofs, where the full body itself turns a 1e-14 change into one of
+    order one (tests_cpp/test_reduced_stepper.cpp)."""
     scene = {**SCENE, "mass_matrix": variant}
     full, vr = start(model_description, unzipped, scene, "full")
     reduced, _ = start(model_description, unzipped,
-                       {**scene, "modes": finite_modes(6, 6, variant)})
+                       {**scene, "modes": finite_modes(6, 6, variant, edge), "reduced_edge": edge})
     expected, got = run(full, vr, 0, 10), run(reduced, vr, 0, 10)
     full.close()
     reduced.close()
@@ -305,3 +309,51 @@ def test_t0_with_every_mode_is_the_full_bodys(model_description, unzipped, varia
     finally:
         full.close()
         reduced.close()
+
+
+def test_the_tangential_mass_edge_is_refused_where_the_variant_has_none(model_description, unzipped):
+    inst = Instance(model_description, unzipped)
+    vr = {v.name: v.valueReference for v in model_description.modelVariables}
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setInteger([vr["nx"], vr["ny"], vr["modes"], vr["mass_matrix"], vr["reduced_edge"]],
+                    [6, 6, 8, 2, 2])
+    with pytest.raises(FMICallException):
+        inst.exitInitializationMode()
+    assert any("redistributed_both has none" in m[2] for m in inst.messages), inst.messages
+    inst.close()
+
+
+# Issue 42's class A: a decreasing slip-rate law (F_s / F = 3 over 0.04 m/s), variant 4 on a
+# 4 x 5 mesh. The full body runs it to 4 ms; the massless edge has no tangential mass, and its
+# substeps then need not have one solution at any size (benchmarks/results/reduced_edge.md).
+CLASS_A = {"nx": 4, "ny": 5, "mass_matrix": 4, "width": 0.02916, "height": 0.06328,
+           "density": 564.5, "mu": 4.641e10, "lambda": 8.020e11, "friction_coefficient": 0.786,
+           "static_friction_ratio": 2.997, "stribeck_velocity": 0.0397,
+           "internal_step": 2.574e-5, "foundation_velocity": 7.433, "top_displacement": -2.324e-4}
+
+
+def test_class_a_runs_with_the_tangential_mass_edge_and_the_massless_one_says_so(
+        model_description, unzipped):
+    """The tangential-mass edge (variant 4's default) runs the scene to 4 ms as the full body
+    does. The massless edge is warned against at initialization, naming reduced_edge =
+    tangential_mass; where its step fails, the error names it too, not 'reduce internal_step'."""
+    for edge in (0, 1):
+        inst, vr = start(model_description, unzipped, {**CLASS_A, "modes": 20, "reduced_edge": edge})
+        advice = "reduced_edge = tangential_mass keeps the edge's tangential mass"
+        warned = [m[2] for m in inst.messages if advice in m[2]]
+        inst.setReal([vr["top_displacement"], vr["foundation_velocity"]],
+                     [CLASS_A["top_displacement"], CLASS_A["foundation_velocity"]])
+        failed = None
+        try:
+            for k in range(10):
+                inst.doStep(k * 4e-4, 4e-4)
+        except FMICallException:
+            failed = [m[2] for m in inst.messages if "contact solve failed" in m[2]]
+        inst.close()
+        if edge == 0:
+            assert failed is None and not warned
+        else:
+            assert warned, inst.messages
+            assert failed is None or (failed and advice in failed[-1] and
+                                      "Reduce internal_step" not in failed[-1]), failed

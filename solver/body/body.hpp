@@ -67,6 +67,7 @@ public:
     virtual size_t operator_cache_size() const = 0;
     virtual int factorizations() const = 0;  // step operators built over the body's life
     virtual ContactSolverOptions& contact_options() = 0;
+    virtual const ContactSolver& contact_solver() const = 0;  // its counters, for profiles
     virtual int modes() const { return 0; }  // 0: the full body
     // What the step operator is ("factorized 4/dt^2 M + A" and the like), for the log.
     virtual const char* operator_name() const = 0;

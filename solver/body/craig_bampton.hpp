@@ -49,6 +49,7 @@ public:
     size_t operator_cache_size() const override { return 2; }
     int factorizations() const override { return operator_builds_; }
     ContactSolverOptions& contact_options() override { return options_; }
+    const ContactSolver& contact_solver() const override { return solver_; }
     const char* operator_name() const override {
         return "factorized the Craig-Bampton step matrix 4/dt^2 M_hat + A_hat";
     }

@@ -78,6 +78,7 @@ public:
     // The basis' sizes and set-up time, and whether a restart kept it.
     std::string summary() const override;
     ContactSolverOptions& contact_options() override { return options_; }
+    const ContactSolver& contact_solver() const override { return solver_; }
 
 private:
     struct StepOperators {

@@ -222,7 +222,7 @@ public:
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() override { return options_; }
-    const ContactSolver& contact_solver() const { return solver_; }
+    const ContactSolver& contact_solver() const override { return solver_; }
 
 private:
     struct Factor;

@@ -43,6 +43,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
                                Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
     const bool friction = p.has_friction();
+    ++residual_evaluations_;
     u_hat_.noalias() = p.W * lambda;
     u_hat_ += p.a;
     phi.resize(lambda.size());
@@ -440,6 +441,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
+        ++newton_iterations_;
         // The reduced Newton matrix is fixed by W and the node states: when the states of
         // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
         const bool reuse = !rate && p.revision != 0 && p.revision == lu_revision_ &&

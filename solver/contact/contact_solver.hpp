@@ -85,8 +85,11 @@ public:
                            Eigen::VectorXd& lambda);
     // Node states of the last solution (open / sticking / slipping).
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
-    // Newton matrices factored so far (the rest of the iterations reused one).
+    // Newton matrices factored so far (the rest of the iterations reused one), residuals
+    // evaluated (each a product with W) and Newton iterations, over the solver's life.
     long factorizations() const { return factorizations_; }
+    long residual_evaluations() const { return residual_evaluations_; }
+    long newton_iterations() const { return newton_iterations_; }
 
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
@@ -119,7 +122,7 @@ private:
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> pattern_, lu_pattern_;
     Eigen::VectorXd lu_friction_;  // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
-    long factorizations_ = 0;
+    long factorizations_ = 0, residual_evaluations_ = 0, newton_iterations_ = 0;
 };
 
 }  // namespace contactbody

@@ -54,6 +54,10 @@ public:
     virtual double top_position(const State& s) const = 0;
     virtual double top_velocity(const State& s) const = 0;
     virtual double contact_height(const State& s, int node) const = 0;
+    // Every contact node's u_y at once (the reduced body: one product with its basis' rows).
+    virtual void contact_heights(const State& s, Eigen::Ref<Eigen::VectorXd> out) const {
+        for (Eigen::Index i = 0; i < out.size(); ++i) out[i] = contact_height(s, static_cast<int>(i));
+    }
     // Moves the clamp (displacement control) at once to top with velocity rate, leaving the
     // rest of the body where it is; returns whether anything moved.
     virtual bool set_clamp(State& s, double top, double rate) const = 0;

@@ -271,6 +271,12 @@ double ReducedStepper::contact_height(const State& s, int node) const {
     return -(Bhat_.row(node).dot(s.u.head(size())) + Blift_[node] * s.u[size()]);
 }
 
+void ReducedStepper::contact_heights(const State& s, Eigen::Ref<Eigen::VectorXd> out) const {
+    const Eigen::Index nc = num_contact_nodes();
+    out.noalias() = -(Bhat_.topRows(nc) * s.u.head(size()));
+    out -= Blift_.head(nc) * s.u[size()];
+}
+
 bool ReducedStepper::set_clamp(State& s, double top, double rate) const {
     const Eigen::Index n = size();
     const bool moves = s.u[n + 1] != top || s.v[n + 1] != rate;
@@ -396,10 +402,17 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
                c * m_t_.dot(w_)) / ops.plate_schur;
         w_ -= c * w_t * ops.plate_coupling;
     }
-    contact_u_.noalias() = Bhat_ * z;
-    contact_u_ += Blift_ * lift_at;  // B u^k: (-u_y, u_x) of the contact nodes
-    contact_v_.noalias() = Bhat_ * zdot;
-    contact_v_ += Blift_ * lift_rate;
+    // B_hat is the substep's largest operand with W (about 1 MB each at nx = 160), and its
+    // products are bound by the memory they read: only the rows used are formed. The normal
+    // rows of B u^k (-u_y of the contact nodes: the gaps), the tangential rows of B v^k (the
+    // implicit-contact variants' slip origin), and B w.
+    const bool slip_origin_moves = disc_.contact_at_end_of_step && friction;
+    contact_u_.head(nc).noalias() = Bhat_.topRows(nc) * z;
+    contact_u_.head(nc) += Blift_.head(nc) * lift_at;
+    if (slip_origin_moves) {
+        contact_v_.tail(nc).noalias() = Bhat_.bottomRows(nc) * zdot;
+        contact_v_.tail(nc) += Blift_.tail(nc) * lift_rate;
+    }
     bw_.noalias() = Bhat_ * w_;
     bw_ += Blift_ * w_t;
 
@@ -425,8 +438,13 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
             w_ -= c * dw_t * ops.plate_coupling;
             w_t += dw_t;
         }
-        bw_.noalias() = Bhat_ * w_;
-        bw_ += Blift_ * w_t;
+        // B (w + dw) = a + W lambda (W = B K^-1 B^T with the plate's row): the solver's
+        // last product, at its solution. Without friction its tangential rows are formed.
+        bw_.head(unknowns) = solver_.displacements();
+        if (!friction) {
+            bw_.tail(nc).noalias() = Bhat_.bottomRows(nc) * w_;
+            bw_.tail(nc) += Blift_.tail(nc) * w_t;
+        }
     } else {
         s.lambda.setZero();
     }

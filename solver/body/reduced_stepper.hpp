@@ -60,6 +60,7 @@ public:
     double top_position(const State& s) const override { return s.u[size() + 1]; }
     double top_velocity(const State& s) const override { return s.v[size() + 1]; }
     double contact_height(const State& s, int node) const override;
+    void contact_heights(const State& s, Eigen::Ref<Eigen::VectorXd> out) const override;
     bool set_clamp(State& s, double top, double rate) const override;
     bool fits(const State& s) const override;
 

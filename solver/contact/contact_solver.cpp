@@ -7,11 +7,6 @@
 
 #include "text.hpp"
 
-extern "C" {
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda,
-             const int* ipiv, double* b, const int* ldb, int* info);
-}
 
 namespace contactbody {
 
@@ -123,8 +118,10 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
             for (Eigen::Index i = 0; i < n; ++i)
                 if (pattern_[i] == 1) reduced_.push_back(static_cast<int>(n + i));
         const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
-        // LAPACK on a buffer sized once for all m unknowns: the reduced size changes with the
-        // active set, and Eigen's LU would reallocate every time it does.
+        // Eigen's blocked LU (its kernel, on the leading k x k of a buffer sized once for all
+        // m unknowns: the reduced size changes with the active set, and PartialPivLU would
+        // reallocate every time it does). The reference LAPACK's dgetrf on reference BLAS was
+        // a quarter of a pressed substep at nx = 160 (benchmarks/results/contact_profile.md).
         if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
         for (Eigen::Index b = 0; b < k; ++b) {
             const int col = reduced_[b];
@@ -136,9 +133,11 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
         }
         if (k > 0) {
             pivots_.resize(static_cast<size_t>(m));
-            int rows = static_cast<int>(k), lda = static_cast<int>(m), info = 0;
-            dgetrf_(&rows, &rows, reduced_matrix_.data(), &lda, pivots_.data(), &info);
-            if (info != 0) {
+            int transpositions = 0;
+            const Eigen::Index zero_pivot =
+                Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
+                    k, k, reduced_matrix_.data(), m, pivots_.data(), transpositions);
+            if (zero_pivot >= 0) {
                 lu_revision_ = 0;
                 throw ContactSolveError("contact solver: singular Newton matrix");
             }
@@ -146,17 +145,24 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
     }
     const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     reduced_rhs_.resize(m);
+    // W explicit_ by its nonzero columns (open nodes' and slipping nodes' tangential ones:
+    // in sliding about half of W's).
+    explicit_product_.setZero(m);
+    for (Eigen::Index j = 0; j < m; ++j)
+        if (explicit_[j] != 0) explicit_product_.noalias() += explicit_[j] * p.W.col(j);
     for (Eigen::Index a = 0; a < k; ++a) {
         const int row = reduced_[a];
         const double target = row < n ? phi_[row] * p.W(row, row) : -phi_[row] * p.W(row, row);
-        reduced_rhs_[a] = target - p.W.row(row).dot(explicit_);
+        reduced_rhs_[a] = target - explicit_product_[row];
     }
     step_ = explicit_;
     if (k > 0) {
-        int rows = static_cast<int>(k), lda = static_cast<int>(m), one = 1, info = 0;
-        char no_transpose = 'N';
-        dgetrs_(&no_transpose, &rows, &one, reduced_matrix_.data(), &lda, pivots_.data(),
-                reduced_rhs_.data(), &rows, &info);
+        auto x = reduced_rhs_.head(k);
+        for (Eigen::Index a = 0; a < k; ++a) std::swap(x[a], x[pivots_[static_cast<size_t>(a)]]);
+        const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(
+            reduced_matrix_.data(), k, k, Eigen::OuterStride<>(m));
+        lu.triangularView<Eigen::UnitLower>().solveInPlace(x);
+        lu.triangularView<Eigen::Upper>().solveInPlace(x);
         for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
     }
     if (friction)

@@ -83,6 +83,8 @@ public:
     // unspecified).
     ContactSolveInfo solve(const ContactProblem& problem, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda);
+    // u_hat = a + W lambda at the last solution: the solver's last product with W.
+    const Eigen::VectorXd& displacements() const { return u_hat_; }
     // Node states of the last solution (open / sticking / slipping).
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     // Newton matrices factored so far (the rest of the iterations reused one), residuals
@@ -110,7 +112,7 @@ private:
     }
 
     // Workspace kept between calls so that steady stepping does not reallocate.
-    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, start_;
+    Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, explicit_product_, start_;
     Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k

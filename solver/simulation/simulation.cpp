@@ -318,12 +318,12 @@ void Simulation::update_edge(int substeps) {
     const Mesh& mesh = body_->discretization().mesh;
     const ContactSnapshot& c = body_->last_contact();
     const Eigen::Index nc = edge_.x.size();
+    body_->contact_heights(state_, edge_.gap);
     for (Eigen::Index i = 0; i < nc; ++i) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
-        edge_.gap[i] = body_->parameters().initial_gap + mesh.contact_heights[i] +
-                       body_->contact_height(state_, static_cast<int>(i));
+        edge_.gap[i] += body_->parameters().initial_gap + mesh.contact_heights[i];
     }
     edge_.slip_velocity = c.slip_velocity;
     edge_.state = c.state;

@@ -48,7 +48,7 @@ def scenes():
         variant, dt = key.split("/")
         out[f"figs 7-8 {key}"] = dict(stop_time=0.02, output_interval=8e-5, start_values={
             "mass_matrix": int(variant), "internal_step": float(dt), "nx": 20, "ny": 20,
-            "friction_coefficient": 1.2})
+            "friction_coefficient": 1.2, "max_energy_ratio": 0})
     out["paper"] = dict(stop_time=0.02, output_interval=1e-4, start_values={})
     out["metis"] = dict(stop_time=3e-4, output_interval=1e-4,
                         start_values={"nx": 120, "ny": 120, "friction_coefficient": 0.3})

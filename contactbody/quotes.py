@@ -49,7 +49,7 @@ TABLE = re.compile(r"<!-- rows of (?P<file>[\w./-]+\.(?:md|txt)) -->\n"
 
 def documents():
     """Every Markdown file of the repository outside build trees and environments."""
-    skip = {".venv", "build", "third_party", ".git", "dist"}
+    skip = {".venv", "build", "build-before", "third_party", ".git", "dist"}
     return sorted(p for p in ROOT.rglob("*.md")
                   if not skip & set(p.relative_to(ROOT).parts))
 

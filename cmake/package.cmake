@@ -114,9 +114,8 @@ endif()
 
 # add_fmu(NAME GENERATOR target [GENERATOR_ARGS args] BINARIES platform file ...
 #         LICENSES files LICENSE_NAMES names): one .fmu in the build folder. No sources/: a
-# source FMU that an importer could compile would need Eigen, the SuiteSparse subset and the
-# LAPACK routines' C form that f2c makes at build time, which fmpy's compile step cannot
-# build, and FMI 3.0 ties sources/ to a buildDescription.xml; the sources are this repository
+# source FMU that an importer could compile would need Eigen (C++) and the SuiteSparse subset,
+# which fmpy's compile step (C only) cannot build, and FMI 3.0 ties sources/ to a buildDescription.xml; the sources are this repository
 # (docs/building.md).
 function(add_fmu name)
   cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
@@ -145,19 +144,19 @@ function(add_fmu name)
   add_custom_target(${name}_fmu ALL DEPENDS ${file})
 endfunction()
 
-# ContactBody links SuiteSparse, METIS, reference LAPACK, Eigen and Spectra in: their licences too.
+# ContactBody links SuiteSparse, METIS, Eigen and Spectra in: their licences too.
 set(SS ${PROJECT_SOURCE_DIR}/third_party/SuiteSparse-5.12.0)
 set(contactbody_licenses ${licenses}
     ${SS}/CHOLMOD/Doc/License.txt ${SS}/CHOLMOD/Core/lesser.txt ${SS}/AMD/Doc/License.txt
     ${SS}/CAMD/Doc/License.txt ${SS}/COLAMD/Doc/License.txt ${SS}/CCOLAMD/Doc/License.txt
     ${SS}/LICENSE.txt ${SS}/metis-5.1.0/LICENSE.txt
-    ${PROJECT_SOURCE_DIR}/third_party/lapack-3.11.0/LICENSE /usr/share/common-licenses/MPL-2.0
+    /usr/share/common-licenses/MPL-2.0
     ${PROJECT_SOURCE_DIR}/third_party/spectra-1.0.1/LICENSE
     ${PROJECT_SOURCE_DIR}/third_party/spectra-1.0.1/COPYRIGHT
     ${PROJECT_SOURCE_DIR}/third_party/README.md)
 set(contactbody_license_names ${license_names}
     CHOLMOD-License.txt CHOLMOD-LGPL-2.1.txt AMD-License.txt CAMD-License.txt COLAMD-License.txt
-    CCOLAMD-License.txt SuiteSparse-LICENSE.txt METIS-LICENSE.txt LAPACK-LICENSE.txt
+    CCOLAMD-License.txt SuiteSparse-LICENSE.txt METIS-LICENSE.txt
     Eigen-MPL-2.0.txt Spectra-MPL-2.0.txt Spectra-COPYRIGHT.txt README.md)
 add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_binaries}
         LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}

@@ -176,7 +176,7 @@ def test_fmu_is_small_and_carries_the_licences():
         licences = {pathlib.PurePosixPath(n).name for n in z.namelist()
                     if n.startswith("documentation/licenses/")}
     for name in ("LICENSE", "CHOLMOD-License.txt", "CHOLMOD-LGPL-2.1.txt", "METIS-LICENSE.txt",
-                 "LAPACK-LICENSE.txt", "Eigen-MPL-2.0.txt", "libcxx-LICENSE.txt",
+                 "Eigen-MPL-2.0.txt", "libcxx-LICENSE.txt",
                  "mingw-w64-copyright.txt", "AMD-License.txt", "CAMD-License.txt",
                  "COLAMD-License.txt", "CCOLAMD-License.txt", "Spectra-MPL-2.0.txt",
                  "Spectra-COPYRIGHT.txt"):
@@ -185,9 +185,8 @@ def test_fmu_is_small_and_carries_the_licences():
 
 @pytest.mark.parametrize("name", ["ContactBody", "ContactBody_fmi3", "BeltDrive", "Press"])
 def test_no_fmu_carries_sources(name):
-    """No sources/ (docs/building.md): a complete source FMU would need Eigen (C++),
-    SuiteSparse and the LAPACK routines that f2c translates at build time, which an importer's
-    C compile cannot build, and FMI 3.0 ties sources/ to
+    """No sources/ (docs/building.md): a complete source FMU would need Eigen (C++) and
+    SuiteSparse, which an importer's C compile cannot build, and FMI 3.0 ties sources/ to
     a buildDescription.xml; an incomplete sources/ promised what it could not do."""
     with zipfile.ZipFile(FMU.with_name(f"{name}.fmu")) as z:
         assert not [n for n in z.namelist() if n.startswith("sources/")]
@@ -223,7 +222,7 @@ OUTPUTS = outputs_of(ROOT / "modelDescription" / "modelDescription.xml")
 
 
 def test_paper_scene_equals_the_native_build_bit_for_bit(fmu_path):
-    """The portable toolchain (zig's clang, vendored SuiteSparse and LAPACK) computes the same
+    """The portable toolchain (zig's clang, vendored SuiteSparse) computes the same
     bits as the machine's gcc."""
     for scene in SCENES:
         expected = json.loads(NATIVE.read_text())[scene]

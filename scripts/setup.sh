@@ -4,9 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(build-essential cmake ninja-build f2c libeigen3-dev libgtest-dev valgrind
+packages=(build-essential cmake ninja-build libeigen3-dev libgtest-dev valgrind
           python3 python3-venv python3-dev
-          gfortran  # only python_tests/test_lapack_c.py: the LU's C form against its Fortran
           # only benchmarks/portable_benchmark.py's build of the FMU before the portable one
           libsuitesparse-dev patchelf
           python3-getfem  # the work-precision benchmark's GetFEM series and its test

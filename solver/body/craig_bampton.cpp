@@ -9,19 +9,6 @@
 
 namespace contactbody {
 
-namespace {
-
-// The columns `positions` of an identity of n rows: a sparse selection.
-SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
-    std::vector<Eigen::Triplet<double>> t;
-    for (size_t j = 0; j < positions.size(); ++j) t.emplace_back(positions[j], static_cast<int>(j), 1.0);
-    SparseMatrix P(n, static_cast<Eigen::Index>(positions.size()));
-    P.setFromTriplets(t.begin(), t.end());
-    return P;
-}
-
-}  // namespace
-
 CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int modes)
     : params_(params), disc_(discretize(params)), modes_(modes) {
     const auto start = std::chrono::steady_clock::now();

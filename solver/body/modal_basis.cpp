@@ -53,7 +53,8 @@ ContactRows contact_rows(const Discretization& d, bool hold_tangential) {
     return b;
 }
 
-// The columns `positions` of an identity of n rows: a sparse selection.
+}  // namespace
+
 SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
     std::vector<Eigen::Triplet<double>> t;
     for (size_t j = 0; j < positions.size(); ++j) t.emplace_back(positions[j], static_cast<int>(j), 1.0);
@@ -61,8 +62,6 @@ SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
     P.setFromTriplets(t.begin(), t.end());
     return P;
 }
-
-}  // namespace
 
 int finite_mode_count(const Discretization& d, bool hold_tangential) {
     int massless = 0;

@@ -64,6 +64,9 @@ struct LowestModes {
 };
 LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit = 400);
 
+// The columns `positions` of an identity of n rows: a sparse selection (P^T A P picks a block).
+SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions);
+
 // Free dofs minus those without mass: the number of finite modes; with the contact x dofs held,
 // those of the rest (the modes build_modal_basis can compute).
 int finite_mode_count(const Discretization& d, bool hold_tangential = false);

@@ -224,6 +224,52 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
     EXPECT_GT(sticking, 0);
 }
 
+// Solves that follow each other as in a substep sequence (one W, the load drifting so that
+// a few nodes change state between solves): the solver that updates its factorization
+// (update_factorization) reaches the same multipliers as the one that refactors, in as many
+// Newton iterations, with most of its factorizations replaced by updates. W is scaled as a
+// compliance (1e-9), so that the update cannot lean on entries of order one.
+TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
+    const int n = 40;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    Eigen::MatrixXd R(2 * n, 2 * n);
+    for (int i = 0; i < 2 * n; ++i)
+        for (int j = 0; j < 2 * n; ++j) R(i, j) = u(rng);
+    ContactProblem p;
+    const double scale = 1e-9;
+    p.W = scale * (0.02 * R * R.transpose() + Eigen::MatrixXd::Identity(2 * n, 2 * n));
+    p.revision = ContactProblem::next_revision();
+    p.gap_limit = Eigen::VectorXd::Zero(n);
+    p.slip_origin = Eigen::VectorXd::Zero(n);
+    p.friction = Eigen::VectorXd::Constant(n, 0.3);
+    p.a.resize(2 * n);
+    Eigen::VectorXd phase(n);
+    for (int i = 0; i < n; ++i) phase[i] = 3 * u(rng);
+
+    ContactSolver refactoring, updating;
+    ContactSolverOptions refactor_options{1e-12, 100}, update_options{1e-12, 100};
+    update_options.update_factorization = true;
+    Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda;
+    long a_iterations = 0, b_iterations = 0;
+    for (int step = 0; step < 200; ++step) {
+        const double t = 0.02 * step;
+        for (int i = 0; i < n; ++i) {
+            p.a[i] = scale * (0.6 * std::sin(t + phase[i]) + 0.3);     // pressed, or lifting off
+            p.a[n + i] = scale * 0.3 * std::cos(1.3 * t + 2 * phase[i]);  // sticking or slipping
+        }
+        a_iterations += refactoring.solve(p, refactor_options, a_lambda).iterations;
+        b_iterations += updating.solve(p, update_options, b_lambda).iterations;
+        ASSERT_LE((a_lambda - b_lambda).lpNorm<Eigen::Infinity>(),
+                  1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
+            << "step " << step;
+    }
+    EXPECT_EQ(a_iterations, b_iterations);
+    EXPECT_EQ(refactoring.factorization_updates(), 0);
+    EXPECT_GT(updating.factorization_updates(), 20);
+    EXPECT_LT(updating.factorizations(), refactoring.factorizations() / 3);
+}
+
 // rate_solutions() finds the solutions directly (the slip equation's roots); with no rate
 // dependence it must give the paper's closed forms S1-S4, load by load, for the three mass
 // distributions of Figs. 3-4.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "text.hpp"
@@ -110,6 +111,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     rhs_.resize(n);
     w_.resize(n);
     contact_u_.resize(2 * nc);
+    normal_u_.resize(nc);
+    normal_u_at_.setConstant(n + 1, std::numeric_limits<double>::quiet_NaN());  // matches no state
     contact_v_.resize(2 * nc);
     bw_.resize(2 * nc);
     du_.resize(n);
@@ -124,6 +127,8 @@ void ReducedStepper::start_run() {
     damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
     options_ = ContactSolverOptions{};
     options_.tolerance = params_.contact_tolerance;
+    // Its substep's cost is the contact solve's (benchmarks/results/contact_profile.md).
+    options_.update_factorization = true;
     solver_ = ContactSolver{};
     snapshot_ = ContactSnapshot{};
     problem_dt_ = -1;
@@ -271,10 +276,19 @@ double ReducedStepper::contact_height(const State& s, int node) const {
     return -(Bhat_.row(node).dot(s.u.head(size())) + Blift_[node] * s.u[size()]);
 }
 
+const Eigen::VectorXd& ReducedStepper::normal_displacements(const State& s) const {
+    const auto at = s.u.head(size() + 1);  // z and the lift's coordinate
+    if (normal_u_at_.size() != at.size() || normal_u_at_ != at) {
+        const Eigen::Index nc = num_contact_nodes();
+        normal_u_.noalias() = Bhat_.topRows(nc) * at.head(size());
+        normal_u_ += Blift_.head(nc) * at[size()];
+        normal_u_at_ = at;
+    }
+    return normal_u_;
+}
+
 void ReducedStepper::contact_heights(const State& s, Eigen::Ref<Eigen::VectorXd> out) const {
-    const Eigen::Index nc = num_contact_nodes();
-    out.noalias() = -(Bhat_.topRows(nc) * s.u.head(size()));
-    out -= Blift_.head(nc) * s.u[size()];
+    out = -normal_displacements(s);
 }
 
 bool ReducedStepper::set_clamp(State& s, double top, double rate) const {
@@ -407,8 +421,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // rows of B u^k (-u_y of the contact nodes: the gaps), the tangential rows of B v^k (the
     // implicit-contact variants' slip origin), and B w.
     const bool slip_origin_moves = disc_.contact_at_end_of_step && friction;
-    contact_u_.head(nc).noalias() = Bhat_.topRows(nc) * z;
-    contact_u_.head(nc) += Blift_.head(nc) * lift_at;
+    contact_u_.head(nc) = normal_displacements(s);
     if (slip_origin_moves) {
         contact_v_.tail(nc).noalias() = Bhat_.bottomRows(nc) * zdot;
         contact_v_.tail(nc) += Blift_.tail(nc) * lift_rate;

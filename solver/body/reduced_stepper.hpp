@@ -148,6 +148,11 @@ private:
     ContactProblem problem_;
     double problem_dt_ = -1;
     bool problem_friction_ = false;
+    // B_N u at a state (the normal rows at the contact nodes: minus the heights), kept with
+    // the z and lift it was formed at: the substep's start and the step's edge output ask
+    // for the same one, and B_hat's rows are a memory-bound read.
+    const Eigen::VectorXd& normal_displacements(const State& s) const;
+    mutable Eigen::VectorXd normal_u_, normal_u_at_;
     // Workspace, sized once: the substep allocates nothing.
     Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_, contact_force_, dw_;
     mutable Eigen::VectorXd tail_, form_;  // solve_step's, the X block's forms'

@@ -38,9 +38,17 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
                                Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
     const bool friction = p.has_friction();
-    ++residual_evaluations_;
-    u_hat_.noalias() = p.W * lambda;
-    u_hat_ += p.a;
+    // W lambda: a substep's first residual is at the last solve's multipliers (the warm
+    // start), whose product the last residual formed; it is kept, not formed again.
+    const bool known = p.revision != 0 && p.revision == product_revision_ &&
+                       lambda.size() == product_lambda_.size() && lambda == product_lambda_;
+    if (!known) {
+        ++residual_evaluations_;
+        product_.noalias() = p.W * lambda;
+        product_lambda_ = lambda;
+        product_revision_ = p.revision;
+    }
+    u_hat_ = product_ + p.a;
     phi.resize(lambda.size());
     status_.resize(n);
     pattern_.resize(n);
@@ -96,8 +104,11 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
 //   slipping:  delta_T = -phi_T + sf (phi_N - delta_N),  sf = +-F_i
 // and the remaining rows (N of active nodes, T of sticking ones), divided by r, read
 //   W(N_i, :) delta = phi_N / r_N,   W(T_i, :) delta = -phi_T / r_T.
-// The reduced matrix depends only on W, the pattern and F, so its LU is reused while they hold.
-void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
+// The reduced matrix depends only on W, the pattern and F, so its LU is reused while they hold,
+// and (options.update_factorization) updated while few nodes have changed state since.
+void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolverOptions& options,
+                                     Direction how) {
+    const bool reuse = how != Direction::factor;
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();
     explicit_.setZero(m);  // the delta_R-independent part of delta
@@ -142,33 +153,165 @@ void ContactSolver::newton_direction(const ContactProblem& p, bool reuse) {
                 throw ContactSolveError("contact solver: singular Newton matrix");
             }
         }
+        ++base_;  // an update of the last factorization no longer applies
+        if (options.update_factorization && update_rows_.cols() != m) {
+            // Sized once, for the largest update: updating allocates nothing.
+            update_rows_.resize(max_update_unknowns, m);
+            update_z_.resize(m, 2 * max_update_unknowns);
+            capacitance_.resize(2 * max_update_unknowns, 2 * max_update_unknowns);
+            capacitance_pivots_.resize(static_cast<size_t>(2 * max_update_unknowns));
+            gathered_.resize(m, 2 * max_update_unknowns);
+            in_changed_.assign(static_cast<size_t>(m), false);
+            update_x_.resize(m);
+            update_t_.resize(2 * max_update_unknowns);
+            update_pattern_.resize(n);
+            changed_.reserve(static_cast<size_t>(m));
+        }
     }
-    const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     reduced_rhs_.resize(m);
+    const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     // W explicit_ by its nonzero columns (open nodes' and slipping nodes' tangential ones:
-    // in sliding about half of W's).
+    // in sliding about half of W's), in the reduced system's rows only: the normal rows,
+    // and the tangential ones when a node sticks (reduced_ lists the normal rows first).
+    const bool sticking = friction && (pattern_.array() == 1).any();
+    const Eigen::Index rows = sticking ? m : n;
     explicit_product_.setZero(m);
     for (Eigen::Index j = 0; j < m; ++j)
-        if (explicit_[j] != 0) explicit_product_.noalias() += explicit_[j] * p.W.col(j);
-    for (Eigen::Index a = 0; a < k; ++a) {
-        const int row = reduced_[a];
-        const double target = row < n ? phi_[row] * p.W(row, row) : -phi_[row] * p.W(row, row);
-        reduced_rhs_[a] = target - explicit_product_[row];
-    }
-    step_ = explicit_;
-    if (k > 0) {
-        auto x = reduced_rhs_.head(k);
-        for (Eigen::Index a = 0; a < k; ++a) std::swap(x[a], x[pivots_[static_cast<size_t>(a)]]);
-        const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(
-            reduced_matrix_.data(), k, k, Eigen::OuterStride<>(m));
-        lu.triangularView<Eigen::UnitLower>().solveInPlace(x);
-        lu.triangularView<Eigen::Upper>().solveInPlace(x);
-        for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
+        if (explicit_[j] != 0) explicit_product_.head(rows).noalias() += explicit_[j] * p.W.col(j).head(rows);
+    if (how == Direction::update) {
+        updated_solve(p);
+    } else {
+        for (Eigen::Index a = 0; a < k; ++a) {
+            const int row = reduced_[a];
+            reduced_rhs_[a] = newton_target(p, row) - explicit_product_[row];
+        }
+        step_ = explicit_;
+        if (k > 0) {
+            auto x = reduced_rhs_.head(k);
+            for (Eigen::Index a = 0; a < k; ++a) std::swap(x[a], x[pivots_[static_cast<size_t>(a)]]);
+            const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(
+                reduced_matrix_.data(), k, k, Eigen::OuterStride<>(m));
+            lu.triangularView<Eigen::UnitLower>().solveInPlace(x);
+            lu.triangularView<Eigen::Upper>().solveInPlace(x);
+            for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
+        }
     }
     if (friction)
         for (Eigen::Index i = 0; i < n; ++i)
             if (pattern_[i] == 2 || pattern_[i] == -2)
                 step_[n + i] -= slip_sign(p, i) * step_[i];
+}
+
+namespace {
+// Whether unknown j (N rows first, then T) is in the reduced Newton system of pattern P.
+template <class Pattern>
+bool in_system(const Pattern& P, Eigen::Index n, Eigen::Index j) {
+    return j < n ? P[j] != 0 : P[j - n] == 1;
+}
+}  // namespace
+
+// The Newton matrix of pattern P as an m x m matrix: the reduced system's entries on its
+// unknowns, W's diagonal on the others (their steps are explicit; W's scale, so that the
+// update below does not mix entries of W with ones).
+double ContactSolver::newton_entry(const ContactProblem& p,
+                                   const Eigen::Matrix<signed char, Eigen::Dynamic, 1>& P,
+                                   Eigen::Index a, Eigen::Index b) const {
+    const Eigen::Index n = p.gap_limit.size();
+    if (!in_system(P, n, b)) return a == b ? p.W(b, b) : 0.0;
+    if (!in_system(P, n, a)) return 0.0;
+    if (b < n && (P[b] == 2 || P[b] == -2)) {
+        const double sf = P[b] > 0 ? p.friction[b] : -p.friction[b];
+        return p.W(a, b) - sf * p.W(a, n + b);
+    }
+    return p.W(a, b);
+}
+
+// x <- J0^-1 x for the factored pattern's m x m Newton matrix J0 (columns of x).
+void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x) {
+    const Eigen::Index m = reduced_matrix_.rows(), k = static_cast<Eigen::Index>(reduced_.size());
+    const Eigen::Index n = p.gap_limit.size();
+    for (Eigen::Index j = 0; j < m; ++j)
+        if (!in_system(lu_pattern_, n, j)) x.row(j) /= p.W(j, j);
+    if (k == 0) return;
+    auto g = gathered_.topLeftCorner(k, x.cols());
+    for (Eigen::Index a = 0; a < k; ++a) g.row(a) = x.row(reduced_[static_cast<size_t>(a)]);
+    for (Eigen::Index a = 0; a < k; ++a) g.row(a).swap(g.row(pivots_[static_cast<size_t>(a)]));
+    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k,
+                                                                        k, Eigen::OuterStride<>(m));
+    lu.triangularView<Eigen::UnitLower>().solveInPlace(g);
+    lu.triangularView<Eigen::Upper>().solveInPlace(g);
+    for (Eigen::Index a = 0; a < k; ++a) x.row(reduced_[static_cast<size_t>(a)]) = g.row(a);
+}
+
+// The Newton matrix J of this pattern as the factored one's J0 plus a low-rank change, for
+// Woodbury's formula J^-1 = J0^-1 - Z Cap^-1 V^T J0^-1, Z = J0^-1 U, Cap = I + V^T Z. Only
+// the rows and columns of the c unknowns C of the nodes whose state changed differ:
+// J - J0 = E_C D(C, :) + D(~C, C) E_C^T = U V^T, U = [E_C, D(~C, C)], V^T = [D(C, :); E_C^T].
+// False where a refactorization is cheaper (c > k / 6: 4 c k^2 solves against k^3 / 1.5)
+// or the capacitance matrix is singular.
+bool ContactSolver::prepare_update(const ContactProblem& p) {
+    const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
+    const bool friction = p.has_friction();
+    if (update_rows_.cols() != m) return false;  // factored without the update's buffers
+    if (update_base_ == base_ && update_pattern_.size() == pattern_.size() && update_pattern_ == pattern_)
+        return true;
+    changed_.clear();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (pattern_[i] == lu_pattern_[i]) continue;
+        changed_.push_back(static_cast<int>(i));
+        if (friction) changed_.push_back(static_cast<int>(n + i));
+    }
+    const Eigen::Index c = static_cast<Eigen::Index>(changed_.size());
+    const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
+    if (c > max_update_unknowns || 6 * c > k) return false;
+    for (int j : changed_) in_changed_[static_cast<size_t>(j)] = true;
+    auto rows = update_rows_.topRows(c);
+    auto z = update_z_.leftCols(2 * c);
+    z.setZero();
+    for (Eigen::Index i = 0; i < c; ++i) {
+        const Eigen::Index j = changed_[static_cast<size_t>(i)];
+        z(j, i) = 1;  // E_C
+        for (Eigen::Index b = 0; b < m; ++b)
+            rows(i, b) = newton_entry(p, pattern_, j, b) - newton_entry(p, lu_pattern_, j, b);
+        for (Eigen::Index a = 0; a < m; ++a)
+            if (!in_changed_[static_cast<size_t>(a)])
+                z(a, c + i) = newton_entry(p, pattern_, a, j) - newton_entry(p, lu_pattern_, a, j);
+    }
+    for (int j : changed_) in_changed_[static_cast<size_t>(j)] = false;
+    base_solve(p, z);
+    const Eigen::Index r = 2 * c;
+    auto cap = capacitance_.topLeftCorner(r, r);
+    cap.topRows(c).noalias() = rows * z;
+    for (Eigen::Index i = 0; i < c; ++i) cap.row(c + i) = z.row(changed_[static_cast<size_t>(i)]);
+    cap.diagonal().array() += 1;
+    int transpositions = 0;
+    const Eigen::Index zero_pivot = Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
+        r, r, capacitance_.data(), capacitance_.rows(), capacitance_pivots_.data(), transpositions);
+    if (zero_pivot >= 0) return false;
+    update_base_ = base_;
+    update_pattern_ = pattern_;
+    return true;
+}
+
+// The Newton step on this pattern's system by the prepared update (prepare_update).
+void ContactSolver::updated_solve(const ContactProblem& p) {
+    const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
+    const Eigen::Index c = static_cast<Eigen::Index>(changed_.size()), r = 2 * c;
+    update_x_.setZero();
+    for (Eigen::Index j = 0; j < m; ++j)
+        if (in_system(pattern_, n, j)) update_x_[j] = newton_target(p, j) - explicit_product_[j];
+    base_solve(p, update_x_);
+    auto t = update_t_.head(r);
+    t.head(c).noalias() = update_rows_.topRows(c) * update_x_;
+    for (Eigen::Index i = 0; i < c; ++i) t[c + i] = update_x_[changed_[static_cast<size_t>(i)]];
+    for (Eigen::Index a = 0; a < r; ++a) std::swap(t[a], t[capacitance_pivots_[static_cast<size_t>(a)]]);
+    const auto cap = capacitance_.topLeftCorner(r, r);
+    cap.triangularView<Eigen::UnitLower>().solveInPlace(t);
+    cap.triangularView<Eigen::Upper>().solveInPlace(t);
+    update_x_.noalias() -= update_z_.leftCols(r) * t;
+    step_ = explicit_;
+    for (Eigen::Index j = 0; j < m; ++j)
+        if (in_system(pattern_, n, j)) step_[j] = update_x_[j];
 }
 
 // J delta = -phi with every row of J, for a slip-rate law. Rows as in residual():
@@ -450,15 +593,20 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         ++newton_iterations_;
         // The reduced Newton matrix is fixed by W and the node states: when the states of
         // the last solve recur, its LU is reused (O(m^2) per iteration instead of O(m^3)).
-        const bool reuse = !rate && p.revision != 0 && p.revision == lu_revision_ &&
-                           pattern_.size() == lu_pattern_.size() && pattern_ == lu_pattern_ &&
-                           p.friction.size() == lu_friction_.size() && p.friction == lu_friction_;
+        // With few changed nodes (options.update_factorization) it is updated instead.
+        const bool factored = !rate && p.revision != 0 && p.revision == lu_revision_ &&
+                              pattern_.size() == lu_pattern_.size() &&
+                              p.friction.size() == lu_friction_.size() && p.friction == lu_friction_;
+        const bool same = factored && pattern_ == lu_pattern_;
+        const bool update = factored && !same && options.update_factorization && prepare_update(p);
+        const bool reuse = same || update;
         if (rate) {
             lu_revision_ = 0;  // the buffer now holds another matrix
             full_newton_direction(p);
         } else {
-            newton_direction(p, reuse);
+            newton_direction(p, options, same ? Direction::reuse : update ? Direction::update : Direction::factor);
         }
+        if (update) ++updates_;
         if (!reuse && !rate) {
             lu_pattern_ = pattern_;
             lu_friction_ = p.friction;
@@ -480,6 +628,9 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit ||
                         res <= options.tolerance;
         }
+        // An updated direction that needed a shorter step may have lost accuracy to a badly
+        // conditioned update: the next iteration refactors.
+        if (update && alpha < 1) lu_revision_ = 0;
         if (decreased) {  // the residual at the accepted point is the trial's
             lambda.swap(trial_);
             phi_.swap(trial_phi_);

@@ -61,6 +61,11 @@ struct ContactSolverOptions {
     double tolerance = 1e-10;  // on the Alart-Curnier residual, relative to max |lambda|
     int max_iterations = 100;
     int max_sweeps = 1000;     // of the Gauss-Seidel fallback (which also stops on stagnation)
+    // When a few nodes change state, solve the new Newton matrix by a low-rank update of the
+    // last factorization (Woodbury) instead of refactoring it: fewer operations, other last
+    // bits. The reduced body takes it; the full body keeps its bits (its substep's cost is
+    // elsewhere).
+    bool update_factorization = false;
 };
 
 struct ContactSolveInfo {
@@ -88,8 +93,10 @@ public:
     // Node states of the last solution (open / sticking / slipping).
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     // Newton matrices factored so far (the rest of the iterations reused one), residuals
-    // evaluated (each a product with W) and Newton iterations, over the solver's life.
+    // evaluated with a product by W (a warm start at the last solution reuses its product)
+    // and Newton iterations, over the solver's life.
     long factorizations() const { return factorizations_; }
+    long factorization_updates() const { return updates_; }  // Newton matrices solved by an update
     long residual_evaluations() const { return residual_evaluations_; }
     long newton_iterations() const { return newton_iterations_; }
 
@@ -102,7 +109,18 @@ private:
                       Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
-    void newton_direction(const ContactProblem& p, bool reuse);
+    enum class Direction { reuse, update, factor };  // the last factorization, updated, or anew
+    void newton_direction(const ContactProblem& p, const ContactSolverOptions& options, Direction how);
+    // The right-hand side of the reduced Newton system's row j.
+    double newton_target(const ContactProblem& p, Eigen::Index j) const {
+        const double w = p.W(j, j);
+        return j < p.gap_limit.size() ? phi_[j] * w : -phi_[j] * w;
+    }
+    double newton_entry(const ContactProblem& p, const Eigen::Matrix<signed char, Eigen::Dynamic, 1>& P,
+                        Eigen::Index a, Eigen::Index b) const;
+    void base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x);
+    bool prepare_update(const ContactProblem& p);
+    void updated_solve(const ContactProblem& p);
     // The full generalized Jacobian, for a slip-rate law: a slipping node's friction then
     // depends on its own tangential motion, which the reduced system eliminates.
     void full_newton_direction(const ContactProblem& p);
@@ -113,6 +131,9 @@ private:
 
     // Workspace kept between calls so that steady stepping does not reallocate.
     Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, explicit_product_, start_;
+    // The last product W lambda, the lambda and the W (revision) it was formed for.
+    Eigen::VectorXd product_, product_lambda_;
+    std::uint64_t product_revision_ = 0;
     Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
@@ -124,7 +145,17 @@ private:
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> pattern_, lu_pattern_;
     Eigen::VectorXd lu_friction_;  // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
-    long factorizations_ = 0, residual_evaluations_ = 0, newton_iterations_ = 0;
+    // The update (prepare_update): the changed unknowns C, the rows D(C, :), Z = J0^-1 U and
+    // the capacitance matrix's LU, for the pattern and factorization (base_) they were built at.
+    static constexpr Eigen::Index max_update_unknowns = 32;
+    std::vector<int> changed_;
+    std::vector<bool> in_changed_;
+    Eigen::MatrixXd update_rows_, update_z_, capacitance_, gathered_;
+    std::vector<int> capacitance_pivots_;
+    Eigen::VectorXd update_x_, update_t_;
+    Eigen::Matrix<signed char, Eigen::Dynamic, 1> update_pattern_;
+    long base_ = 0, update_base_ = -1;
+    long factorizations_ = 0, residual_evaluations_ = 0, newton_iterations_ = 0, updates_ = 0;
 };
 
 }  // namespace contactbody

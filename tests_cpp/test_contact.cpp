@@ -230,7 +230,7 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
 // Newton iterations, with most of its factorizations replaced by updates. W is scaled as a
 // compliance (1e-9), so that the update cannot lean on entries of order one.
 TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
-    const int n = 40;
+    const int n = 160;
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1, 1);
     Eigen::MatrixXd R(2 * n, 2 * n);
@@ -253,7 +253,7 @@ TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
     Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda;
     long a_iterations = 0, b_iterations = 0;
     for (int step = 0; step < 200; ++step) {
-        const double t = 0.02 * step;
+        const double t = 0.004 * step;
         for (int i = 0; i < n; ++i) {
             p.a[i] = scale * (0.6 * std::sin(t + phase[i]) + 0.3);     // pressed, or lifting off
             p.a[n + i] = scale * 0.3 * std::cos(1.3 * t + 2 * phase[i]);  // sticking or slipping
@@ -266,7 +266,7 @@ TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
     }
     EXPECT_EQ(a_iterations, b_iterations);
     EXPECT_EQ(refactoring.factorization_updates(), 0);
-    EXPECT_GT(updating.factorization_updates(), 20);
+    EXPECT_GT(updating.factorization_updates(), 100);  // measured: 95 against 21 and 176 updates
     EXPECT_LT(updating.factorizations(), refactoring.factorizations() / 3);
 }
 

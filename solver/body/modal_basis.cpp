@@ -210,10 +210,22 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
     std::vector<Eigen::Index> kept;
     for (Eigen::Index j = 0; j < g.eigenvalues().size(); ++j)
         if (g.eigenvalues()[j] > 1e-9 * flexibility) kept.push_back(j);
-    Eigen::MatrixXd residual(ni, static_cast<Eigen::Index>(kept.size()));
+    // residual = psi V g^-1/2 (kept columns), rotated (Q orthogonal: still A-orthonormal, still
+    // massless) so that its rows at the contact unknowns, B residual, are lower trapezoidal:
+    // with (B psi V g^-1/2)^T = Q U, B psi V g^-1/2 Q = U^T. The reduced substep reads these
+    // rows at every step, and then only their lower part. Formed as psi (V g^-1/2 Q): one
+    // product with the tall psi.
+    Eigen::MatrixXd coefficients(nb, static_cast<Eigen::Index>(kept.size()));
     for (size_t j = 0; j < kept.size(); ++j)
-        residual.col(static_cast<Eigen::Index>(j)) =
-            psi * g.eigenvectors().col(kept[j]) / std::sqrt(g.eigenvalues()[kept[j]]);
+        coefficients.col(static_cast<Eigen::Index>(j)) =
+            g.eigenvectors().col(kept[j]) / std::sqrt(g.eigenvalues()[kept[j]]);
+    if (coefficients.cols() > 0) {
+        const Eigen::HouseholderQR<Eigen::MatrixXd> qr((G * coefficients).transpose());
+        coefficients = coefficients * qr.householderQ();
+    }
+    Eigen::MatrixXd residual = psi * coefficients;
+    for (Eigen::Index r = 0; r < nb && r + 1 < residual.cols(); ++r)  // round-off above U^T's diagonal
+        residual.row(b.position[static_cast<size_t>(r)]).tail(residual.cols() - r - 1).setZero();
     basis.modes = expand(modes_rest);
     basis.residual = expand(residual);
 

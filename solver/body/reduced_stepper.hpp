@@ -148,6 +148,11 @@ private:
     ContactProblem problem_;
     double problem_dt_ = -1;
     bool problem_friction_ = false;
+    // Rows [r0, r0 + rows) of B_hat times x, and B_hat's first rows transposed times lambda.
+    void edge_product(Eigen::Index r0, Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& x,
+                      Eigen::Ref<Eigen::VectorXd> y) const;
+    void edge_transposed_product(Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                 Eigen::Ref<Eigen::VectorXd> y) const;
     // B_N u at a state (the normal rows at the contact nodes: minus the heights), kept with
     // the z and lift it was formed at: the substep's start and the step's edge output ask
     // for the same one, and B_hat's rows are a memory-bound read.

@@ -148,6 +148,7 @@ private:
     // The update (prepare_update): the changed unknowns C, the rows D(C, :), Z = J0^-1 U and
     // the capacitance matrix's LU, for the pattern and factorization (base_) they were built at.
     static constexpr Eigen::Index max_update_unknowns = 32;
+    static constexpr Eigen::Index update_share = 20;  // update while 20 c <= k (prepare_update)
     std::vector<int> changed_;
     std::vector<bool> in_changed_;
     Eigen::MatrixXd update_rows_, update_z_, capacitance_, gathered_;

@@ -3,7 +3,7 @@
 // substep per step, after WARM unmeasured substeps. Per substep: wall microseconds pressed (the
 // whole edge in contact) and lifted off (the same body with the top raised: no contact solve),
 // Newton iterations, residual evaluations (each one product with the Delassus operator W),
-// Newton factorizations (pattern changes), Gauss-Seidel sweeps, and the contact nodes whose
+// Newton factorizations and factorization updates (pattern changes), Gauss-Seidel sweeps, and the contact nodes whose
 // state changed. Prints one JSON object.
 // With ONLY = pressed the lifted run is left out (for a profiler's window).
 //   bench_contact_profile NX MODES DT STEPS [EDGE [ONLY]]
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < warm; ++k) sim.do_step(p.internal_step, in);
     const ContactSolver& solver = sim.body().contact_solver();
     const long it0 = solver.newton_iterations(), res0 = solver.residual_evaluations(),
-               fac0 = solver.factorizations();
+               fac0 = solver.factorizations(), upd0 = solver.factorization_updates();
     long sweeps = 0, changed = 0, active = 0;
     auto states = sim.body().last_contact().state;
     t0 = Clock::now();
@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     const double iterations = (solver.newton_iterations() - it0) / n;
     const double residuals = (solver.residual_evaluations() - res0) / n;
     const double factorizations = (solver.factorizations() - fac0) / n;
+    const double updates = (solver.factorization_updates() - upd0) / n;
 
     // Lifted off: the same body with the top raised 1 mm, so that no node touches.
     const bool pressed_only = argc > 6 && std::string(argv[6]) == "pressed";
@@ -83,10 +84,10 @@ int main(int argc, char** argv) {
     std::printf("{\"nx\": %d, \"modes\": %d, \"edge\": %d, \"dt\": %.6g, \"steps\": %d, "
                 "\"setup_s\": %.6g, \"unknowns\": %ld, \"substep_us_pressed\": %.6g, "
                 "\"substep_us_lifted\": %.6g, \"newton_iterations\": %.6g, "
-                "\"residual_evaluations\": %.6g, \"factorizations\": %.6g, \"sweeps\": %.6g, "
+                "\"residual_evaluations\": %.6g, \"factorizations\": %.6g, \"updates\": %.6g, \"sweeps\": %.6g, "
                 "\"state_changes\": %.6g, \"active_nodes\": %.6g}\n",
                 p.nx, p.modes, static_cast<int>(p.reduced_edge), p.internal_step, steps, setup,
                 static_cast<long>(unknowns), pressed, lifted_us, iterations, residuals,
-                factorizations, sweeps / n, changed / n, active / n);
+                factorizations, updates, sweeps / n, changed / n, active / n);
     return 0;
 }

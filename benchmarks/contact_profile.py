@@ -1,13 +1,18 @@
 """Where the reduced body's substep goes (issue 44): build/bench_contact_profile on damped
 sliding from the static start (F = 0.3, beta = 4e-6 s, 20 m/s, one substep per step), 80 modes,
-at nx = 20, 80, 160 (substep 2e-6 s): microseconds per substep pressed (the whole edge in
+at nx = 20, 80, 160 (substep 2e-6 s) and at nx = 160 with the larger substeps that the
+FMU's speed-up takes (8e-6 and 1.6e-5 s): microseconds per substep pressed (the whole edge in
 contact) and lifted off (no contact solve), Newton iterations, residual evaluations (products
-with the Delassus operator), Newton factorizations and node state changes per substep; and
-the FMU's own cost per doStep (fmpy, one substep per doStep, against the solver's substep).
+with the Delassus operator), Newton factorizations, factorization updates and node state
+changes per substep; and the FMU's own cost per doStep (fmpy, one substep per doStep, against
+the solver's substep; at 2e-6 s).
 Each run is stored under a label (the code it measured), so that the results file holds the
 profile before and after a change:
 
-    .venv/bin/python benchmarks/contact_profile.py --label LABEL [--out benchmarks/results]
+    .venv/bin/python benchmarks/contact_profile.py --label LABEL [--build DIR] [--out benchmarks/results]
+
+--build names the build whose bench_contact_profile and ContactBody.fmu are measured (default
+build/, the portable one that users get).
 """
 import argparse
 import json
@@ -23,19 +28,20 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from contactbody.fmu import find_fmu  # noqa: E402
 
-MESHES = (20, 80, 160)
 MODES, DT, STEPS = 80, 2e-6, 1500
+# (nx, substep): the FMU's doStep is measured at DT only.
+RUNS = ((20, DT), (80, DT), (160, DT), (160, 8e-6), (160, 1.6e-5))
 
 
-def profile(nx, modes=MODES):
-    out = subprocess.run([str(ROOT / "build" / "bench_contact_profile"), str(nx), str(modes),
-                          repr(DT), str(STEPS)], check=True, capture_output=True, text=True).stdout
+def profile(build, nx, dt, modes=MODES):
+    steps = STEPS if dt == DT else 600
+    out = subprocess.run([str(build / "bench_contact_profile"), str(nx), str(modes),
+                          repr(dt), str(steps)], check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 
 
-def fmu_per_do_step(nx, modes=MODES, steps=1500):
+def fmu_per_do_step(path, nx, modes=MODES, steps=1500):
     """CPU seconds per doStep through the FMU (fmpy), one substep per doStep."""
-    path = find_fmu()
     md = fmpy.read_model_description(str(path))
     unzipped = fmpy.extract(str(path))
     vr = {v.name: v.valueReference for v in md.modelVariables}
@@ -66,33 +72,40 @@ def table(runs):
              f"β = 4e-6 s, 20 m/s), {MODES} modes, substep {DT:g} s, one substep per step; per "
              "substep: wall µs pressed (the edge in contact) and lifted off (no contact solve), "
              "Newton iterations, residual evaluations (each a product with W), Newton "
-             "factorizations and node state changes; the FMU's CPU µs per doStep of one "
-             "substep (fmpy, outputs read each step).", "",
-             "| code | nx | unknowns | pressed µs | lifted µs | pressed / lifted | Newton its | "
-             "W products | factorizations | state changes | FMU doStep µs |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "factorizations, factorization updates (Woodbury, from 7e6115a on) and node state "
+             "changes; the FMU's CPU µs per doStep of one substep (fmpy, outputs read each "
+             "step). Labels name the code and, where not the portable build/, the build.", "",
+             "| code | nx | unknowns | substep s | pressed µs | lifted µs | pressed / lifted | "
+             "Newton its | W products | factorizations | updates | state changes | FMU doStep µs |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for label, rows in runs.items():
         for r in rows:
-            lines.append(f"| {label} | {r['nx']} | {r['unknowns']} | {r['substep_us_pressed']:.0f} | "
+            fmu = r.get("fmu_do_step_us")
+            lines.append(f"| {label} | {r['nx']} | {r['unknowns']} | {r['dt']:g} | "
+                         f"{r['substep_us_pressed']:.0f} | "
                          f"{r['substep_us_lifted']:.0f} | "
                          f"{r['substep_us_pressed'] / r['substep_us_lifted']:.2f} | "
                          f"{r['newton_iterations']:.2f} | {r['residual_evaluations']:.2f} | "
-                         f"{r['factorizations']:.3f} | {r['state_changes']:.3f} | "
-                         f"{r['fmu_do_step_us']:.0f} |")
+                         f"{r['factorizations']:.3f} | "
+                         + (f"{r['updates']:.3f}" if "updates" in r else "–") +
+                         f" | {r['state_changes']:.3f} | "
+                         + (f"{fmu:.0f}" if fmu is not None else "–") + " |")
     return "\n".join(lines) + "\n"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--label", required=True, help="what code was measured")
+    parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "benchmarks" / "results")
     args = parser.parse_args()
+    fmu = args.build / "ContactBody.fmu" if args.build != ROOT / "build" else find_fmu()
     path = args.out / "contact_profile.json"
     runs = json.loads(path.read_text()) if path.exists() else {}
     rows = []
-    for nx in MESHES:
-        r = profile(nx)
-        r["fmu_do_step_us"] = fmu_per_do_step(nx)
+    for nx, dt in RUNS:
+        r = profile(args.build, nx, dt)
+        r["fmu_do_step_us"] = fmu_per_do_step(fmu, nx) if dt == DT else None
         rows.append(r)
     runs[args.label] = rows
     args.out.mkdir(parents=True, exist_ok=True)

@@ -180,6 +180,9 @@ std::vector<char> serialize(const FmuState& s) {
             w.vector(*x);
         w.value<uint64_t>(static_cast<uint64_t>(sim.edge.state.size()));
         for (Eigen::Index i = 0; i < sim.edge.state.size(); ++i) w.value<int8_t>(sim.edge.state[i]);
+        w.value(sim.contact_factorization.substep);
+        w.value<uint64_t>(static_cast<uint64_t>(sim.contact_factorization.pattern.size()));
+        for (signed char x : sim.contact_factorization.pattern) w.value<int8_t>(x);
     }
 
     std::vector<char> out(header_size + w.bytes.size());
@@ -315,6 +318,17 @@ FmuState deserialize(const char* bytes, size_t size) {
         for (Eigen::Index i = 0; i < nc; ++i) {
             edge.state[i] = r.value<int8_t>("edge state");
             if (edge.state[i] < 0 || edge.state[i] > 2) r.fail("invalid edge state");
+        }
+        ContactFactorization& f = sim.contact_factorization;
+        f.substep = r.finite("contact factorization substep");
+        if (f.substep < 0) r.fail("contact factorization substep is negative");
+        const uint64_t pattern = r.value<uint64_t>("contact factorization size");
+        if (pattern != 0 && pattern != static_cast<uint64_t>(nc))
+            r.fail("contact factorization does not fit the mesh");
+        f.pattern.resize(static_cast<size_t>(pattern));
+        for (signed char& x : f.pattern) {
+            x = r.value<int8_t>("contact factorization node state");
+            if (x != 0 && x != 1 && x != 2 && x != -2) r.fail("invalid contact factorization node state");
         }
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");

@@ -157,13 +157,22 @@ def corruptions(blob, md):
     v_length = o["u"] + 8 * n_u
     flipped = bytearray(blob)
     flipped[HEADER + 100] ^= 0x40
+    # The last fields: the contact factorization's substep and node pattern (empty here).
+    factorization = len(blob) - HEADER - 16
+    nodes = struct.unpack_from("<i", blob, HEADER + o["edge_nodes"])[0]
+    pattern = lambda states: reseal(blob[:-8] + struct.pack("<Q", len(states)) + bytes(states))
     return {
+        "contact factorization substep NaN": patch(blob, factorization, "<d", float("nan")),
+        "contact factorization substep negative": patch(blob, factorization, "<d", -2e-6),
+        "contact factorization of another mesh": pattern([1] * (nodes - 1)),
+        "contact factorization node state 5": pattern([1] * (nodes - 1) + [5]),
         "empty": b"",
         "one byte": blob[:1],
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 13": blob[:8] + struct.pack("<I", 13) + blob[12:],
+        "version 14": blob[:8] + struct.pack("<I", 14) + blob[12:],
+        "version 12 (before the contact factorization)": blob[:8] + struct.pack("<I", 12) + blob[12:],
         "version 11 (before modes)": blob[:8] + struct.pack("<I", 11) + blob[12:],
         "version 10 (before E(0))": blob[:8] + struct.pack("<I", 10) + blob[12:],
         "version 9 (before the slip-rate law)": blob[:8] + struct.pack("<I", 9) + blob[12:],

@@ -20,6 +20,13 @@ struct SubstepLoad;
 struct SubstepReport;
 struct ContactSnapshot;
 
+// The contact solver's factorization that a body's next substep of this size would update
+// (ContactSolver::factored_pattern): the node pattern, or empty for none.
+struct ContactFactorization {
+    double substep = 0;
+    std::vector<signed char> pattern;
+};
+
 class Body {
 public:
     virtual ~Body() = default;
@@ -72,6 +79,11 @@ public:
     virtual int factorizations() const = 0;  // step operators built over the body's life
     virtual ContactSolverOptions& contact_options() = 0;
     virtual const ContactSolver& contact_solver() const = 0;  // its counters, for profiles
+    // The contact factorization the next substep would update, where the body updates it (the
+    // reduced body): results depend on it to the last bit, so a saved state keeps it, and
+    // setting it makes the next substep of its size start from it.
+    virtual ContactFactorization contact_factorization() const { return {}; }
+    virtual void set_contact_factorization(const ContactFactorization&) {}
     virtual int modes() const { return 0; }  // 0: the full body
     // What the step operator is ("factorized 4/dt^2 M + A" and the like), for the log.
     virtual const char* operator_name() const = 0;

@@ -129,9 +129,11 @@ void ReducedStepper::start_run() {
     options_.tolerance = params_.contact_tolerance;
     // Its substep's cost is the contact solve's (benchmarks/results/contact_profile.md).
     options_.update_factorization = true;
+    options_.project_slip = true;
     solver_ = ContactSolver{};
     snapshot_ = ContactSnapshot{};
     problem_dt_ = -1;
+    saved_factorization_ = {};
 }
 
 void ReducedStepper::restart(const SceneParameters& params) {
@@ -329,6 +331,11 @@ bool ReducedStepper::fits(const State& s) const {
            (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
 }
 
+ContactFactorization ReducedStepper::contact_factorization() const {
+    if (problem_dt_ <= 0) return saved_factorization_;  // not yet used since it was set
+    return {problem_dt_, solver_.factored_pattern(problem_.revision)};
+}
+
 std::vector<double> ReducedStepper::cached_substeps() const {
     std::vector<double> sizes;
     for (const auto& ops : cache_)
@@ -345,6 +352,7 @@ void ReducedStepper::set_cached_substeps(const std::vector<double>& sizes) {
 }
 
 void ReducedStepper::set_friction_coefficient(double friction) {
+    if (friction != params_.friction_coefficient) saved_factorization_ = {};  // W's with the other
     params_.friction_coefficient = friction;
     problem_dt_ = -1;
 }
@@ -404,6 +412,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         problem_.revision = ContactProblem::next_revision();
         problem_dt_ = dt;
         problem_friction_ = friction;
+        if (saved_factorization_.substep == dt) solver_.factor_at(saved_factorization_.pattern);
+        saved_factorization_ = {};
     }
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
     const double alpha = params_.damping_mass, beta = params_.damping_stiffness;

@@ -80,6 +80,8 @@ public:
     std::string summary() const override;
     ContactSolverOptions& contact_options() override { return options_; }
     const ContactSolver& contact_solver() const override { return solver_; }
+    ContactFactorization contact_factorization() const override;
+    void set_contact_factorization(const ContactFactorization& f) override { saved_factorization_ = f; }
 
 private:
     struct StepOperators {
@@ -147,6 +149,7 @@ private:
     ContactSnapshot snapshot_;
     ContactProblem problem_;
     double problem_dt_ = -1;
+    ContactFactorization saved_factorization_;  // set_contact_factorization's, until its substep
     bool problem_friction_ = false;
     // Rows [r0, r0 + rows) of B_hat times x, and B_hat's first rows transposed times lambda.
     void edge_product(Eigen::Index r0, Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& x,

@@ -44,7 +44,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
                        lambda.size() == product_lambda_.size() && lambda == product_lambda_;
     if (!known) {
         ++residual_evaluations_;
-        product_.noalias() = p.W * lambda;
+        if (!compact_products_ || !compact_product(p, lambda)) product_.noalias() = p.W * lambda;
         product_lambda_ = lambda;
         product_revision_ = p.revision;
     }
@@ -97,6 +97,58 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
     return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
 }
 
+// The reduced Newton matrix of pattern_ (its unknowns in reduced_), LU-factored.
+void ContactSolver::factor(const ContactProblem& p, const ContactSolverOptions& options) {
+    const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
+    const bool friction = p.has_friction();
+    reduced_.clear();
+    reduced_.reserve(static_cast<size_t>(m));  // once: no allocation when the set grows
+    for (Eigen::Index i = 0; i < n; ++i)
+        if (pattern_[i] != 0) reduced_.push_back(static_cast<int>(i));
+    if (friction)
+        for (Eigen::Index i = 0; i < n; ++i)
+            if (pattern_[i] == 1) reduced_.push_back(static_cast<int>(n + i));
+    const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
+    // Eigen's blocked LU (its kernel, on the leading k x k of a buffer sized once for all
+    // m unknowns: the reduced size changes with the active set, and PartialPivLU would
+    // reallocate every time it does). The reference LAPACK's dgetrf on reference BLAS was
+    // a quarter of a pressed substep at nx = 160 (benchmarks/results/contact_profile.md).
+    if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
+    for (Eigen::Index b = 0; b < k; ++b) {
+        const int col = reduced_[b];
+        const bool slipping = friction && col < n && pattern_[col] != 1;
+        const double sf = slipping ? slip_sign(p, col) : 0;
+        for (Eigen::Index a = 0; a < k; ++a)
+            reduced_matrix_(a, b) = p.W(reduced_[a], col) -
+                                    (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
+    }
+    if (k > 0) {
+        pivots_.resize(static_cast<size_t>(m));
+        int transpositions = 0;
+        const Eigen::Index zero_pivot =
+            Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
+                k, k, reduced_matrix_.data(), m, pivots_.data(), transpositions);
+        if (zero_pivot >= 0) {
+            lu_revision_ = 0;
+            throw ContactSolveError("contact solver: singular Newton matrix");
+        }
+    }
+    ++base_;  // an update of the last factorization no longer applies
+    if (options.update_factorization && update_rows_.cols() != m) {
+        // Sized once, for the largest update: updating allocates nothing.
+        update_rows_.resize(max_update_unknowns, m);
+        update_z_.resize(m, 2 * max_update_unknowns);
+        capacitance_.resize(2 * max_update_unknowns, 2 * max_update_unknowns);
+        capacitance_pivots_.resize(static_cast<size_t>(2 * max_update_unknowns));
+        gathered_.resize(m, 2 * max_update_unknowns);
+        in_changed_.assign(static_cast<size_t>(m), false);
+        update_x_.resize(m);
+        update_t_.resize(2 * max_update_unknowns);
+        update_pattern_.resize(n);
+        changed_.reserve(static_cast<size_t>(m));
+    }
+}
+
 // Semi-smooth Newton direction delta (J delta = -phi, J the generalized Jacobian of phi for
 // the node states found by residual()), computed on the reduced system: open nodes' unknowns
 // and slipping nodes' tangential ones follow explicitly from the others,
@@ -107,7 +159,7 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
 // The reduced matrix depends only on W, the pattern and F, so its LU is reused while they hold,
 // and (options.update_factorization) updated while few nodes have changed state since.
 void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolverOptions& options,
-                                     Direction how) {
+                                     Direction how, const Eigen::VectorXd& lambda) {
     const bool reuse = how != Direction::factor;
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();
@@ -117,57 +169,13 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
             explicit_[i] = phi_[i];
             if (friction) explicit_[n + i] = -phi_[n + i];
         } else if (friction && pattern_[i] != 1) {
-            explicit_[n + i] = -phi_[n + i] + slip_sign(p, i) * phi_[i];
+            // = -lambda_T - sf lambda_N (phi_T = lambda_T - sf trial, phi_N = -lambda_N - trial):
+            // exactly zero after a projected step (options.project_slip).
+            explicit_[n + i] = options.project_slip ? -lambda[n + i] - slip_sign(p, i) * lambda[i]
+                                                    : -phi_[n + i] + slip_sign(p, i) * phi_[i];
         }
     }
-    if (!reuse) {
-        reduced_.clear();
-        reduced_.reserve(static_cast<size_t>(m));  // once: no allocation when the set grows
-        for (Eigen::Index i = 0; i < n; ++i)
-            if (pattern_[i] != 0) reduced_.push_back(static_cast<int>(i));
-        if (friction)
-            for (Eigen::Index i = 0; i < n; ++i)
-                if (pattern_[i] == 1) reduced_.push_back(static_cast<int>(n + i));
-        const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
-        // Eigen's blocked LU (its kernel, on the leading k x k of a buffer sized once for all
-        // m unknowns: the reduced size changes with the active set, and PartialPivLU would
-        // reallocate every time it does). The reference LAPACK's dgetrf on reference BLAS was
-        // a quarter of a pressed substep at nx = 160 (benchmarks/results/contact_profile.md).
-        if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
-        for (Eigen::Index b = 0; b < k; ++b) {
-            const int col = reduced_[b];
-            const bool slipping = friction && col < n && pattern_[col] != 1;
-            const double sf = slipping ? slip_sign(p, col) : 0;
-            for (Eigen::Index a = 0; a < k; ++a)
-                reduced_matrix_(a, b) = p.W(reduced_[a], col) -
-                                        (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
-        }
-        if (k > 0) {
-            pivots_.resize(static_cast<size_t>(m));
-            int transpositions = 0;
-            const Eigen::Index zero_pivot =
-                Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
-                    k, k, reduced_matrix_.data(), m, pivots_.data(), transpositions);
-            if (zero_pivot >= 0) {
-                lu_revision_ = 0;
-                throw ContactSolveError("contact solver: singular Newton matrix");
-            }
-        }
-        ++base_;  // an update of the last factorization no longer applies
-        if (options.update_factorization && update_rows_.cols() != m) {
-            // Sized once, for the largest update: updating allocates nothing.
-            update_rows_.resize(max_update_unknowns, m);
-            update_z_.resize(m, 2 * max_update_unknowns);
-            capacitance_.resize(2 * max_update_unknowns, 2 * max_update_unknowns);
-            capacitance_pivots_.resize(static_cast<size_t>(2 * max_update_unknowns));
-            gathered_.resize(m, 2 * max_update_unknowns);
-            in_changed_.assign(static_cast<size_t>(m), false);
-            update_x_.resize(m);
-            update_t_.resize(2 * max_update_unknowns);
-            update_pattern_.resize(n);
-            changed_.reserve(static_cast<size_t>(m));
-        }
-    }
+    if (!reuse) factor(p, options);
     reduced_rhs_.resize(m);
     const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     // W explicit_ by its nonzero columns (open nodes' and slipping nodes' tangential ones:
@@ -238,8 +246,14 @@ void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::Matrix
     for (Eigen::Index a = 0; a < k; ++a) g.row(a).swap(g.row(pivots_[static_cast<size_t>(a)]));
     const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k,
                                                                         k, Eigen::OuterStride<>(m));
-    lu.triangularView<Eigen::UnitLower>().solveInPlace(g);
-    lu.triangularView<Eigen::Upper>().solveInPlace(g);
+    if (x.cols() == 1) {  // the vector kernels: the blocked ones cost 3x on one column
+        auto v = gathered_.col(0).head(k);
+        lu.triangularView<Eigen::UnitLower>().solveInPlace(v);
+        lu.triangularView<Eigen::Upper>().solveInPlace(v);
+    } else {
+        lu.triangularView<Eigen::UnitLower>().solveInPlace(g);
+        lu.triangularView<Eigen::Upper>().solveInPlace(g);
+    }
     for (Eigen::Index a = 0; a < k; ++a) x.row(reduced_[static_cast<size_t>(a)]) = g.row(a);
 }
 
@@ -316,6 +330,57 @@ void ContactSolver::updated_solve(const ContactProblem& p) {
         if (in_system(pattern_, n, j)) step_[j] = update_x_[j];
 }
 
+std::vector<signed char> ContactSolver::factored_pattern(std::uint64_t revision) const {
+    if (update_rows_.cols() == 0 || lu_revision_ == 0 || lu_revision_ != revision) return {};
+    return {lu_pattern_.data(), lu_pattern_.data() + lu_pattern_.size()};
+}
+
+// W lambda = W_C lambda_N + W_T (lambda_T + s lambda_N), W_C = W_N - W_T diag(s), holds for
+// any s. Node i's s is +-F_i where lambda_T = -+F_i lambda_N exactly (a projected slipping
+// node, project_slip: its correction is zero), else 0: a function of lambda alone, so that the
+// product's last bits do not depend on the solver's past (a restored state repeats them).
+// While the nodes slide the product reads W_C, half of W; a column of W_C is formed again when
+// its node's s changes. False (not formed) when many corrections are nonzero (a shortened
+// step), where W lambda costs less.
+bool ContactSolver::compact_product(const ContactProblem& p, const Eigen::VectorXd& lambda) {
+    const Eigen::Index n = p.gap_limit.size();
+    if (compact_revision_ != p.revision) {  // W changed: its substep size did
+        compact_W_ = p.W.leftCols(n);
+        compact_s_.setZero(n);
+        next_s_.resize(n);
+        compact_revision_ = p.revision;
+    }
+    Eigen::Index corrections = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double lN = lambda[i], lT = lambda[n + i], F = p.friction[i];
+        // With lambda_N = 0 node i's column adds nothing: it keeps its s.
+        next_s_[i] = lN == 0 ? compact_s_[i] : lT == -F * lN ? F : lT == F * lN ? -F : 0.0;
+        corrections += lT + next_s_[i] * lN != 0;
+    }
+    if (4 * corrections > n) return false;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (next_s_[i] == compact_s_[i]) continue;
+        compact_s_[i] = next_s_[i];
+        if (compact_s_[i] == 0) compact_W_.col(i) = p.W.col(i);
+        else compact_W_.col(i).noalias() = p.W.col(i) - compact_s_[i] * p.W.col(n + i);
+    }
+    product_.noalias() = compact_W_ * lambda.head(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double c = lambda[n + i] + compact_s_[i] * lambda[i];
+        if (c != 0) product_.noalias() += c * p.W.col(n + i);
+    }
+    return true;
+}
+
+// After a full step of the pattern's Newton system, each slipping node's tangential
+// multiplier is -sf lambda_N up to round-off: set it so (options.project_slip).
+void ContactSolver::project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const {
+    if (!p.has_friction() || p.rate_dependent()) return;
+    const Eigen::Index n = p.gap_limit.size();
+    for (Eigen::Index i = 0; i < n; ++i)
+        if (pattern_[i] == 2 || pattern_[i] == -2) lambda[n + i] = -slip_sign(p, i) * lambda[i];
+}
+
 // J delta = -phi with every row of J, for a slip-rate law. Rows as in residual():
 //   open:   phi_N = -lambda_N, phi_T = lambda_T
 //   active: phi_N = r_N (gap - u_N)
@@ -359,6 +424,7 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
     const Eigen::Index m = p.W.rows();
     if (lambda.size() != m) lambda.setZero(m);
     r_ = p.W.diagonal().cwiseInverse();
+    compact_products_ = options.project_slip && p.has_friction() && !p.rate_dependent() && p.revision != 0;
     start_ = lambda;
     const bool rate = p.has_friction() && p.rate_dependent() && p.rate.tangential_inertia;
     ContactSolveInfo info;
@@ -567,12 +633,33 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
     ContactSolveInfo info;
     info.residual = residual(p, lambda, phi_);
     double merit = phi_.squaredNorm();
+    const bool rate = p.has_friction() && p.rate_dependent();
+    if (!saved_base_.empty()) {  // factor_at: the saved run's factorization, then its updates
+        const auto n = static_cast<size_t>(pattern_.size());
+        bool fits = options.update_factorization && !rate && saved_base_.size() == n;
+        for (size_t i = 0; fits && i < n; ++i)
+            fits = saved_base_[i] == 0 || saved_base_[i] == 1 ||
+                   (p.has_friction() && (saved_base_[i] == 2 || saved_base_[i] == -2));
+        if (fits) {
+            for (size_t i = 0; i < n; ++i) std::swap(pattern_[static_cast<Eigen::Index>(i)], saved_base_[i]);
+            try {
+                factor(p, options);
+                lu_pattern_ = pattern_;
+                lu_friction_ = p.friction;
+                lu_revision_ = p.revision;
+                ++factorizations_;
+            } catch (const ContactSolveError&) {
+                lu_revision_ = 0;  // singular: the iterations factor their own
+            }
+            for (size_t i = 0; i < n; ++i) std::swap(pattern_[static_cast<Eigen::Index>(i)], saved_base_[i]);
+        }
+        saved_base_.clear();
+    }
     // With a slip-rate law Newton can cycle among node states where the substep has several
     // solutions or none near the start; the exact node-by-node fallback then solves it. So,
     // asked to, it stops once `stagnation` iterations have not halved the best residual (a
     // converging Newton halves it every iteration or two) instead of running to
     // max_iterations.
-    const bool rate = p.has_friction() && p.rate_dependent();
     constexpr int stagnation = 12;
     double best = info.residual;
     int best_iteration = 0;
@@ -606,7 +693,8 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             lu_revision_ = 0;  // the buffer now holds another matrix
             full_newton_direction(p);
         } else {
-            newton_direction(p, options, same ? Direction::reuse : update ? Direction::update : Direction::factor);
+            newton_direction(p, options, same ? Direction::reuse : update ? Direction::update : Direction::factor,
+                             lambda);
         }
         if (update) ++updates_;
         if (!reuse && !rate) {
@@ -626,6 +714,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         for (int k = 0; k < 8 && !decreased; ++k) {
             if (k > 0) alpha *= 0.5;
             trial_ = lambda + alpha * step_;
+            if (options.project_slip && alpha == 1) project_slip(p, trial_);
             res = residual(p, trial_, trial_phi_);
             decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit ||
                         res <= options.tolerance;
@@ -639,6 +728,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             info.residual = res;
         } else {
             lambda += step_;
+            if (options.project_slip) project_slip(p, lambda);
             info.residual = residual(p, lambda, phi_);
         }
         merit = phi_.squaredNorm();

@@ -66,6 +66,12 @@ struct ContactSolverOptions {
     // bits. The reduced body takes it; the full body keeps its bits (its substep's cost is
     // elsewhere).
     bool update_factorization = false;
+    // After a full Newton step, set each slipping node's tangential multiplier to its Coulomb
+    // bound -sf lambda_N, which the step reaches in exact arithmetic: while no node changes
+    // state the next step's explicit part is then exactly zero, and its product with W is
+    // skipped, and products with W read half of it (W_N - W_T sf on the normal unknowns).
+    // Other last bits; the reduced body takes it.
+    bool project_slip = false;
 };
 
 struct ContactSolveInfo {
@@ -99,6 +105,12 @@ public:
     long factorization_updates() const { return updates_; }  // Newton matrices solved by an update
     long residual_evaluations() const { return residual_evaluations_; }
     long newton_iterations() const { return newton_iterations_; }
+    // The node pattern of the factorization that the next solve of W (revision) would update
+    // (options.update_factorization), or empty: an updated step's last bits depend on it, so a
+    // saved state keeps it. factor_at(pattern) makes the next solve factor at it first, as
+    // the saved run had.
+    std::vector<signed char> factored_pattern(std::uint64_t revision) const;
+    void factor_at(const std::vector<signed char>& pattern) { saved_base_ = pattern; }
 
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
@@ -110,7 +122,9 @@ private:
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     enum class Direction { reuse, update, factor };  // the last factorization, updated, or anew
-    void newton_direction(const ContactProblem& p, const ContactSolverOptions& options, Direction how);
+    void factor(const ContactProblem& p, const ContactSolverOptions& options);  // of pattern_
+    void newton_direction(const ContactProblem& p, const ContactSolverOptions& options, Direction how,
+                          const Eigen::VectorXd& lambda);
     // The right-hand side of the reduced Newton system's row j.
     double newton_target(const ContactProblem& p, Eigen::Index j) const {
         const double w = p.W(j, j);
@@ -124,6 +138,8 @@ private:
     // The full generalized Jacobian, for a slip-rate law: a slipping node's friction then
     // depends on its own tangential motion, which the reduced system eliminates.
     void full_newton_direction(const ContactProblem& p);
+    void project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const;
+    bool compact_product(const ContactProblem& p, const Eigen::VectorXd& lambda);
     // +-F_i for a slipping node, the sign of its slip.
     double slip_sign(const ContactProblem& p, Eigen::Index i) const {
         return pattern_[i] > 0 ? p.friction[i] : -p.friction[i];
@@ -134,6 +150,11 @@ private:
     // The last product W lambda, the lambda and the W (revision) it was formed for.
     Eigen::VectorXd product_, product_lambda_;
     std::uint64_t product_revision_ = 0;
+    // W_C and its s (compact_product), for the W of compact_revision_.
+    bool compact_products_ = false;
+    Eigen::MatrixXd compact_W_;
+    Eigen::VectorXd compact_s_, next_s_;
+    std::uint64_t compact_revision_ = 0;
     Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
@@ -150,6 +171,7 @@ private:
     static constexpr Eigen::Index max_update_unknowns = 32;
     static constexpr Eigen::Index update_share = 20;  // update while 20 c <= k (prepare_update)
     std::vector<int> changed_;
+    std::vector<signed char> saved_base_;  // factor_at's
     std::vector<bool> in_changed_;
     Eigen::MatrixXd update_rows_, update_z_, capacitance_, gathered_;
     std::vector<int> capacitance_pivots_;

@@ -559,7 +559,16 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
             throw std::invalid_argument("cached substep sizes must be finite and > 0");
+    const ContactFactorization& f = snapshot.contact_factorization;
+    if (!(std::isfinite(f.substep) && f.substep >= 0))
+        throw std::invalid_argument("the contact factorization's substep must be finite and >= 0");
+    if (!f.pattern.empty() && f.pattern.size() != static_cast<size_t>(nc))
+        throw std::invalid_argument("the contact factorization does not fit this mesh");
+    for (signed char x : f.pattern)
+        if (x != 0 && x != 1 && x != 2 && x != -2)
+            throw std::invalid_argument("invalid node state in the contact factorization");
     body_->set_cached_substeps(snapshot.factor_substeps);
+    body_->set_contact_factorization(f);
     state_ = s;
     works_ = snapshot.works;
     initial_energy_ = snapshot.initial_energy;

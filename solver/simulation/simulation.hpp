@@ -85,7 +85,8 @@ struct StepInputs {
 };
 
 // Everything that evolves in time, as plain data. The factorizations are derived from the
-// parameters and the substep sizes they were made for, so only those sizes are part of it.
+// parameters and the substep sizes they were made for, so only those sizes are part of it;
+// and the reduced body's contact factorization from W and the node pattern it was made for.
 struct SimulationSnapshot {
     State state;
     Works works;              // since t0
@@ -93,6 +94,7 @@ struct SimulationSnapshot {
     Observables observables;  // the last step's averages
     std::vector<double> factor_substeps;  // Stepper::cached_substeps()
     EdgeSnapshot edge;        // the last step's edge (its x is the mesh's)
+    ContactFactorization contact_factorization;  // Body::contact_factorization()
 };
 
 // What the last communication step cost.
@@ -157,7 +159,8 @@ public:
     int substeps_for(double h) const;
 
     SimulationSnapshot snapshot() const {
-        return {state_, works_, initial_energy_, observables_, body_->cached_substeps(), edge_};
+        return {state_,          works_, initial_energy_, observables_, body_->cached_substeps(),
+                edge_,           body_->contact_factorization()};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);

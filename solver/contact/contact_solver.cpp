@@ -271,6 +271,8 @@ bool ContactSolver::prepare_update(const ContactProblem& p) {
     if (update_rows_.cols() != m) return false;  // factored without the update's buffers
     if (update_base_ == base_ && update_pattern_.size() == pattern_.size() && update_pattern_ == pattern_)
         return true;
+    // changed_ is overwritten even where the update is then declined: a decline is followed
+    // by a refactorization, which moves base_, so the cached return above never sees it.
     changed_.clear();
     for (Eigen::Index i = 0; i < n; ++i) {
         if (pattern_[i] == lu_pattern_[i]) continue;

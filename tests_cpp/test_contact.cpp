@@ -227,9 +227,11 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
 // Solves that follow each other as in a substep sequence (one W, the load drifting so that
 // a few nodes change state between solves): the solver that updates its factorization
 // (update_factorization) reaches the same multipliers as the one that refactors, in as many
-// Newton iterations, with most of its factorizations replaced by updates. W is scaled as a
+// Newton iterations, with most of its factorizations replaced by updates; so does the one
+// that also projects slipping nodes onto their Coulomb bound (project_slip), whose solves a
+// fresh solver repeats bit for bit once told the factored pattern (factor_at). W is scaled as a
 // compliance (1e-9), so that the update cannot lean on entries of order one.
-TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
+TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
     const int n = 160;
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -247,27 +249,49 @@ TEST(ContactSolver, UpdatedFactorizationSolvesAsARefactoredOne) {
     Eigen::VectorXd phase(n);
     for (int i = 0; i < n; ++i) phase[i] = 3 * u(rng);
 
-    ContactSolver refactoring, updating;
+    ContactSolver refactoring, updating, projecting;
     ContactSolverOptions refactor_options{1e-12, 100}, update_options{1e-12, 100};
     update_options.update_factorization = true;
-    Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda;
-    long a_iterations = 0, b_iterations = 0;
+    ContactSolverOptions project_options = update_options;
+    project_options.project_slip = true;
+    Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda, c_lambda = a_lambda;
+    long a_iterations = 0, b_iterations = 0, c_iterations = 0, replayed = 0;
     for (int step = 0; step < 200; ++step) {
         const double t = 0.004 * step;
         for (int i = 0; i < n; ++i) {
             p.a[i] = scale * (0.6 * std::sin(t + phase[i]) + 0.3);     // pressed, or lifting off
             p.a[n + i] = scale * 0.3 * std::cos(1.3 * t + 2 * phase[i]);  // sticking or slipping
         }
+        // A solver with no past, given the projecting one's factored pattern and warm start,
+        // repeats its solve bit for bit (what a restored state relies on).
+        const std::vector<signed char> base = projecting.factored_pattern(p.revision);
+        Eigen::VectorXd replay = c_lambda;
         a_iterations += refactoring.solve(p, refactor_options, a_lambda).iterations;
         b_iterations += updating.solve(p, update_options, b_lambda).iterations;
+        c_iterations += projecting.solve(p, project_options, c_lambda).iterations;
         ASSERT_LE((a_lambda - b_lambda).lpNorm<Eigen::Infinity>(),
                   1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
             << "step " << step;
+        ASSERT_LE((a_lambda - c_lambda).lpNorm<Eigen::Infinity>(),
+                  1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
+            << "step " << step;
+        if (step % 20 == 7 && !base.empty()) {
+            ContactSolver fresh;
+            fresh.factor_at(base);
+            fresh.solve(p, project_options, replay);
+            ASSERT_TRUE(replay == c_lambda) << "step " << step;
+            ++replayed;
+        }
     }
     EXPECT_EQ(a_iterations, b_iterations);
+    EXPECT_EQ(a_iterations, c_iterations);
+    EXPECT_GT(replayed, 5);
     EXPECT_EQ(refactoring.factorization_updates(), 0);
     EXPECT_GT(updating.factorization_updates(), 100);  // measured: 95 against 21 and 176 updates
     EXPECT_LT(updating.factorizations(), refactoring.factorizations() / 3);
+    // The projection skips the explicit part's product and reads half of W while nodes slide,
+    // with as many residual evaluations.
+    EXPECT_EQ(projecting.residual_evaluations(), updating.residual_evaluations());
 }
 
 // rate_solutions() finds the solutions directly (the slip equation's roots); with no rate

@@ -58,6 +58,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
         Blift_[i] = -basis_.lift[y];
         Blift_[nc + i] = basis_.lift[x];
     }
+    tangential_rows_are_x_ = nx_ > 0 && Bhat_.bottomRows(nc).leftCols(nd_).isZero(0) &&
+                             Bhat_.bottomRows(nc).rightCols(nx_).isIdentity(0);
 
     // The clamp: e = 1 on the clamped y dofs.
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
@@ -283,6 +285,16 @@ double ReducedStepper::contact_height(const State& s, int node) const {
 void ReducedStepper::edge_product(Eigen::Index r0, Eigen::Index rows,
                                   const Eigen::Ref<const Eigen::VectorXd>& x,
                                   Eigen::Ref<Eigen::VectorXd> y) const {
+    const Eigen::Index nc = num_contact_nodes();
+    if (!tangential_rows_are_x_ || r0 + rows <= nc) return stored_rows_product(r0, rows, x, y);
+    const Eigen::Index normal = std::max<Eigen::Index>(0, nc - r0);
+    if (normal > 0) stored_rows_product(r0, normal, x, y.head(normal));
+    y.tail(rows - normal) = x.tail(nx_).segment(r0 + normal - nc, rows - normal);
+}
+
+void ReducedStepper::stored_rows_product(Eigen::Index r0, Eigen::Index rows,
+                                         const Eigen::Ref<const Eigen::VectorXd>& x,
+                                         Eigen::Ref<Eigen::VectorXd> y) const {
     const Eigen::Index m = modes(), k = nd_ - m, dense = std::min(r0, k);
     y.noalias() = Bhat_.block(r0, 0, rows, m) * x.head(m);
     if (dense > 0) y.noalias() += Bhat_.block(r0, m, rows, dense) * x.segment(m, dense);
@@ -295,6 +307,12 @@ void ReducedStepper::edge_product(Eigen::Index r0, Eigen::Index rows,
 void ReducedStepper::edge_transposed_product(Eigen::Index rows,
                                              const Eigen::Ref<const Eigen::VectorXd>& lambda,
                                              Eigen::Ref<Eigen::VectorXd> y) const {
+    const Eigen::Index nc = num_contact_nodes();
+    if (tangential_rows_are_x_ && rows > nc) {  // the tangential rows add lambda_T on X
+        edge_transposed_product(nc, lambda.head(nc), y);
+        y.tail(nx_) += lambda.segment(nc, rows - nc);
+        return;
+    }
     const Eigen::Index m = modes(), k = nd_ - m;
     y.head(m).noalias() = Bhat_.topLeftCorner(rows, m).transpose() * lambda;
     y.segment(m, k).noalias() =

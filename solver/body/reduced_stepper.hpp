@@ -154,6 +154,13 @@ private:
     // Rows [r0, r0 + rows) of B_hat times x, and B_hat's first rows transposed times lambda.
     void edge_product(Eigen::Index r0, Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& x,
                       Eigen::Ref<Eigen::VectorXd> y) const;
+    void stored_rows_product(Eigen::Index r0, Eigen::Index rows,
+                             const Eigen::Ref<const Eigen::VectorXd>& x,
+                             Eigen::Ref<Eigen::VectorXd> y) const;
+    // The tangential-mass edge: B_hat's tangential rows are (0, 0, I) (the modes and residual
+    // vanish on X's rows, the constraint modes are the identity there), checked exactly at
+    // construction; their products are then copies of X's coordinates.
+    bool tangential_rows_are_x_ = false;
     void edge_transposed_product(Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& lambda,
                                  Eigen::Ref<Eigen::VectorXd> y) const;
     // B_N u at a state (the normal rows at the contact nodes: minus the heights), kept with

@@ -134,6 +134,9 @@ void ContactSolver::factor(const ContactProblem& p, const ContactSolverOptions& 
         }
     }
     ++base_;  // an update of the last factorization no longer applies
+    lu_pattern_ = pattern_;  // what the LU is of
+    lu_friction_ = p.friction;
+    lu_revision_ = p.revision;
     if (options.update_factorization && update_rows_.cols() != m) {
         // Sized once, for the largest update: updating allocates nothing.
         update_rows_.resize(max_update_unknowns, m);
@@ -646,9 +649,6 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             for (size_t i = 0; i < n; ++i) std::swap(pattern_[static_cast<Eigen::Index>(i)], saved_base_[i]);
             try {
                 factor(p, options);
-                lu_pattern_ = pattern_;
-                lu_friction_ = p.friction;
-                lu_revision_ = p.revision;
                 ++factorizations_;
             } catch (const ContactSolveError&) {
                 lu_revision_ = 0;  // singular: the iterations factor their own
@@ -699,11 +699,6 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
                              lambda);
         }
         if (update) ++updates_;
-        if (!reuse && !rate) {
-            lu_pattern_ = pattern_;
-            lu_friction_ = p.friction;
-            lu_revision_ = p.revision;
-        }
         if (!reuse) ++factorizations_;
         if (!step_.allFinite()) {
             lu_revision_ = 0;

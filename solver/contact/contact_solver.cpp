@@ -44,7 +44,13 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
                        lambda.size() == product_lambda_.size() && lambda == product_lambda_;
     if (!known) {
         ++residual_evaluations_;
-        if (!compact_products_ || !compact_product(p, lambda)) product_.noalias() = p.W * lambda;
+        if (compact_products_ && compact_revision_ != p.revision) {  // W changed: its substep size did
+            sliding_.reset();
+            compact_revision_ = p.revision;
+        }
+        product_.resize(lambda.size());
+        if (!compact_products_ || !sliding_.apply(p.W, p.friction, lambda, product_))
+            product_.noalias() = p.W * lambda;
         product_lambda_ = lambda;
         product_revision_ = p.revision;
     }
@@ -242,7 +248,7 @@ void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::Matrix
     const Eigen::Index m = reduced_matrix_.rows(), k = static_cast<Eigen::Index>(reduced_.size());
     const Eigen::Index n = p.gap_limit.size();
     for (Eigen::Index j = 0; j < m; ++j)
-        if (!in_system(lu_pattern_, n, j)) x.row(j) /= p.W(j, j);
+        if (!in_system(lu_pattern_, n, j)) x.row(j) /= diagonal_[j];
     if (k == 0) return;
     auto g = gathered_.topLeftCorner(k, x.cols());
     for (Eigen::Index a = 0; a < k; ++a) g.row(a) = x.row(reduced_[static_cast<size_t>(a)]);
@@ -340,43 +346,6 @@ std::vector<signed char> ContactSolver::factored_pattern(std::uint64_t revision)
     return {lu_pattern_.data(), lu_pattern_.data() + lu_pattern_.size()};
 }
 
-// W lambda = W_C lambda_N + W_T (lambda_T + s lambda_N), W_C = W_N - W_T diag(s), holds for
-// any s. Node i's s is +-F_i where lambda_T = -+F_i lambda_N exactly (a projected slipping
-// node, project_slip: its correction is zero), else 0: a function of lambda alone, so that the
-// product's last bits do not depend on the solver's past (a restored state repeats them).
-// While the nodes slide the product reads W_C, half of W; a column of W_C is formed again when
-// its node's s changes. False (not formed) when many corrections are nonzero (a shortened
-// step), where W lambda costs less.
-bool ContactSolver::compact_product(const ContactProblem& p, const Eigen::VectorXd& lambda) {
-    const Eigen::Index n = p.gap_limit.size();
-    if (compact_revision_ != p.revision) {  // W changed: its substep size did
-        compact_W_ = p.W.leftCols(n);
-        compact_s_.setZero(n);
-        next_s_.resize(n);
-        compact_revision_ = p.revision;
-    }
-    Eigen::Index corrections = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const double lN = lambda[i], lT = lambda[n + i], F = p.friction[i];
-        // With lambda_N = 0 node i's column adds nothing: it keeps its s.
-        next_s_[i] = lN == 0 ? compact_s_[i] : lT == -F * lN ? F : lT == F * lN ? -F : 0.0;
-        corrections += lT + next_s_[i] * lN != 0;
-    }
-    if (4 * corrections > n) return false;
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (next_s_[i] == compact_s_[i]) continue;
-        compact_s_[i] = next_s_[i];
-        if (compact_s_[i] == 0) compact_W_.col(i) = p.W.col(i);
-        else compact_W_.col(i).noalias() = p.W.col(i) - compact_s_[i] * p.W.col(n + i);
-    }
-    product_.noalias() = compact_W_ * lambda.head(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const double c = lambda[n + i] + compact_s_[i] * lambda[i];
-        if (c != 0) product_.noalias() += c * p.W.col(n + i);
-    }
-    return true;
-}
-
 // After a full step of the pattern's Newton system, each slipping node's tangential
 // multiplier is -sf lambda_N up to round-off: set it so (options.project_slip).
 void ContactSolver::project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const {
@@ -428,7 +397,11 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
                                       Eigen::VectorXd& lambda) {
     const Eigen::Index m = p.W.rows();
     if (lambda.size() != m) lambda.setZero(m);
-    r_ = p.W.diagonal().cwiseInverse();
+    if (p.revision == 0 || p.revision != diagonal_revision_) {  // W's diagonal: strided reads
+        diagonal_ = p.W.diagonal();
+        r_ = diagonal_.cwiseInverse();
+        diagonal_revision_ = p.revision;
+    }
     compact_products_ = options.project_slip && p.has_friction() && !p.rate_dependent() && p.revision != 0;
     start_ = lambda;
     const bool rate = p.has_friction() && p.rate_dependent() && p.rate.tangential_inertia;

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "sliding_product.hpp"
+
 namespace contactbody {
 
 enum class NodeStatus : unsigned char { open, stick, slip };
@@ -127,7 +129,7 @@ private:
                           const Eigen::VectorXd& lambda);
     // The right-hand side of the reduced Newton system's row j.
     double newton_target(const ContactProblem& p, Eigen::Index j) const {
-        const double w = p.W(j, j);
+        const double w = diagonal_[j];
         return j < p.gap_limit.size() ? phi_[j] * w : -phi_[j] * w;
     }
     double newton_entry(const ContactProblem& p, const Eigen::Matrix<signed char, Eigen::Dynamic, 1>& P,
@@ -139,21 +141,22 @@ private:
     // depends on its own tangential motion, which the reduced system eliminates.
     void full_newton_direction(const ContactProblem& p);
     void project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const;
-    bool compact_product(const ContactProblem& p, const Eigen::VectorXd& lambda);
     // +-F_i for a slipping node, the sign of its slip.
     double slip_sign(const ContactProblem& p, Eigen::Index i) const {
         return pattern_[i] > 0 ? p.friction[i] : -p.friction[i];
     }
 
+    // W's diagonal and its inverse r_ (the augmentation parameters), for W of diagonal_revision_.
+    Eigen::VectorXd diagonal_;
+    std::uint64_t diagonal_revision_ = 0;
     // Workspace kept between calls so that steady stepping does not reallocate.
     Eigen::VectorXd u_hat_, r_, phi_, trial_phi_, step_, trial_, explicit_, explicit_product_, start_;
     // The last product W lambda, the lambda and the W (revision) it was formed for.
     Eigen::VectorXd product_, product_lambda_;
     std::uint64_t product_revision_ = 0;
-    // W_C and its s (compact_product), for the W of compact_revision_.
+    // Products with half of W where the nodes slide (project_slip), for the W of compact_revision_.
     bool compact_products_ = false;
-    Eigen::MatrixXd compact_W_;
-    Eigen::VectorXd compact_s_, next_s_;
+    SlidingProduct sliding_;
     std::uint64_t compact_revision_ = 0;
     Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system

@@ -4,8 +4,10 @@ at nx = 20, 80, 160 (substep 2e-6 s) and at nx = 160 with the larger substeps th
 FMU's speed-up takes (8e-6 and 1.6e-5 s): microseconds per substep pressed (the whole edge in
 contact) and lifted off (no contact solve), Newton iterations, residual evaluations (products
 with the Delassus operator), Newton factorizations, factorization updates and node state
-changes per substep; and the FMU's own cost per doStep (fmpy, one substep per doStep, against
-the solver's substep; at 2e-6 s). Times are medians of 5 alternating rounds (pressed, lifted;
+changes per substep; and the FMU's own cost per doStep (one substep per doStep, against the
+solver's substep; at 2e-6 s), through fmpy and through the FMU's C API (build/bench_fmu_do_step,
+no interpreter). The matrix entries a substep reads (reads()) give the floor of pressed /
+lifted where both run at one rate of reads. Times are medians of 5 alternating rounds (pressed, lifted;
 the FMU's of 3), from the run labelled "after (607f689)" on: single runs moved by 20 %.
 Each run is stored under a label (the code it measured), so that the results file holds the
 profile before and after a change:
@@ -71,6 +73,54 @@ def fmu_per_do_step(path, nx, modes=MODES, steps=1500):
     return cpu * 1e6
 
 
+def fmu_host_per_do_step(build, path, nx, modes=MODES, steps=STEPS):
+    """CPU microseconds per doStep of the same FMU through its C API (build/bench_fmu_do_step),
+    without an interpreter: the FMU's own cost, with the same parameters and outputs."""
+    md = fmpy.read_model_description(str(path))
+    unzipped = pathlib.Path(fmpy.extract(str(path)))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    library = unzipped / "binaries" / "linux64" / (md.coSimulation.modelIdentifier + ".so")
+    setters = [f"i:{vr[name]}={value}" for name, value in
+               (("nx", nx), ("ny", nx), ("modes", modes), ("initial_state", 1))]
+    setters += [f"r:{vr[name]}={value!r}" for name, value in
+                (("friction_coefficient", 0.3), ("damping_stiffness", 4e-6), ("internal_step", DT))]
+    out = subprocess.run([str(build / "bench_fmu_do_step"), str(library), md.guid, repr(DT),
+                          str(steps), f"{vr['normal_force']},{vr['energy']}", *setters],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)["do_step_us"]
+
+
+def reads(r, label):
+    """Doubles a substep reads from its matrices (the massless edge with friction, its nodes
+    sliding): (lifted, pressed). Lifted: B_hat w on every contact row and B_hat u on the normal
+    ones (B_hat's residual block is lower trapezoidal: its row i has min(i + 1, k) entries).
+    Pressed adds, per residual evaluation, W_C (2 n_c x n_c) and the LU of the Newton system on
+    the active nodes (active^2), and once the contact forces B_hat^T lambda: B_hat's trapezoid
+    on every contact row, or (43d301c only) B_hat^T's n_c compacted columns, their residual
+    rows upper trapezoidal."""
+    nc, m, k = r["unknowns"] // 2, r["modes"], r["residual_modes"]
+    trapezoid = lambda rows, width: sum(min(i + 1, width) for i in range(rows))  # noqa: E731
+    lifted = m * 2 * nc + trapezoid(2 * nc, k) + m * nc + trapezoid(nc, k)
+    per_evaluation = 2 * nc * nc + r["active_nodes"] ** 2
+    forces = ((m + min(nc, k)) * nc + trapezoid(nc, max(k - nc, 0)) if "43d301c" in label
+              else m * 2 * nc + trapezoid(2 * nc, k))
+    return lifted, lifted + r["residual_evaluations"] * per_evaluation + forces
+
+
+def derive(runs):
+    """The ratios the prose quotes, for every run."""
+    for label, rows in runs.items():
+        for r in rows:
+            r["pressed_over_lifted"] = r["substep_us_pressed"] / r["substep_us_lifted"]
+            if "residual_modes" in r:
+                lifted, pressed = reads(r, label)
+                r["reads_lifted"], r["reads_pressed"] = lifted, pressed
+                r["reads_ratio"] = pressed / lifted
+            if "w_product_us" in r:
+                r["pressed_in_w_products"] = r["substep_us_pressed"] / r["w_product_us"]
+                r["lifted_in_w_products"] = r["substep_us_lifted"] / r["w_product_us"]
+
+
 def table(runs):
     lines = ["# The reduced body's substep, profiled", "",
              "`benchmarks/contact_profile.py`: damped sliding from the static start (F = 0.3, "
@@ -78,15 +128,21 @@ def table(runs):
              "substep: wall µs pressed (the edge in contact) and lifted off (no contact solve), "
              "Newton iterations, residual evaluations (each a product with W), Newton "
              "factorizations, factorization updates (Woodbury, from 7e6115a on) and node state "
-             "changes; the FMU's CPU µs per doStep of one substep (fmpy, outputs read each "
-             "step); and one product with the dense W alone (m × m, in the same process), the unit in which "
+             "changes; the FMU's CPU µs per doStep of one substep (outputs read each step), "
+             "through fmpy and, from \"after (43d301c)\" on, through its C API "
+             "(build/bench_fmu_do_step, no interpreter); the matrix entries each substep reads "
+             "(`reads()` in the script: lifted B_hat w and B_hat u; pressed adds W_C and the "
+             "Newton system's LU per residual evaluation and the forces' B_hat^T once, compacted "
+             "in 43d301c only), as a ratio, the floor of pressed / lifted where both run at one "
+             "rate of reads; and one product with the dense W alone (m × m, in the same process), the unit in which "
              "the pressed and lifted substeps are also given. Labels name the code and, where not "
              "the portable build/, the build. From \"after (607f689)\" on, times are medians of 5 "
              "alternating rounds (the FMU's of 3).", "",
              "| code | nx | unknowns | substep s | pressed µs | lifted µs | pressed / lifted | "
              "Newton its | W products | factorizations | updates | state changes | FMU doStep µs | "
+             "FMU doStep µs, C host | pressed / lifted in reads | "
              "one W product µs | pressed, in W products | lifted, in W products |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for label, rows in runs.items():
         for r in rows:
             fmu = r.get("fmu_do_step_us")
@@ -99,6 +155,8 @@ def table(runs):
                          + (f"{r['updates']:.3f}" if "updates" in r else "–") +
                          f" | {r['state_changes']:.3f} | "
                          + (f"{fmu:.0f}" if fmu is not None else "–") + " | "
+                         + (f"{r['fmu_host_do_step_us']:.0f}" if r.get("fmu_host_do_step_us") else "–")
+                         + " | " + (f"{r['reads_ratio']:.2f}" if "reads_ratio" in r else "–") + " | "
                          + (f"{r['w_product_us']:.1f} | "
                             f"{r['substep_us_pressed'] / r['w_product_us']:.1f} | "
                             f"{r['substep_us_lifted'] / r['w_product_us']:.1f} |"
@@ -119,13 +177,10 @@ def main():
     for nx, dt in RUNS:
         r = profile(args.build, nx, dt)
         r["fmu_do_step_us"] = fmu_per_do_step(fmu, nx) if dt == DT else None
+        r["fmu_host_do_step_us"] = fmu_host_per_do_step(args.build, fmu, nx) if dt == DT else None
         rows.append(r)
     runs[args.label] = rows
-    for r in (r for rows in runs.values() for r in rows):  # the ratios the prose quotes
-        r["pressed_over_lifted"] = r["substep_us_pressed"] / r["substep_us_lifted"]
-        if "w_product_us" in r:
-            r["pressed_in_w_products"] = r["substep_us_pressed"] / r["w_product_us"]
-            r["lifted_in_w_products"] = r["substep_us_lifted"] / r["w_product_us"]
+    derive(runs)
     args.out.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(runs, indent=1))
     (args.out / "contact_profile.md").write_text(table(runs))

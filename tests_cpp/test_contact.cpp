@@ -298,17 +298,14 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
 // rate_solutions() finds the solutions directly (the slip equation's roots); with no rate
 // dependence it must give the paper's closed forms S1-S4, load by load, for the three mass
 // distributions of Figs. 3-4.
-// M lambda through M_C = M_N - M_T diag(s): equal to the plain product within round-off, with
-// an upper-trapezoidal tail read as such; its bits a function of lambda alone (the same lambda
-// after another history gives the same bits); declined where many corrections are nonzero.
+// M lambda through M_C = M_N - M_T diag(s): equal to the plain product within round-off; its
+// bits a function of lambda alone (the same lambda after another history gives the same bits);
+// declined where many corrections are nonzero.
 TEST(SlidingProduct, EqualsThePlainProductAndDependsOnLambdaAlone) {
-    constexpr Eigen::Index n = 24, rows = 40, dense = 28;
+    constexpr Eigen::Index n = 24, rows = 40;
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-1, 1);
-    Eigen::MatrixXd M = Eigen::MatrixXd::NullaryExpr(rows, 2 * n, [&] { return u(rng); });
-    for (Eigen::Index j = 0; j < 2 * n; ++j)  // the tail's rows: column j of either half reaches row dense + (j mod n)
-        for (Eigen::Index r = dense; r < rows; ++r)
-            if (r - dense > j % n) M(r, j) = 0;
+    const Eigen::MatrixXd M = Eigen::MatrixXd::NullaryExpr(rows, 2 * n, [&] { return u(rng); });
     const Eigen::VectorXd F = Eigen::VectorXd::Constant(n, 0.3);
     const auto multipliers = [&](int stuck) {  // nodes slide (lambda_T = -+F lambda_N) but `stuck`
         Eigen::VectorXd l(2 * n);
@@ -324,16 +321,16 @@ TEST(SlidingProduct, EqualsThePlainProductAndDependsOnLambdaAlone) {
     Eigen::VectorXd y(rows);
     const Eigen::VectorXd first = multipliers(2), second = multipliers(0);
     for (const Eigen::VectorXd* l : {&first, &second, &first}) {
-        ASSERT_TRUE(sliding.apply(M, F, *l, y, dense));
+        ASSERT_TRUE(sliding.apply(M, F, *l, y));
         EXPECT_LE((y - M * *l).lpNorm<Eigen::Infinity>(), 1e-13 * (M * *l).lpNorm<Eigen::Infinity>());
     }
     SlidingProduct fresh;  // the first lambda with no history: the same bits
     Eigen::VectorXd z(rows);
-    ASSERT_TRUE(fresh.apply(M, F, first, z, dense));
+    ASSERT_TRUE(fresh.apply(M, F, first, z));
     EXPECT_TRUE((z.array() == y.array()).all());
     const Eigen::VectorXd shortened = 0.5 * first + 0.5 * multipliers(n);  // no node on its bound
     z.setConstant(7);
-    EXPECT_FALSE(sliding.apply(M, F, shortened, z, dense));
+    EXPECT_FALSE(sliding.apply(M, F, shortened, z));
     EXPECT_TRUE((z.array() == 7).all());  // untouched
 }
 

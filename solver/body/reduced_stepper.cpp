@@ -58,7 +58,6 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
         Blift_[i] = -basis_.lift[y];
         Blift_[nc + i] = basis_.lift[x];
     }
-    if (nx_ == 0) BhatT_ = Bhat_.transpose();
     tangential_rows_are_x_ = nx_ > 0 && Bhat_.bottomRows(nc).leftCols(nd_).isZero(0) &&
                              Bhat_.bottomRows(nc).rightCols(nx_).isIdentity(0);
 
@@ -321,14 +320,6 @@ void ReducedStepper::edge_transposed_product(Eigen::Index rows,
     if (nx_ > 0) y.tail(nx_).noalias() = Bhat_.block(0, nd_, rows, nx_).transpose() * lambda;
 }
 
-void ReducedStepper::contact_forces(const Eigen::VectorXd& lambda, Eigen::Ref<Eigen::VectorXd> y) {
-    const Eigen::Index nc = num_contact_nodes(), k = nd_ - modes();
-    if (BhatT_.cols() == lambda.size() &&
-        sliding_forces_.apply(BhatT_, problem_.friction, lambda, y, modes() + std::min(nc, k)))
-        return;
-    edge_transposed_product(lambda.size(), lambda, y);
-}
-
 const Eigen::VectorXd& ReducedStepper::normal_displacements(const State& s) const {
     const auto at = s.u.head(size() + 1);  // z and the lift's coordinate
     if (normal_u_at_.size() != at.size() || normal_u_at_ != at) {
@@ -502,7 +493,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         report.contact_iterations = info.iterations;
         report.contact_sweeps = info.sweeps;
         report.contact_solved = true;
-        contact_forces(s.lambda, contact_force_);
+        edge_transposed_product(unknowns, s.lambda, contact_force_);
         dw_ = contact_force_;
         solve_step(ops, dw_);
         w_ += dw_;

@@ -163,12 +163,6 @@ private:
     bool tangential_rows_are_x_ = false;
     void edge_transposed_product(Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& lambda,
                                  Eigen::Ref<Eigen::VectorXd> y) const;
-    // The contact forces B_hat^T lambda. The massless edge with friction forms them from
-    // B_hat^T's compacted columns where the nodes slide (SlidingProduct: a third fewer reads
-    // than B_hat's trapezoid, at nx = 160 with 80 modes).
-    void contact_forces(const Eigen::VectorXd& lambda, Eigen::Ref<Eigen::VectorXd> y);
-    Eigen::MatrixXd BhatT_;  // B_hat^T, the massless edge's (else empty)
-    SlidingProduct sliding_forces_;
     // B_N u at a state (the normal rows at the contact nodes: minus the heights), kept with
     // the z and lift it was formed at: the substep's start and the step's edge output ask
     // for the same one, and B_hat's rows are a memory-bound read.

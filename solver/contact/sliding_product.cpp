@@ -4,7 +4,7 @@ namespace contactbody {
 
 bool SlidingProduct::apply(const Eigen::MatrixXd& M, const Eigen::VectorXd& F,
                            const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                           Eigen::Ref<Eigen::VectorXd> y, Eigen::Index dense_rows) {
+                           Eigen::Ref<Eigen::VectorXd> y) {
     const Eigen::Index n = F.size();
     if (s_.size() != n) {  // sized when M changes only: the time loop allocates nothing
         compact_ = M.leftCols(n);
@@ -24,11 +24,7 @@ bool SlidingProduct::apply(const Eigen::MatrixXd& M, const Eigen::VectorXd& F,
         if (s_[i] == 0) compact_.col(i) = M.col(i);
         else compact_.col(i).noalias() = M.col(i) - s_[i] * M.col(n + i);
     }
-    const Eigen::Index rows = M.rows(), dense = dense_rows < 0 ? rows : dense_rows;
-    y.head(dense).noalias() = compact_.topRows(dense) * lambda.head(n);
-    if (dense < rows)
-        y.tail(rows - dense).noalias() =
-            compact_.bottomRows(rows - dense).triangularView<Eigen::Upper>() * lambda.head(n);
+    y.noalias() = compact_ * lambda.head(n);
     for (Eigen::Index i = 0; i < n; ++i) {
         const double c = lambda[n + i] + s_[i] * lambda[i];
         if (c != 0) y.noalias() += c * M.col(n + i);

@@ -4,8 +4,11 @@
 // (ContactSolverOptions::project_slip). For any s,
 //   M lambda = M_C lambda_N + M_T (lambda_T + s lambda_N),   M_C = M_N - M_T diag(s),
 // and node i's correction lambda_T + s lambda_N is zero where it slides: the product reads
-// M_C, half of M's columns. The contact solver makes its products with W so, the reduced body
-// its contact forces B_hat^T lambda.
+// M_C, half of M's columns. The contact solver makes its products with W so. (The reduced
+// body's contact forces B_hat^T lambda formed so, from B_hat^T's compacted columns with their
+// residual rows upper trapezoidal, read a third fewer entries at nx = 160 with 80 modes and
+// were no faster, 64 us a pressed substep with and without: benchmarks/results/
+// contact_profile.md, "native after (43d301c)" against "native before (4be9db8)".)
 #pragma once
 
 #include <Eigen/Dense>
@@ -22,11 +25,8 @@ public:
     // through M_C and keeps its s. A column of M_C is formed again when its s changes. False,
     // y untouched, where more than n/4 corrections are nonzero (a shortened Newton step):
     // M lambda then costs less.
-    // M_C's rows from dense_rows on are upper trapezoidal (B_hat^T's residual rows, whose
-    // B_hat block is lower trapezoidal): their product reads that part only.
     bool apply(const Eigen::MatrixXd& M, const Eigen::VectorXd& F,
-               const Eigen::Ref<const Eigen::VectorXd>& lambda, Eigen::Ref<Eigen::VectorXd> y,
-               Eigen::Index dense_rows = -1);
+               const Eigen::Ref<const Eigen::VectorXd>& lambda, Eigen::Ref<Eigen::VectorXd> y);
 
 private:
     Eigen::MatrixXd compact_;  // M_C

@@ -14,8 +14,8 @@ profile before and after a change:
 
     .venv/bin/python benchmarks/contact_profile.py --label LABEL [--build DIR] [--out benchmarks/results]
 
---build names the build whose bench_contact_profile and ContactBody.fmu are measured (default
-build/, the portable one that users get).
+--build names the build whose bench_contact_profile, bench_fmu_do_step and ContactBody.fmu are
+measured (default build/, the portable one that users get).
 """
 import argparse
 import json

@@ -180,7 +180,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
         } else if (friction && pattern_[i] != 1) {
             // = -lambda_T - sf lambda_N (phi_T = lambda_T - sf trial, phi_N = -lambda_N - trial):
             // exactly zero after a projected step (options.project_slip).
-            explicit_[n + i] = options.project_slip ? -lambda[n + i] - slip_sign(p, i) * lambda[i]
+            explicit_[n + i] = projects_slip_ ? -lambda[n + i] - slip_sign(p, i) * lambda[i]
                                                     : -phi_[n + i] + slip_sign(p, i) * phi_[i];
         }
     }
@@ -231,7 +231,7 @@ bool in_system(const Pattern& P, Eigen::Index n, Eigen::Index j) {
 // unknowns, W's diagonal on the others (their steps are explicit; W's scale, so that the
 // update below does not mix entries of W with ones).
 double ContactSolver::newton_entry(const ContactProblem& p,
-                                   const Eigen::Matrix<signed char, Eigen::Dynamic, 1>& P,
+                                   const Pattern& P,
                                    Eigen::Index a, Eigen::Index b) const {
     const Eigen::Index n = p.gap_limit.size();
     if (!in_system(P, n, b)) return a == b ? p.W(b, b) : 0.0;
@@ -347,9 +347,8 @@ std::vector<signed char> ContactSolver::factored_pattern(std::uint64_t revision)
 }
 
 // After a full step of the pattern's Newton system, each slipping node's tangential
-// multiplier is -sf lambda_N up to round-off: set it so (options.project_slip).
+// multiplier is -sf lambda_N up to round-off: set it so (projects_slip_).
 void ContactSolver::project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const {
-    if (!p.has_friction() || p.rate_dependent()) return;
     const Eigen::Index n = p.gap_limit.size();
     for (Eigen::Index i = 0; i < n; ++i)
         if (pattern_[i] == 2 || pattern_[i] == -2) lambda[n + i] = -slip_sign(p, i) * lambda[i];
@@ -402,7 +401,8 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         r_ = diagonal_.cwiseInverse();
         diagonal_revision_ = p.revision;
     }
-    compact_products_ = options.project_slip && p.has_friction() && !p.rate_dependent() && p.revision != 0;
+    projects_slip_ = options.project_slip && p.has_friction() && !p.rate_dependent();
+    compact_products_ = projects_slip_ && p.revision != 0;
     start_ = lambda;
     const bool rate = p.has_friction() && p.rate_dependent() && p.rate.tangential_inertia;
     ContactSolveInfo info;
@@ -612,23 +612,22 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
     info.residual = residual(p, lambda, phi_);
     double merit = phi_.squaredNorm();
     const bool rate = p.has_friction() && p.rate_dependent();
-    if (!saved_base_.empty()) {  // factor_at: the saved run's factorization, then its updates
-        const auto n = static_cast<size_t>(pattern_.size());
-        bool fits = options.update_factorization && !rate && saved_base_.size() == n;
-        for (size_t i = 0; fits && i < n; ++i)
+    if (saved_base_.size() > 0) {  // factor_at: the saved run's factorization, then its updates
+        bool fits = options.update_factorization && !rate && saved_base_.size() == pattern_.size();
+        for (Eigen::Index i = 0; fits && i < saved_base_.size(); ++i)
             fits = saved_base_[i] == 0 || saved_base_[i] == 1 ||
                    (p.has_friction() && (saved_base_[i] == 2 || saved_base_[i] == -2));
         if (fits) {
-            for (size_t i = 0; i < n; ++i) std::swap(pattern_[static_cast<Eigen::Index>(i)], saved_base_[i]);
+            pattern_.swap(saved_base_);
             try {
                 factor(p, options);
                 ++factorizations_;
             } catch (const ContactSolveError&) {
                 lu_revision_ = 0;  // singular: the iterations factor their own
             }
-            for (size_t i = 0; i < n; ++i) std::swap(pattern_[static_cast<Eigen::Index>(i)], saved_base_[i]);
+            pattern_.swap(saved_base_);
         }
-        saved_base_.clear();
+        saved_base_.resize(0);
     }
     // With a slip-rate law Newton can cycle among node states where the substep has several
     // solutions or none near the start; the exact node-by-node fallback then solves it. So,
@@ -684,7 +683,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         for (int k = 0; k < 8 && !decreased; ++k) {
             if (k > 0) alpha *= 0.5;
             trial_ = lambda + alpha * step_;
-            if (options.project_slip && alpha == 1) project_slip(p, trial_);
+            if (projects_slip_ && alpha == 1) project_slip(p, trial_);
             res = residual(p, trial_, trial_phi_);
             decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit ||
                         res <= options.tolerance;
@@ -698,7 +697,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             info.residual = res;
         } else {
             lambda += step_;
-            if (options.project_slip) project_slip(p, lambda);
+            if (projects_slip_) project_slip(p, lambda);
             info.residual = residual(p, lambda, phi_);
         }
         merit = phi_.squaredNorm();

@@ -89,6 +89,8 @@ public:
 
 class ContactSolver {
 public:
+    // Per node 0 open, 1 stick, +-2 slip direction: what the Newton matrix depends on besides W.
+    using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
     // Solves in place from the warm start in lambda: semi-smooth Newton, and if it does not
     // converge, nonsmooth Gauss-Seidel from the same start. With a slip-rate law Newton first
     // stops early when it stagnates, and if Gauss-Seidel fails too it runs again from the
@@ -112,7 +114,9 @@ public:
     // saved state keeps it. factor_at(pattern) makes the next solve factor at it first, as
     // the saved run had.
     std::vector<signed char> factored_pattern(std::uint64_t revision) const;
-    void factor_at(const std::vector<signed char>& pattern) { saved_base_ = pattern; }
+    void factor_at(const std::vector<signed char>& pattern) {
+        saved_base_ = Eigen::Map<const Pattern>(pattern.data(), static_cast<Eigen::Index>(pattern.size()));
+    }
 
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
@@ -132,7 +136,7 @@ private:
         const double w = diagonal_[j];
         return j < p.gap_limit.size() ? phi_[j] * w : -phi_[j] * w;
     }
-    double newton_entry(const ContactProblem& p, const Eigen::Matrix<signed char, Eigen::Dynamic, 1>& P,
+    double newton_entry(const ContactProblem& p, const Pattern& P,
                         Eigen::Index a, Eigen::Index b) const;
     void base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x);
     bool prepare_update(const ContactProblem& p);
@@ -154,8 +158,10 @@ private:
     // The last product W lambda, the lambda and the W (revision) it was formed for.
     Eigen::VectorXd product_, product_lambda_;
     std::uint64_t product_revision_ = 0;
-    // Products with half of W where the nodes slide (project_slip), for the W of compact_revision_.
-    bool compact_products_ = false;
+    // Whether this solve projects slipping nodes (options.project_slip, with friction and no
+    // slip-rate law), and makes its products with half of W where the nodes slide, for the W
+    // of compact_revision_.
+    bool projects_slip_ = false, compact_products_ = false;
     SlidingProduct sliding_;
     std::uint64_t compact_revision_ = 0;
     Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
@@ -165,8 +171,7 @@ private:
     Eigen::PartialPivLU<Eigen::MatrixXd> full_lu_;  // of the full Jacobian (slip-rate law)
     Eigen::VectorXd reduced_rhs_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
-    // What the Jacobian depends on besides W: per node 0 open, 1 stick, +-2 slip direction.
-    Eigen::Matrix<signed char, Eigen::Dynamic, 1> pattern_, lu_pattern_;
+    Pattern pattern_, lu_pattern_;  // of the last residual, and of the LU
     Eigen::VectorXd lu_friction_;  // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
     // The update (prepare_update): the changed unknowns C, the rows D(C, :), Z = J0^-1 U and
@@ -174,12 +179,12 @@ private:
     static constexpr Eigen::Index max_update_unknowns = 32;
     static constexpr Eigen::Index update_share = 20;  // update while 20 c <= k (prepare_update)
     std::vector<int> changed_;
-    std::vector<signed char> saved_base_;  // factor_at's
+    Pattern saved_base_;  // factor_at's
     std::vector<bool> in_changed_;
     Eigen::MatrixXd update_rows_, update_z_, capacitance_, gathered_;
     std::vector<int> capacitance_pivots_;
     Eigen::VectorXd update_x_, update_t_;
-    Eigen::Matrix<signed char, Eigen::Dynamic, 1> update_pattern_;
+    Pattern update_pattern_;
     long base_ = 0, update_base_ = -1;
     long factorizations_ = 0, residual_evaluations_ = 0, newton_iterations_ = 0, updates_ = 0;
 };

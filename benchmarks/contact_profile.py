@@ -32,14 +32,19 @@ sys.path.insert(0, str(ROOT))
 from contactbody.fmu import find_fmu  # noqa: E402
 
 MODES, DT, STEPS = 80, 2e-6, 1500
-# (nx, substep): the FMU's doStep is measured at DT only.
-RUNS = ((20, DT), (80, DT), (160, DT), (160, 8e-6), (160, 1.6e-5))
+# (nx, substep, reduced_edge): the FMU's doStep is measured at DT on the massless edge only.
+# Edge 0 is by_variant, the massless edge for this scene's variant 1; 2 the tangential-mass
+# edge (the default of variants 0, 3 and 4), from "native after (…)" of its pass on.
+MASSLESS, TANGENTIAL_MASS = 0, 2
+RUNS = ((20, DT, MASSLESS), (80, DT, MASSLESS), (160, DT, MASSLESS), (160, 8e-6, MASSLESS),
+        (160, 1.6e-5, MASSLESS), (160, DT, TANGENTIAL_MASS))
 
 
-def profile(build, nx, dt, modes=MODES):
+def profile(build, nx, dt, edge, modes=MODES):
     steps = STEPS if dt == DT else 600
     out = subprocess.run([str(build / "bench_contact_profile"), str(nx), str(modes),
-                          repr(dt), str(steps)], check=True, capture_output=True, text=True).stdout
+                          repr(dt), str(steps), str(edge)],
+                         check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 
 
@@ -112,7 +117,7 @@ def derive(runs):
     for label, rows in runs.items():
         for r in rows:
             r["pressed_over_lifted"] = r["substep_us_pressed"] / r["substep_us_lifted"]
-            if "residual_modes" in r:
+            if "residual_modes" in r and r["edge"] == MASSLESS:
                 lifted, pressed = reads(r, label)
                 r["reads_lifted"], r["reads_pressed"] = lifted, pressed
                 r["reads_ratio"] = pressed / lifted
@@ -124,8 +129,9 @@ def derive(runs):
 def table(runs):
     lines = ["# The reduced body's substep, profiled", "",
              "`benchmarks/contact_profile.py`: damped sliding from the static start (F = 0.3, "
-             f"β = 4e-6 s, 20 m/s), {MODES} modes, substep {DT:g} s, one substep per step; per "
-             "substep: wall µs pressed (the edge in contact) and lifted off (no contact solve), "
+             f"β = 4e-6 s, 20 m/s), {MODES} modes, substep {DT:g} s, one substep per step, on the "
+             "massless edge (variant 1's) and, where the edge column says so, the tangential-mass "
+             "edge (the default of variants 0, 3 and 4); per substep: wall µs pressed (the edge in contact) and lifted off (no contact solve), "
              "Newton iterations, residual evaluations (each a product with W), Newton "
              "factorizations, factorization updates (Woodbury, from 7e6115a on) and node state "
              "changes; the FMU's CPU µs per doStep of one substep (outputs read each step), "
@@ -138,15 +144,16 @@ def table(runs):
              "the pressed and lifted substeps are also given. Labels name the code and, where not "
              "the portable build/, the build. From \"after (607f689)\" on, times are medians of 5 "
              "alternating rounds (the FMU's of 3).", "",
-             "| code | nx | unknowns | substep s | pressed µs | lifted µs | pressed / lifted | "
+             "| code | nx | unknowns | substep s | edge | pressed µs | lifted µs | pressed / lifted | "
              "Newton its | W products | factorizations | updates | state changes | FMU doStep µs | "
              "FMU doStep µs, C host | pressed / lifted in reads | "
              "one W product µs | pressed, in W products | lifted, in W products |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for label, rows in runs.items():
         for r in rows:
             fmu = r.get("fmu_do_step_us")
-            lines.append(f"| {label} | {r['nx']} | {r['unknowns']} | {r['dt']:g} | "
+            edge = "tangential mass" if r.get("edge") == TANGENTIAL_MASS else "massless"
+            lines.append(f"| {label} | {r['nx']} | {r['unknowns']} | {r['dt']:g} | {edge} | "
                          f"{r['substep_us_pressed']:.0f} | "
                          f"{r['substep_us_lifted']:.0f} | "
                          f"{r['substep_us_pressed'] / r['substep_us_lifted']:.2f} | "
@@ -174,10 +181,11 @@ def main():
     path = args.out / "contact_profile.json"
     runs = json.loads(path.read_text()) if path.exists() else {}
     rows = []
-    for nx, dt in RUNS:
-        r = profile(args.build, nx, dt)
-        r["fmu_do_step_us"] = fmu_per_do_step(fmu, nx) if dt == DT else None
-        r["fmu_host_do_step_us"] = fmu_host_per_do_step(args.build, fmu, nx) if dt == DT else None
+    for nx, dt, edge in RUNS:
+        r = profile(args.build, nx, dt, edge)
+        through_fmu = dt == DT and edge == MASSLESS
+        r["fmu_do_step_us"] = fmu_per_do_step(fmu, nx) if through_fmu else None
+        r["fmu_host_do_step_us"] = fmu_host_per_do_step(args.build, fmu, nx) if through_fmu else None
         rows.append(r)
     runs[args.label] = rows
     derive(runs)

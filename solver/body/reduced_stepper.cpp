@@ -36,12 +36,11 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     mass_.resize(n);
     mass_ << Eigen::VectorXd::Ones(m), Eigen::VectorXd::Zero(k), Eigen::VectorXd::Zero(nx_);
     const Eigen::MatrixXd& TC = basis_.constraint;  // the X coordinates' columns of T
-    mass_x_ = Eigen::MatrixXd::Zero(n, nx_);
     if (nx_ > 0) {
         const Eigen::MatrixXd MTC = d.M_free * TC, ATC = d.A_free * TC;
-        mass_x_.topRows(m) = basis_.modes.transpose() * MTC;
+        mass_mx_ = basis_.modes.transpose() * MTC;
         const Eigen::MatrixXd Mxx = TC.transpose() * MTC, Axx = TC.transpose() * ATC;
-        mass_x_.bottomRows(nx_) = 0.5 * (Mxx + Mxx.transpose());
+        mass_xx_ = 0.5 * (Mxx + Mxx.transpose());
         stiffness_xx_ = 0.5 * (Axx + Axx.transpose());
         stiffness_xx_factor_.compute(stiffness_xx_);
     }
@@ -235,8 +234,8 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
 
 double ReducedStepper::tail_mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
     if (nx_ == 0) return 0;
-    form_.noalias() = 2 * mass_x_.topRows(nd_).transpose() * x.head(nd_);
-    form_.noalias() += mass_x_.bottomRows(nx_) * x.tail(nx_);
+    form_.noalias() = 2 * mass_mx_.transpose() * x.head(modes());
+    form_.noalias() += mass_xx_ * x.tail(nx_);
     return x.tail(nx_).dot(form_);
 }
 
@@ -264,10 +263,10 @@ void ReducedStepper::solve_step(const StepOperators& ops, Eigen::Ref<Eigen::Vect
     // Eliminate the diagonal block, solve the Schur complement on X, substitute back.
     Eigen::VectorXd& t = tail_;
     t = x.tail(nx_);
-    t.noalias() -= ops.tail_coupling.transpose() * x.head(nd_);
+    t.noalias() -= ops.tail_coupling.transpose() * x.head(modes());
     ops.tail_schur.solveInPlace(t);
     x.head(nd_) = x.head(nd_).cwiseProduct(ops.inverse_stiffness.head(nd_));
-    x.head(nd_).noalias() -= ops.tail_coupling * t;
+    x.head(modes()).noalias() -= ops.tail_coupling * t;
     x.tail(nx_) = t;
 }
 
@@ -392,10 +391,10 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
         ops->delassus = Bhat_ * ops->inverse_stiffness.asDiagonal() * Bhat_.transpose();
     } else {
         ops->inverse_stiffness.tail(nx_).setZero();
-        ops->tail_coupling = c * (ops->inverse_stiffness.head(nd_).asDiagonal() * mass_x_.topRows(nd_));
-        Eigen::MatrixXd schur = c * mass_x_.bottomRows(nx_) +
+        ops->tail_coupling = c * (ops->inverse_stiffness.head(modes()).asDiagonal() * mass_mx_);
+        Eigen::MatrixXd schur = c * mass_xx_ +
                                 (1 + c2 * params_.damping_stiffness) * stiffness_xx_ -
-                                c * mass_x_.topRows(nd_).transpose() * ops->tail_coupling;
+                                c * mass_mx_.transpose() * ops->tail_coupling;
         ops->tail_schur.compute(0.5 * (schur + schur.transpose()));
         if (ops->tail_schur.info() != Eigen::Success)
             throw std::runtime_error("the tangential-mass edge's step matrix is not positive definite");
@@ -457,8 +456,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
            omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
     if (nx_ > 0) {  // M_hat's and A_hat's X block
-        rhs_.noalias() += c2 * mass_x_ * zdot.tail(nx_);
-        rhs_.tail(nx_).noalias() += c2 * mass_x_.topRows(nd_).transpose() * zdot.head(nd_);
+        rhs_.head(modes()).noalias() += c2 * mass_mx_ * zdot.tail(nx_);
+        rhs_.tail(nx_).noalias() += c2 * mass_xx_ * zdot.tail(nx_);
+        rhs_.tail(nx_).noalias() += c2 * mass_mx_.transpose() * zdot.head(modes());
         rhs_.tail(nx_).noalias() -= stiffness_xx_ * z.tail(nx_);
     }
     w_ = rhs_;

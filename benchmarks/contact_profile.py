@@ -34,7 +34,7 @@ from contactbody.fmu import find_fmu  # noqa: E402
 MODES, DT, STEPS = 80, 2e-6, 1500
 # (nx, substep, reduced_edge): the FMU's doStep is measured at DT on the massless edge only.
 # Edge 0 is by_variant, the massless edge for this scene's variant 1; 2 the tangential-mass
-# edge (the default of variants 0, 3 and 4), from "native after (…)" of its pass on.
+# edge (the default of variants 0, 3 and 4), from "native after (336cbe7)" on.
 MASSLESS, TANGENTIAL_MASS = 0, 2
 RUNS = ((20, DT, MASSLESS), (80, DT, MASSLESS), (160, DT, MASSLESS), (160, 8e-6, MASSLESS),
         (160, 1.6e-5, MASSLESS), (160, DT, TANGENTIAL_MASS))

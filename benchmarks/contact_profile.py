@@ -40,6 +40,16 @@ RUNS = ((20, DT, MASSLESS), (80, DT, MASSLESS), (160, DT, MASSLESS), (160, 8e-6,
         (160, 1.6e-5, MASSLESS), (160, DT, TANGENTIAL_MASS))
 
 
+def fmu_parameters(nx, modes):
+    """The scene's parameters through the FMU: (integers, reals), by variable name; and the
+    outputs read after each doStep. Both FMU timings use them."""
+    return ({"nx": nx, "ny": nx, "modes": modes, "initial_state": 1},
+            {"friction_coefficient": 0.3, "damping_stiffness": 4e-6, "internal_step": DT})
+
+
+OUTPUTS = ("normal_force", "energy")
+
+
 def profile(build, nx, dt, edge, modes=MODES):
     steps = STEPS if dt == DT else 600
     out = subprocess.run([str(build / "bench_contact_profile"), str(nx), str(modes),
@@ -58,9 +68,9 @@ def fmu_per_do_step(path, nx, modes=MODES, steps=1500):
     fmu.instantiate()
     fmu.setupExperiment(startTime=0)
     fmu.enterInitializationMode()
-    fmu.setInteger([vr["nx"], vr["ny"], vr["modes"], vr["initial_state"]], [nx, nx, modes, 1])
-    fmu.setReal([vr["friction_coefficient"], vr["damping_stiffness"], vr["internal_step"]],
-                [0.3, 4e-6, DT])
+    integers, reals = fmu_parameters(nx, modes)
+    fmu.setInteger([vr[name] for name in integers], list(integers.values()))
+    fmu.setReal([vr[name] for name in reals], list(reals.values()))
     fmu.exitInitializationMode()
     for k in range(50):
         fmu.doStep(k * DT, DT)
@@ -69,7 +79,7 @@ def fmu_per_do_step(path, nx, modes=MODES, steps=1500):
         t0 = time.process_time()
         for k in range(k, k + steps):
             fmu.doStep(k * DT, DT)
-            fmu.getReal([vr["normal_force"], vr["energy"]])
+            fmu.getReal([vr[name] for name in OUTPUTS])
         rounds.append((time.process_time() - t0) / steps)
         k += 1
     cpu = sorted(rounds)[1]
@@ -85,40 +95,40 @@ def fmu_host_per_do_step(build, path, nx, modes=MODES, steps=STEPS):
     unzipped = pathlib.Path(fmpy.extract(str(path)))
     vr = {v.name: v.valueReference for v in md.modelVariables}
     library = unzipped / "binaries" / "linux64" / (md.coSimulation.modelIdentifier + ".so")
-    setters = [f"i:{vr[name]}={value}" for name, value in
-               (("nx", nx), ("ny", nx), ("modes", modes), ("initial_state", 1))]
-    setters += [f"r:{vr[name]}={value!r}" for name, value in
-                (("friction_coefficient", 0.3), ("damping_stiffness", 4e-6), ("internal_step", DT))]
+    integers, reals = fmu_parameters(nx, modes)
+    setters = [f"i:{vr[name]}={value}" for name, value in integers.items()]
+    setters += [f"r:{vr[name]}={value!r}" for name, value in reals.items()]
+    outputs = ",".join(str(vr[name]) for name in OUTPUTS)
     out = subprocess.run([str(build / "bench_fmu_do_step"), str(library), md.guid, repr(DT),
-                          str(steps), f"{vr['normal_force']},{vr['energy']}", *setters],
+                          str(steps), outputs, *setters],
                          check=True, capture_output=True, text=True).stdout
     return json.loads(out)["do_step_us"]
 
 
-def reads(r, label):
+def reads(r):
     """Doubles a substep reads from its matrices (the massless edge with friction, its nodes
     sliding): (lifted, pressed). Lifted: B_hat w on every contact row and B_hat u on the normal
     ones (B_hat's residual block is lower trapezoidal: its row i has min(i + 1, k) entries).
     Pressed adds, per residual evaluation, W_C (2 n_c x n_c) and the LU of the Newton system on
     the active nodes (active^2), and once the contact forces B_hat^T lambda: B_hat's trapezoid
-    on every contact row, or (43d301c only) B_hat^T's n_c compacted columns, their residual
-    rows upper trapezoidal."""
+    on every contact row, or where the run says "compacted_forces" (43d301c's code) B_hat^T's
+    n_c compacted columns, their residual rows upper trapezoidal."""
     nc, m, k = r["unknowns"] // 2, r["modes"], r["residual_modes"]
     trapezoid = lambda rows, width: sum(min(i + 1, width) for i in range(rows))  # noqa: E731
     lifted = m * 2 * nc + trapezoid(2 * nc, k) + m * nc + trapezoid(nc, k)
     per_evaluation = 2 * nc * nc + r["active_nodes"] ** 2
-    forces = ((m + min(nc, k)) * nc + trapezoid(nc, max(k - nc, 0)) if "43d301c" in label
+    forces = ((m + min(nc, k)) * nc + trapezoid(nc, max(k - nc, 0)) if r.get("compacted_forces")
               else m * 2 * nc + trapezoid(2 * nc, k))
     return lifted, lifted + r["residual_evaluations"] * per_evaluation + forces
 
 
 def derive(runs):
     """The ratios the prose quotes, for every run."""
-    for label, rows in runs.items():
+    for rows in runs.values():
         for r in rows:
             r["pressed_over_lifted"] = r["substep_us_pressed"] / r["substep_us_lifted"]
             if "residual_modes" in r and r["edge"] == MASSLESS:
-                lifted, pressed = reads(r, label)
+                lifted, pressed = reads(r)
                 r["reads_lifted"], r["reads_pressed"] = lifted, pressed
                 r["reads_ratio"] = pressed / lifted
             if "w_product_us" in r:
@@ -156,7 +166,7 @@ def table(runs):
             lines.append(f"| {label} | {r['nx']} | {r['unknowns']} | {r['dt']:g} | {edge} | "
                          f"{r['substep_us_pressed']:.0f} | "
                          f"{r['substep_us_lifted']:.0f} | "
-                         f"{r['substep_us_pressed'] / r['substep_us_lifted']:.2f} | "
+                         f"{r['pressed_over_lifted']:.2f} | "
                          f"{r['newton_iterations']:.2f} | {r['residual_evaluations']:.2f} | "
                          f"{r['factorizations']:.3f} | "
                          + (f"{r['updates']:.3f}" if "updates" in r else "–") +
@@ -165,8 +175,8 @@ def table(runs):
                          + (f"{r['fmu_host_do_step_us']:.0f}" if r.get("fmu_host_do_step_us") else "–")
                          + " | " + (f"{r['reads_ratio']:.2f}" if "reads_ratio" in r else "–") + " | "
                          + (f"{r['w_product_us']:.1f} | "
-                            f"{r['substep_us_pressed'] / r['w_product_us']:.1f} | "
-                            f"{r['substep_us_lifted'] / r['w_product_us']:.1f} |"
+                            f"{r['pressed_in_w_products']:.1f} | "
+                            f"{r['lifted_in_w_products']:.1f} |"
                             if "w_product_us" in r else "– | – | – |"))
     return "\n".join(lines) + "\n"
 

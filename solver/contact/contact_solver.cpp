@@ -234,7 +234,7 @@ double ContactSolver::newton_entry(const ContactProblem& p,
                                    const Pattern& P,
                                    Eigen::Index a, Eigen::Index b) const {
     const Eigen::Index n = p.gap_limit.size();
-    if (!in_system(P, n, b)) return a == b ? p.W(b, b) : 0.0;
+    if (!in_system(P, n, b)) return a == b ? diagonal_[b] : 0.0;
     if (!in_system(P, n, a)) return 0.0;
     if (b < n && (P[b] == 2 || P[b] == -2)) {
         const double sf = P[b] > 0 ? p.friction[b] : -p.friction[b];

@@ -105,21 +105,48 @@ def fmu_host_per_do_step(build, path, nx, modes=MODES, steps=STEPS):
     return json.loads(out)["do_step_us"]
 
 
+def trapezoid(rows, width):
+    """Entries in the first `rows` rows of a lower trapezoid `width` wide (row i: min(i + 1, width))."""
+    return sum(min(i + 1, width) for i in range(rows))
+
+
+def lifted_reads(r):
+    """Doubles a lifted substep reads: B_hat w on every contact row and B_hat u on the normal
+    ones (B_hat's residual block is lower trapezoidal)."""
+    nc, m, k = r["unknowns"] // 2, r["modes"], r["residual_modes"]
+    return m * 2 * nc + trapezoid(2 * nc, k) + m * nc + trapezoid(nc, k)
+
+
+def forces_reads(r, compacted):
+    """Doubles the contact forces B_hat^T lambda read: B_hat's trapezoid on every contact row,
+    or (compacted, 43d301c's code) B_hat^T's n_c compacted columns, their residual rows upper
+    trapezoidal."""
+    nc, m, k = r["unknowns"] // 2, r["modes"], r["residual_modes"]
+    if compacted:
+        return (m + min(nc, k)) * nc + trapezoid(nc, max(k - nc, 0))
+    return m * 2 * nc + trapezoid(2 * nc, k)
+
+
 def reads(r):
     """Doubles a substep reads from its matrices (the massless edge with friction, its nodes
-    sliding): (lifted, pressed). Lifted: B_hat w on every contact row and B_hat u on the normal
-    ones (B_hat's residual block is lower trapezoidal: its row i has min(i + 1, k) entries).
-    Pressed adds, per residual evaluation, W_C (2 n_c x n_c) and the LU of the Newton system on
-    the active nodes (active^2), and once the contact forces B_hat^T lambda: B_hat's trapezoid
-    on every contact row, or where the run says "compacted_forces" (43d301c's code) B_hat^T's
-    n_c compacted columns, their residual rows upper trapezoidal."""
-    nc, m, k = r["unknowns"] // 2, r["modes"], r["residual_modes"]
-    trapezoid = lambda rows, width: sum(min(i + 1, width) for i in range(rows))  # noqa: E731
-    lifted = m * 2 * nc + trapezoid(2 * nc, k) + m * nc + trapezoid(nc, k)
+    sliding): (lifted, pressed). Pressed adds to lifted, per residual evaluation, W_C
+    (2 n_c x n_c) and the LU of the Newton system on the active nodes (active^2), and once the
+    contact forces, compacted where the run says "compacted_forces"."""
+    nc, lifted = r["unknowns"] // 2, lifted_reads(r)
     per_evaluation = 2 * nc * nc + r["active_nodes"] ** 2
-    forces = ((m + min(nc, k)) * nc + trapezoid(nc, max(k - nc, 0)) if r.get("compacted_forces")
-              else m * 2 * nc + trapezoid(2 * nc, k))
-    return lifted, lifted + r["residual_evaluations"] * per_evaluation + forces
+    return lifted, (lifted + r["residual_evaluations"] * per_evaluation +
+                    forces_reads(r, r.get("compacted_forces", False)))
+
+
+def floor_reads(r):
+    """The fewest doubles any pressed substep of this scene reads, whatever its solve: the
+    lifted one's, the forces compacted, and per residual evaluation the Newton system's LU on
+    the active nodes and a check of the rows the system does not fix (the slipping nodes'
+    tangential rows and the open nodes' normal ones, n_c rows in all) against the active
+    nodes' compacted columns."""
+    nc, active = r["unknowns"] // 2, r["active_nodes"]
+    return (lifted_reads(r) + forces_reads(r, True) +
+            r["residual_evaluations"] * (nc * active + active ** 2))
 
 
 def derive(runs):
@@ -131,6 +158,7 @@ def derive(runs):
                 lifted, pressed = reads(r)
                 r["reads_lifted"], r["reads_pressed"] = lifted, pressed
                 r["reads_ratio"] = pressed / lifted
+                r["floor_reads_ratio"] = floor_reads(r) / lifted
             if "w_product_us" in r:
                 r["pressed_in_w_products"] = r["substep_us_pressed"] / r["w_product_us"]
                 r["lifted_in_w_products"] = r["substep_us_lifted"] / r["w_product_us"]
@@ -150,15 +178,16 @@ def table(runs):
              "(`reads()` in the script: lifted B_hat w and B_hat u; pressed adds W_C and the "
              "Newton system's LU per residual evaluation and the forces' B_hat^T once, compacted "
              "in 43d301c only), as a ratio, the floor of pressed / lifted where both run at one "
-             "rate of reads; and one product with the dense W alone (m × m, in the same process), the unit in which "
+             "rate of reads, and the same ratio at the floor of any solve (`floor_reads()`: the forces "
+             "compacted, the check on the rows the Newton system does not fix); and one product with the dense W alone (m × m, in the same process), the unit in which "
              "the pressed and lifted substeps are also given. Labels name the code and, where not "
              "the portable build/, the build. From \"after (607f689)\" on, times are medians of 5 "
              "alternating rounds (the FMU's of 3).", "",
              "| code | nx | unknowns | substep s | edge | pressed µs | lifted µs | pressed / lifted | "
              "Newton its | W products | factorizations | updates | state changes | FMU doStep µs | "
-             "FMU doStep µs, C host | pressed / lifted in reads | "
+             "FMU doStep µs, C host | pressed / lifted in reads | any solve's floor, in reads | "
              "one W product µs | pressed, in W products | lifted, in W products |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for label, rows in runs.items():
         for r in rows:
             fmu = r.get("fmu_do_step_us")
@@ -174,6 +203,7 @@ def table(runs):
                          + (f"{fmu:.0f}" if fmu is not None else "–") + " | "
                          + (f"{r['fmu_host_do_step_us']:.0f}" if r.get("fmu_host_do_step_us") else "–")
                          + " | " + (f"{r['reads_ratio']:.2f}" if "reads_ratio" in r else "–") + " | "
+                         + (f"{r['floor_reads_ratio']:.2f}" if "floor_reads_ratio" in r else "–") + " | "
                          + (f"{r['w_product_us']:.1f} | "
                             f"{r['pressed_in_w_products']:.1f} | "
                             f"{r['lifted_in_w_products']:.1f} |"

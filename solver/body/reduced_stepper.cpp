@@ -126,6 +126,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
 // What a new stepper of params_ is, but for the discretization, the basis and the operators.
 void ReducedStepper::start_run() {
     damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
+    if (nx_ > 0)
+        damping_xx_ = params_.damping_mass * mass_xx_ + params_.damping_stiffness * stiffness_xx_;
     options_ = ContactSolverOptions{};
     options_.tolerance = params_.contact_tolerance;
     // Its substep's cost is the contact solve's (benchmarks/results/contact_profile.md).
@@ -219,12 +221,20 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     const Eigen::Index n = size();
     const auto z = s.u.head(n), zdot = s.v.head(n);
     const double tau = s.v[n], tc = s.v[n + 1], top = s.u[n + 1], gap = s.u[n] - top;
-    const double kinetic = 0.5 * mass_form(zdot) + zdot.dot(m_s_ * tau + m_c_ * tc) +
+    double tail_kinetic = 0, tail_strain = 0;  // the X block's terms
+    if (nx_ > 0) {
+        const TailProducts& t = tail_products(z, zdot);
+        const auto zdot_x = zdot.tail(nx_);
+        tail_kinetic = 2 * zdot_x.dot(t.mass_modes) + zdot_x.dot(t.mass_x);
+        tail_strain = z.tail(nx_).dot(t.stiffness);
+    }
+    const double kinetic = 0.5 * (zdot.cwiseAbs2().dot(mass_) + tail_kinetic) +
+                           zdot.dot(m_s_ * tau + m_c_ * tc) +
                            0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) +
                            0.5 * plate_mass_ * tc * tc;
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
-    const double strain = 0.5 * stiffness_form(z) + z.dot(a_s_) * gap +
+    const double strain = 0.5 * (z.cwiseAbs2().dot(omega2_) + tail_strain) + z.dot(a_s_) * gap +
                           0.5 * s_ss_ * gap * gap + 0.5 * stiffness_tt_ * top * top;
     // Both are positive semi-definite forms, here expanded into terms that cancel for a body
     // moving rigidly: what is left below zero is round-off (issue 42 saw -2.7e-13 J/m), and
@@ -232,27 +242,25 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     return {std::max(kinetic, 0.0), std::max(strain, 0.0)};
 }
 
-double ReducedStepper::tail_mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+const ReducedStepper::TailProducts& ReducedStepper::tail_products(
+    const Eigen::Ref<const Eigen::VectorXd>& z, const Eigen::Ref<const Eigen::VectorXd>& zdot) const {
+    TailProducts& t = tail_products_;
+    if (t.zdot.size() != zdot.size() || t.zdot != zdot || t.z_x != z.tail(nx_)) {
+        t.zdot = zdot;
+        t.z_x = z.tail(nx_);
+        t.mass_modes.noalias() = mass_mx_.transpose() * zdot.head(modes());
+        t.mass_x.noalias() = mass_xx_ * zdot.tail(nx_);
+        t.stiffness.noalias() = stiffness_xx_ * z.tail(nx_);
+    }
+    return t;
+}
+
+double ReducedStepper::tail_damping_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
     if (nx_ == 0) return 0;
-    form_.noalias() = 2 * mass_mx_.transpose() * x.head(modes());
-    form_.noalias() += mass_xx_ * x.tail(nx_);
+    form_.noalias() = damping_xx_ * x.tail(nx_);
+    if (params_.damping_mass != 0)
+        form_.noalias() += (2 * params_.damping_mass) * mass_mx_.transpose() * x.head(modes());
     return x.tail(nx_).dot(form_);
-}
-
-double ReducedStepper::tail_stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
-    if (nx_ == 0) return 0;
-    form_.noalias() = stiffness_xx_ * x.tail(nx_);
-    return x.tail(nx_).dot(form_);
-}
-
-double ReducedStepper::mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
-    const double diagonal = x.cwiseAbs2().dot(mass_);
-    return nx_ == 0 ? diagonal : diagonal + tail_mass_form(x);
-}
-
-double ReducedStepper::stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const {
-    const double diagonal = x.cwiseAbs2().dot(omega2_);
-    return nx_ == 0 ? diagonal : diagonal + tail_stiffness_form(x);
 }
 
 void ReducedStepper::solve_step(const StepOperators& ops, Eigen::Ref<Eigen::VectorXd> x) const {
@@ -264,10 +272,9 @@ void ReducedStepper::solve_step(const StepOperators& ops, Eigen::Ref<Eigen::Vect
     Eigen::VectorXd& t = tail_;
     t = x.tail(nx_);
     t.noalias() -= ops.tail_coupling.transpose() * x.head(modes());
-    ops.tail_schur.solveInPlace(t);
+    x.tail(nx_).noalias() = ops.tail_schur_inverse * t;
     x.head(nd_) = x.head(nd_).cwiseProduct(ops.inverse_stiffness.head(nd_));
-    x.head(modes()).noalias() -= ops.tail_coupling * t;
-    x.tail(nx_) = t;
+    x.head(modes()).noalias() -= ops.tail_coupling * x.tail(nx_);
 }
 
 double ReducedStepper::energy(const ReducedState& s) const {
@@ -395,9 +402,12 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
         Eigen::MatrixXd schur = c * mass_xx_ +
                                 (1 + c2 * params_.damping_stiffness) * stiffness_xx_ -
                                 c * mass_mx_.transpose() * ops->tail_coupling;
-        ops->tail_schur.compute(0.5 * (schur + schur.transpose()));
-        if (ops->tail_schur.info() != Eigen::Success)
+        const Eigen::LLT<Eigen::MatrixXd> factor(0.5 * (schur + schur.transpose()));
+        if (factor.info() != Eigen::Success)
             throw std::runtime_error("the tangential-mass edge's step matrix is not positive definite");
+        ops->tail_schur_inverse = factor.solve(Eigen::MatrixXd::Identity(nx_, nx_));
+        ops->tail_schur_inverse =
+            0.5 * (ops->tail_schur_inverse + ops->tail_schur_inverse.transpose()).eval();
         Eigen::MatrixXd response = Bhat_.transpose();  // K^-1 B_hat^T
         for (Eigen::Index j = 0; j < response.cols(); ++j) solve_step(*ops, response.col(j));
         ops->delassus = Bhat_ * response;
@@ -456,10 +466,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
            omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
     if (nx_ > 0) {  // M_hat's and A_hat's X block
+        const TailProducts& t = tail_products(z, zdot);
         rhs_.head(modes()).noalias() += c2 * mass_mx_ * zdot.tail(nx_);
-        rhs_.tail(nx_).noalias() += c2 * mass_xx_ * zdot.tail(nx_);
-        rhs_.tail(nx_).noalias() += c2 * mass_mx_.transpose() * zdot.head(modes());
-        rhs_.tail(nx_).noalias() -= stiffness_xx_ * z.tail(nx_);
+        rhs_.tail(nx_) += c2 * (t.mass_modes + t.mass_x) - t.stiffness;
     }
     w_ = rhs_;
     solve_step(ops, w_);
@@ -519,8 +528,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const double du_t = 2 * w_t;
     du_ = 2 * w_;
     if (params_.damped())
-        report.work.damping = (du_.cwiseAbs2().dot(damping_) + alpha * tail_mass_form(du_) +
-                               beta * tail_stiffness_form(du_) + 2 * du_t * alpha * m_t_.dot(du_) +
+        report.work.damping = (du_.cwiseAbs2().dot(damping_) + tail_damping_form(du_) +
+                               2 * du_t * alpha * m_t_.dot(du_) +
                                (alpha * mass_tt_ + beta * stiffness_tt_) * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the

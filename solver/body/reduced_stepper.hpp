@@ -90,7 +90,10 @@ private:
         // The tangential-mass edge: K = [D, c M_dX; c M_Xd, K_XX] (c = 4/dt^2 + 2/dt alpha),
         // solved through D^-1 c M_dX and the Schur complement K_XX - c^2 M_Xd D^-1 M_dX.
         Eigen::MatrixXd tail_coupling;      // D^-1 c M_dX on the modes' rows (m x n_X)
-        Eigen::LLT<Eigen::MatrixXd> tail_schur;
+        // The Schur complement's inverse (n_c square), formed once a substep size: a
+        // matrix-vector product in place of two triangular solves with its Cholesky factor,
+        // which read the same entries at a lower rate (benchmarks/results/contact_ab.md).
+        Eigen::MatrixXd tail_schur_inverse;
         Eigen::MatrixXd delassus;           // B T K^-1 T^T B^T, (N, T) x (N, T)
         // Force control, the plate's bordered row: K = [D, c m_t; c m_t^T, k_pp] with
         // c = 4/dt^2 + 2/dt alpha, h = D^-1 m_t, and its Schur complement k_pp - c^2 m_t^T h.
@@ -100,11 +103,20 @@ private:
     const StepOperators& operators_for(double dt);
     // x <- K^-1 x for the step matrix K of ops (x holds the right-hand side).
     void solve_step(const StepOperators& ops, Eigen::Ref<Eigen::VectorXd> x) const;
-    // x^T M_hat x and x^T A_hat x, and M_hat x.
-    double mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-    double stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-    double tail_mass_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-    double tail_stiffness_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+    // The X block's products at a state: M_mX^T zdot_m, M_XX zdot_X and A_XX z_X. A step's
+    // energies at its end and the next substep's right-hand side both need them (with outputs
+    // read every step of one substep, each once a substep): formed once, kept with the zdot
+    // and z_X they are of.
+    struct TailProducts {
+        Eigen::VectorXd zdot, z_x;
+        Eigen::VectorXd mass_modes, mass_x, stiffness;
+    };
+    mutable TailProducts tail_products_;
+    const TailProducts& tail_products(const Eigen::Ref<const Eigen::VectorXd>& z,
+                                      const Eigen::Ref<const Eigen::VectorXd>& zdot) const;
+    // x^T C_hat x's X block terms, C_hat = alpha M_hat + beta A_hat: one product with
+    // damping_xx_ where the damping work read M_XX and A_XX each.
+    double tail_damping_form(const Eigen::Ref<const Eigen::VectorXd>& x) const;
 
     SceneParameters params_;
     Discretization disc_;
@@ -124,6 +136,7 @@ private:
     Eigen::MatrixXd mass_mx_;       // m x n_X
     Eigen::MatrixXd mass_xx_;       // n_X x n_X
     Eigen::MatrixXd stiffness_xx_;  // n_X x n_X
+    Eigen::MatrixXd damping_xx_;    // alpha M_XX + beta A_XX (of the run's parameters)
     Eigen::LLT<Eigen::MatrixXd> stiffness_xx_factor_;
     Eigen::MatrixXd Bhat_;     // B T: signed rows of the basis at the contact unknowns (N, T)
     Eigen::VectorXd Blift_;    // B lift

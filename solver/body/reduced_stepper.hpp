@@ -10,7 +10,7 @@
 // The tangential-mass edge (reduced_edge) appends the contact x dofs X to z as coordinates of
 // their own (the basis' constraint modes): M_hat and A_hat gain a dense X block, coupled to
 // the modes through the mass only, and the step matrix is solved through its Schur
-// complement on X (n_c square, factored once per substep size).
+// complement on X (n_c square, inverted once per substep size).
 #pragma once
 
 #include <array>

@@ -79,20 +79,13 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
         Blift_[i] = -S[y];
         Blift_[nc + i] = S[x];
     }
-    Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
-    for (int dof : d.clamped_dofs) all_ex[dof] = dof % 2 == 0;
-    const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
-    Eigen::VectorXd M_fx(nf), A_fx(nf);
-    for (Eigen::Index j = 0; j < nf; ++j) {
-        M_fx[j] = M_ex[d.free_dofs[static_cast<size_t>(j)]];
-        A_fx[j] = A_ex[d.free_dofs[static_cast<size_t>(j)]];
-    }
-    clamp_x_.mass = T_.transpose() * M_fx;
-    clamp_x_.stiffness = T_.transpose() * A_fx;
-    clamp_x_.mass_lift = S.dot(M_fx);
-    clamp_x_.stiffness_lift = S.dot(A_fx);
-    clamp_x_.mass_top = all_e.dot(M_ex);
-    clamp_x_.stiffness_top = all_e.dot(A_ex);
+    const ClampXRows x_rows = clamp_x_rows(d);
+    clamp_x_.mass = T_.transpose() * x_rows.mass_free;
+    clamp_x_.stiffness = T_.transpose() * x_rows.stiffness_free;
+    clamp_x_.mass_lift = S.dot(x_rows.mass_free);
+    clamp_x_.stiffness_lift = S.dot(x_rows.stiffness_free);
+    clamp_x_.mass_top = x_rows.mass_top;
+    clamp_x_.stiffness_top = x_rows.stiffness_top;
 
     problem_.a.resize(nb);
     problem_.gap_limit.resize(nc);
@@ -121,23 +114,12 @@ void CraigBamptonStepper::restart(const SceneParameters& params) {
 
 State CraigBamptonStepper::from_full(const State& full) const {
     const Discretization& d = disc_;
-    const int top_dof = d.clamped_dofs.back();
-    const Eigen::Index n = size(), nf = static_cast<Eigen::Index>(d.free_dofs.size());
+    const Eigen::Index n = size();
     State s;
-    s.u.resize(n + 2);
-    s.v.resize(n + 2);
-    s.u[n] = s.u[n + 1] = full.u[top_dof];
-    s.v[n] = s.v[n + 1] = full.v[top_dof];
-    Eigen::VectorXd u(nf), v(nf);
-    for (Eigen::Index j = 0; j < nf; ++j) {
-        u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - lift_[j] * s.u[n];
-        v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - lift_[j] * s.v[n];
-    }
+    Eigen::VectorXd u, v;  // the free dofs' motion less the lift's
+    split_off_lift(d, d.clamped_dofs.back(), lift_, full, n, s, u, v);
     s.u.head(n) = stiffness_factor_.solve(T_.transpose() * (d.A_free * u));
     s.v.head(n) = stiffness_factor_.solve(T_.transpose() * (d.A_free * v));
-    s.lambda = full.lambda;
-    s.sticking = full.sticking;
-    s.time = full.time;
     return s;
 }
 
@@ -146,19 +128,7 @@ void CraigBamptonStepper::to_full(const State& s, State& full) const {
     const Eigen::Index n = size();
     const Eigen::VectorXd u = T_ * s.u.head(n) + lift_ * s.u[n];
     const Eigen::VectorXd v = T_ * s.v.head(n) + lift_ * s.v[n];
-    full.u.setZero(d.mesh.num_dofs());
-    full.v.setZero(d.mesh.num_dofs());
-    for (size_t j = 0; j < d.free_dofs.size(); ++j) {
-        full.u[d.free_dofs[j]] = u[static_cast<Eigen::Index>(j)];
-        full.v[d.free_dofs[j]] = v[static_cast<Eigen::Index>(j)];
-    }
-    for (int dof : d.clamped_dofs) {
-        full.u[dof] = dof % 2 == 1 ? s.u[n + 1] : 0.0;
-        full.v[dof] = dof % 2 == 1 ? s.v[n + 1] : 0.0;
-    }
-    full.lambda = s.lambda;
-    full.sticking = s.sticking;
-    full.time = s.time;
+    expand_to_full(d, u, v, s, n, full);
 }
 
 State CraigBamptonStepper::initial_state(double top_displacement) const {
@@ -301,16 +271,8 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     report.work.clamp = r * du_t;
-    double rx = clamp_x_.mass.dot(c1 * w_ - c2 * ydot) +
-                clamp_x_.mass_lift * (c1 * w_t - c2 * lift_rate) +
-                clamp_x_.mass_top * (c1 * w_t - c2 * top_rate) + clamp_x_.stiffness.dot(y + w_) +
-                clamp_x_.stiffness_lift * (lift_at + w_t) + clamp_x_.stiffness_top * (top + w_t);
-    if (params_.damped())
-        rx += 0.5 * c2 *
-              (alpha * (clamp_x_.mass.dot(du_) + (clamp_x_.mass_lift + clamp_x_.mass_top) * du_t) +
-               beta * (clamp_x_.stiffness.dot(du_) +
-                       (clamp_x_.stiffness_lift + clamp_x_.stiffness_top) * du_t));
-    report.top_reaction_x = rx;
+    report.top_reaction_x = clamp_x_.residual(
+        {c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()}, y, ydot, w_, du_);
 
     record_contact(
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,

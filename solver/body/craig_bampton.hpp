@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "body.hpp"
+#include "clamp_rows.hpp"
 #include "contact_solver.hpp"
 #include "stepper.hpp"
 
@@ -80,10 +81,7 @@ private:
     Eigen::VectorXd m_s_, m_c_, a_s_, a_c_, m_t_, a_t_;
     Eigen::VectorXd damping_coupling_;  // C's (y, lift + clamp) column: alpha m_t + beta a_t
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, s_cs_ = 0, e_cc_ = 0;
-    struct ClampRows {
-        Eigen::VectorXd mass, stiffness;
-        double mass_lift = 0, stiffness_lift = 0, mass_top = 0, stiffness_top = 0;
-    } clamp_x_;
+    ClampRows clamp_x_;
     std::array<std::unique_ptr<StepOperators>, 2> cache_;
     int operator_builds_ = 0;
     double setup_seconds_ = 0, highest_hz_ = 0;

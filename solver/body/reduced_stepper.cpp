@@ -1,5 +1,7 @@
 #include "reduced_stepper.hpp"
 
+#include "clamp_rows.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -86,14 +88,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     stiffness_tt_ = e_cc_ - s_ss_;
 
     // The clamped x dofs' rows against the basis, the lift and the clamp (residual massless).
-    Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
-    for (int dof : d.clamped_dofs) all_ex[dof] = dof % 2 == 0;
-    const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
-    Eigen::VectorXd M_fx(nf_), A_fx(nf_);
-    for (Eigen::Index j = 0; j < nf_; ++j) {
-        M_fx[j] = M_ex[d.free_dofs[static_cast<size_t>(j)]];
-        A_fx[j] = A_ex[d.free_dofs[static_cast<size_t>(j)]];
-    }
+    const ClampXRows x_rows = clamp_x_rows(d);
+    const Eigen::VectorXd &M_fx = x_rows.mass_free, &A_fx = x_rows.stiffness_free;
     clamp_x_.mass = Eigen::VectorXd::Zero(n);
     clamp_x_.mass.head(m) = basis_.modes.transpose() * M_fx;
     clamp_x_.mass.tail(nx_) = TC.transpose() * M_fx;
@@ -102,8 +98,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
         TC.transpose() * A_fx;
     clamp_x_.mass_lift = S.dot(M_fx);
     clamp_x_.stiffness_lift = S.dot(A_fx);
-    clamp_x_.mass_top = all_e.dot(M_ex);
-    clamp_x_.stiffness_top = all_e.dot(A_ex);
+    clamp_x_.mass_top = x_rows.mass_top;
+    clamp_x_.stiffness_top = x_rows.stiffness_top;
 
     start_run();
     problem_.a.resize(2 * nc);
@@ -164,19 +160,10 @@ std::string ReducedStepper::summary() const {
 
 State ReducedStepper::from_full(const State& full) const {
     const Discretization& d = basis_disc();
-    const int top_dof = d.top_y_dof();  // the clamp's (or the plate's) value
     const Eigen::Index n = size();
     State s;
-    s.u.resize(n + 2);
-    s.v.resize(n + 2);
-    s.u[n] = s.u[n + 1] = full.u[top_dof];
-    s.v[n] = s.v[n + 1] = full.v[top_dof];
-    const Eigen::Index nf = static_cast<Eigen::Index>(d.free_dofs.size());
-    Eigen::VectorXd u(nf), v(nf);
-    for (Eigen::Index j = 0; j < nf; ++j) {
-        u[j] = full.u[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.u[n];
-        v[j] = full.v[d.free_dofs[static_cast<size_t>(j)]] - basis_.lift[j] * s.v[n];
-    }
+    Eigen::VectorXd u, v;  // the free dofs' motion less the lift's
+    split_off_lift(d, d.top_y_dof(), basis_.lift, full, n, s, u, v);  // the clamp's (or the plate's) value
     const auto project = [&](const Eigen::VectorXd& x, auto&& z) {  // A_hat^-1 T^T A x
         const Eigen::VectorXd Ax = d.A_free * x;
         z.head(nd_) << basis_.modes.transpose() * Ax, basis_.residual.transpose() * Ax;
@@ -185,9 +172,6 @@ State ReducedStepper::from_full(const State& full) const {
     };
     project(u, s.u.head(n));
     project(v, s.v.head(n));
-    s.lambda = full.lambda;
-    s.sticking = full.sticking;
-    s.time = full.time;
     return s;
 }
 
@@ -198,19 +182,7 @@ void ReducedStepper::to_full(const State& s, State& full) const {
                               basis_.constraint * s.u.segment(nd_, nx_) + basis_.lift * s.u[n];
     const Eigen::VectorXd v = basis_.modes * s.v.head(m) + basis_.residual * s.v.segment(m, nd_ - m) +
                               basis_.constraint * s.v.segment(nd_, nx_) + basis_.lift * s.v[n];
-    full.u.setZero(d.mesh.num_dofs());
-    full.v.setZero(d.mesh.num_dofs());
-    for (size_t j = 0; j < d.free_dofs.size(); ++j) {
-        full.u[d.free_dofs[j]] = u[static_cast<Eigen::Index>(j)];
-        full.v[d.free_dofs[j]] = v[static_cast<Eigen::Index>(j)];
-    }
-    for (int dof : d.clamped_dofs) {
-        full.u[dof] = dof % 2 == 1 ? s.u[n + 1] : 0.0;
-        full.v[dof] = dof % 2 == 1 ? s.v[n + 1] : 0.0;
-    }
-    full.lambda = s.lambda;
-    full.sticking = s.sticking;
-    full.time = s.time;
+    expand_to_full(d, u, v, s, n, full);
 }
 
 State ReducedStepper::initial_state(double top_displacement) const {
@@ -546,19 +518,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy
     // is in E).
     report.work.clamp = plate ? -load.top_force * du_t : r * du_t;
-    // The clamped x rows' residual (they do not move: no work), recovered from the basis as
-    // the full body's: M_cf a + A_cf u^{k+1/2} + A_cc u_c^{k+1/2} + C_cf vbar.
-    const double mass_x = clamp_x_.mass.dot(c1 * w_ - c2 * zdot) +
-                          clamp_x_.mass_lift * (c1 * w_t - c2 * lift_rate) +
-                          clamp_x_.mass_top * (c1 * w_t - c2 * top_rate);
-    double rx = mass_x + clamp_x_.stiffness.dot(z + w_) +
-                clamp_x_.stiffness_lift * (lift_at + w_t) + clamp_x_.stiffness_top * (top + w_t);
-    if (params_.damped())
-        rx += 0.5 * c2 *
-              (alpha * (clamp_x_.mass.dot(du_) + (clamp_x_.mass_lift + clamp_x_.mass_top) * du_t) +
-               beta * (clamp_x_.stiffness.dot(du_) +
-                       (clamp_x_.stiffness_lift + clamp_x_.stiffness_top) * du_t));
-    report.top_reaction_x = rx;
+    // The clamped x rows' residual, recovered from the basis as the full body's.
+    report.top_reaction_x = clamp_x_.residual(
+        {c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()}, z, zdot, w_, du_);
 
     record_contact(
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 
+#include "clamp_rows.hpp"
 #include "contact_solver.hpp"
 #include "modal_basis.hpp"
 #include "body.hpp"
@@ -147,10 +148,7 @@ private:
     Eigen::VectorXd m_t_;      // m_s + m_c: the clamp and the lift moving together
     Eigen::VectorXd damping_;  // diag(C_hat) = alpha diag(M_hat) + beta diag(A_hat)
     // The clamped x rows (their reaction): against z, the lift and the clamp, mass and stiffness.
-    struct ClampRows {
-        Eigen::VectorXd mass, stiffness;
-        double mass_lift = 0, stiffness_lift = 0, mass_top = 0, stiffness_top = 0;
-    } clamp_x_;
+    ClampRows clamp_x_;
     Eigen::Index nf_ = 0;  // free dofs
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, e_cc_ = 0;
     double mass_tt_ = 0;   // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)

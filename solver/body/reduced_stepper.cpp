@@ -405,10 +405,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const int nc = num_contact_nodes();
     const bool friction = params_.friction_coefficient > 0;
     if (problem_dt_ != dt || problem_friction_ != friction) {
-        problem_.W = friction ? ops.delassus : Eigen::MatrixXd(ops.delassus.topLeftCorner(nc, nc));
-        problem_.a.resize(friction ? 2 * nc : nc);
-        problem_.friction.setConstant(friction ? nc : 0, params_.friction_coefficient);
-        problem_.revision = ContactProblem::next_revision();
+        problem_.set_operator(ops.delassus, params_.friction_coefficient);
         problem_dt_ = dt;
         problem_friction_ = friction;
         if (saved_factorization_.substep == dt) solver_.factor_at(saved_factorization_.pattern);

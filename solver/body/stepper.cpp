@@ -248,12 +248,7 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
 }
 
 void Stepper::setup_contact_problem(const Factor& f) {
-    const int nc = num_contact_nodes();
-    const bool friction = params_.friction_coefficient > 0;
-    problem_.W = friction ? f.delassus : Eigen::MatrixXd(f.delassus.topLeftCorner(nc, nc));
-    problem_.a.resize(friction ? 2 * nc : nc);
-    problem_.friction.setConstant(friction ? nc : 0, params_.friction_coefficient);
-    problem_.revision = ContactProblem::next_revision();
+    problem_.set_operator(f.delassus, params_.friction_coefficient);
     snapshot_.delassus_diagonal = f.delassus.diagonal();
     problem_factor_ = f.id;
 }

@@ -15,6 +15,15 @@ std::uint64_t ContactProblem::next_revision() {
     return ++counter;
 }
 
+void ContactProblem::set_operator(const Eigen::MatrixXd& delassus, double friction_coefficient) {
+    const Eigen::Index n = delassus.rows() / 2;
+    const bool friction = friction_coefficient > 0;
+    W = friction ? delassus : Eigen::MatrixXd(delassus.topLeftCorner(n, n));
+    a.resize(friction ? 2 * n : n);
+    this->friction.setConstant(friction ? n : 0, friction_coefficient);
+    revision = next_revision();
+}
+
 double ContactProblem::RateLaw::coefficient(double base, double slip, double* derivative) const {
     const double v = std::abs(slip) / slip_time, sign = slip >= 0 ? 1.0 : -1.0;
     double F = base + viscous * v, dF = viscous;

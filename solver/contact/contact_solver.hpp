@@ -56,6 +56,10 @@ struct ContactProblem {
     // reuse. next_revision() gives process-wide unique values.
     std::uint64_t revision = 0;
     static std::uint64_t next_revision();
+    // W from a body's Delassus operator on the normal and tangential unknowns (2n square): all
+    // of it with friction, its normal block without (friction_coefficient 0); a and friction
+    // sized to match, and a new revision.
+    void set_operator(const Eigen::MatrixXd& delassus, double friction_coefficient);
     bool has_friction() const { return W.rows() == 2 * gap_limit.size(); }
 };
 

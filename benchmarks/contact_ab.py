@@ -63,7 +63,7 @@ def table(results):
              "pressed / first build's, per round | lifted / first build's, per round |",
              "|---|---|---|---|---|---|---|---|---|"]
     for name, r in results.items():
-        for label, t in summarize(r["builds"]).items():
+        for label, t in r["builds"].items():
             lines.append(f"| {name} | {r.get('edge', 'massless')} | {label} | {r['rounds']} | {t['pressed_median']:.1f} | "
                          f"{t['lifted_median']:.1f} | "
                          f"{t['pressed_median'] / t['lifted_median']:.2f} | "

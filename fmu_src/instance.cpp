@@ -60,10 +60,13 @@ int Instance::set_debug_logging(const char* function, bool on, size_t n,
             return Status::error;
         }
     }
+    // Logging on for listed categories: those, and only those (not what instantiation's
+    // loggingOn enabled before); off for listed ones: those off. No categories: all of them.
     logging_on = on;
     for (size_t c = 0; c < category_on.size(); ++c) {
-        if (n == 0) category_on[c] = on;  // no categories: all of them
-        else if (requested[c]) category_on[c] = on;
+        if (n == 0) category_on[c] = on;
+        else if (on) category_on[c] = requested[c];
+        else if (requested[c]) category_on[c] = false;
     }
     if (on && n > 0 && requested[static_cast<size_t>(LogCategory::all)]) category_on.fill(true);
     return Status::ok;

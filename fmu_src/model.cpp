@@ -172,7 +172,7 @@ void ContactBodyModel::build_simulation(const Values& values) {
         // The same parameters, and a mesh file as it was when the body was built from it.
         if (sim_ && same_discretization(sim_->body().parameters(), scene) &&
             (scene.mesh.empty() ||
-             gmsh_file_digest(scene.mesh) == sim_->body().discretization().mesh.file_digest)) {
+             gmsh_file_digest(scene.mesh, max_nodes) == sim_->body().discretization().mesh.file_digest)) {
             sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
                           values.foundation_velocity);
         } else {

@@ -125,6 +125,10 @@ void check_parameters(const SceneParameters& p) {
     const int edge = static_cast<int>(p.reduced_edge);
     if (edge < 0 || edge > 2)
         reject("reduced_edge", "0 (by_variant), 1 (massless) or 2 (tangential_mass)", edge);
+    if (p.modes > 0) check_reduced_edge(p);  // (a full body does not use reduced_edge)
+}
+
+void check_reduced_edge(const SceneParameters& p) {
     if (p.reduced_edge == ReducedEdge::tangential_mass && p.mass_matrix == MassVariant::redistributed_both)
         throw std::invalid_argument(
             "reduced_edge = tangential_mass keeps the contact x dofs' mass, and mass_matrix = "

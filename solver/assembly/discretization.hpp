@@ -30,6 +30,9 @@ bool contact_at_end_of_step(MassVariant v);
 struct SceneParameters;
 // Whether the reduced body of p keeps its contact x dofs with mass (reduced_edge resolved).
 bool reduced_edge_has_tangential_mass(const SceneParameters& p);
+// Throws std::invalid_argument where a reduced body's reduced_edge asks for a mass the variant
+// has not (check_parameters calls it for modes > 0; a reduced body of any p, itself).
+void check_reduced_edge(const SceneParameters& p);
 
 // The reduced body's contact edge (docs/decisions.md, "The reduced body's contact edge"):
 // massless (the residual attachment modes of every contact dof, MacNeal), or with the contact

@@ -231,13 +231,11 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
            ((c1 + c2 * alpha) * w_t) * m_t_ - ((1 + c2 * beta) * w_t) * a_t_;
     w_ = ops.stiffness.solve(rhs_);
     contact_u_ = Bhat_ * y + Blift_ * lift_at;
-    contact_v_ = Bhat_ * ydot + Blift_ * lift_rate;
     bw_ = Bhat_ * w_ + Blift_ * w_t;
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
         problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; },
-        [&](int i) { return contact_v_[nc + i]; });
+        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();
     if (touching) {

@@ -91,7 +91,7 @@ private:
     ContactProblem problem_;
     double problem_dt_ = -1;
     bool problem_friction_ = false;
-    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_;
+    Eigen::VectorXd rhs_, w_, contact_u_, bw_, du_;
 };
 
 }  // namespace contactbody

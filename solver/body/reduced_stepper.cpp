@@ -27,6 +27,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
                                     : std::nullopt),
       basis_(build_modal_basis(basis_disc(), modes, reduced_edge_has_tangential_mass(params))),
       plate_mass_(params.force_control ? params.top_mass : 0.0) {
+    check_reduced_edge(params);
     const Discretization& d = basis_disc();
     const Eigen::Index m = basis_.modes.cols(), k = basis_.residual.cols();
     nd_ = m + k;
@@ -110,7 +111,6 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     contact_u_.resize(2 * nc);
     normal_u_.resize(nc);
     normal_u_at_.setConstant(n + 1, std::numeric_limits<double>::quiet_NaN());  // matches no state
-    contact_v_.resize(2 * nc);
     bw_.resize(2 * nc);
     du_.resize(n);
     contact_force_.resize(n);
@@ -209,7 +209,8 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
     const double strain = 0.5 * (z.cwiseAbs2().dot(omega2_) + tail_strain) + z.dot(a_s_) * gap +
                           0.5 * s_ss_ * gap * gap + 0.5 * stiffness_tt_ * top * top;
     // Both are positive semi-definite forms, here expanded into terms that cancel for a body
-    // moving rigidly: what is left below zero is round-off (issue 42 saw -2.7e-13 J/m), and
+    // moving rigidly: what is left below zero is round-off (an outside check reported
+    // E = -2.7e-13 J/m; not reproduced here), and
     // the full body's energies are >= 0 by construction.
     return {std::max(kinetic, 0.0), std::max(strain, 0.0)};
 }
@@ -448,22 +449,15 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     }
     // B_hat is the substep's largest operand with W (about 1 MB each at nx = 160), and its
     // products are bound by the memory they read: only the rows used are formed. The normal
-    // rows of B u^k (-u_y of the contact nodes: the gaps), the tangential rows of B v^k (the
-    // implicit-contact variants' slip origin), and B w.
-    const bool slip_origin_moves = disc_.contact_at_end_of_step && friction;
+    // rows of B u^k (-u_y of the contact nodes: the gaps), and B w.
     contact_u_.head(nc) = normal_displacements(s);
-    if (slip_origin_moves) {
-        edge_product(nc, nc, zdot, contact_v_.tail(nc));
-        contact_v_.tail(nc) += Blift_.tail(nc) * lift_rate;
-    }
     edge_product(0, 2 * nc, w_, bw_);
     bw_ += Blift_ * w_t;
 
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
         problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; },
-        [&](int i) { return contact_v_[nc + i]; });
+        [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();
     if (touching) {

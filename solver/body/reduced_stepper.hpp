@@ -183,7 +183,7 @@ private:
     const Eigen::VectorXd& normal_displacements(const State& s) const;
     mutable Eigen::VectorXd normal_u_, normal_u_at_;
     // Workspace, sized once: the substep allocates nothing.
-    Eigen::VectorXd rhs_, w_, contact_u_, contact_v_, bw_, du_, contact_force_, dw_;
+    Eigen::VectorXd rhs_, w_, contact_u_, bw_, du_, contact_force_, dw_;
     mutable Eigen::VectorXd tail_, form_;  // solve_step's, the X block's forms'
 };
 

@@ -299,8 +299,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     const bool implicit = d.contact_at_end_of_step;
     const bool touching = set_contact_conditions(
         problem_, params_, implicit, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])]; },  // g - u_N^k
-        [&](int i) { return s.v[dof_x(d.mesh.contact_nodes[i])]; });
+        [&](int i) { return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])]; });  // g - u_N^k
     SubstepReport report;
     if (touching) {
         const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);

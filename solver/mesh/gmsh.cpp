@@ -19,6 +19,24 @@ namespace contactbody {
 
 namespace {
 
+// A token as a message quotes it: bytes outside printable ASCII (a NUL would end the message
+// where a C string carries it, a byte-order mark is invisible) as \xNN.
+std::string shown(std::string_view t) {
+    static const char hex[] = "0123456789ABCDEF";
+    std::string out;
+    for (unsigned char c : t.substr(0, 80)) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    if (t.size() > 80) out += "...";
+    return out;
+}
+
 // Whitespace-separated tokens of the whole file, each knowing its line; a quoted token
 // ("contact") is one token without its quotes.
 class Tokens {
@@ -53,7 +71,7 @@ public:
         long value = 0;
         const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
         if (error != std::errc() || stop != t.data() + t.size())
-            fail(std::string(what) + " must be a whole number (got \"" + std::string(t) + "\")");
+            fail(std::string(what) + " must be a whole number (got \"" + shown(t) + "\")");
         return value;
     }
     long count(const char* what, long limit) {
@@ -73,13 +91,13 @@ public:
         double value = 0;
         const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
         if ((error != std::errc() && error != std::errc::result_out_of_range) || stop != t.data() + t.size())
-            fail(std::string(what) + " must be a number (got \"" + std::string(t) + "\")");
+            fail(std::string(what) + " must be a number (got \"" + shown(t) + "\")");
         return value;
     }
     void expect(std::string_view word) {
         const int at = (skip_blanks(), line_);
         const std::string_view t = next(std::string(word).c_str());
-        if (t != word) fail("expected " + std::string(word) + ", found \"" + std::string(t) + "\"", at);
+        if (t != word) fail("expected " + std::string(word) + ", found \"" + shown(t) + "\"", at);
     }
     // Past "$End<name>" (a section this reader does not need).
     void skip_section(std::string_view name) {
@@ -100,22 +118,46 @@ private:
     int line_ = 1;
 };
 
-std::string read_whole_file(const std::string& path) {
+// Bytes a file may hold per node the body may have: a node's line and its share of the
+// triangles' and boundary lines' (about 150 bytes as Gmsh writes them), with room to spare.
+constexpr uint64_t max_bytes_per_node = 256;
+
+// The whole file, which must be a regular one (a FIFO or a device would block or never end)
+// of at most `max_bytes`; every failure names the file, at line 0 (the file as a whole).
+std::string read_whole_file(const std::string& path, uint64_t max_bytes) {
+    const auto fail = [&](const std::string& what) {
+        Text msg;
+        msg << "mesh " << path << ", line 0: " << what;
+        throw std::invalid_argument(msg.str());
+    };
+    uint64_t size = 0;
+    const PathKind kind = path_kind(path, size);
+    if (kind == PathKind::missing) fail(std::string("cannot open it (") + std::strerror(errno) + ")");
+    if (kind == PathKind::directory) fail("it is a folder, not a file");
+    if (kind == PathKind::other)
+        fail("it is not a regular file (a device, a pipe or a socket): only files are read");
+    const auto too_large = [&](uint64_t bytes) {
+        Text msg;
+        msg << "the file holds " << (bytes > max_bytes ? "more than " : "") << max_bytes
+            << " bytes, more than a mesh of the most nodes a body may have needs";
+        fail(msg.str());
+    };
+    if (size > max_bytes) too_large(size);
     File f = open_file(path, "rb");
-    if (!f) {
-        Text msg;
-        msg << "mesh " << path << ": cannot open it (" << std::strerror(errno) << ")";
-        throw std::invalid_argument(msg.str());
-    }
+    if (!f) fail(std::string("cannot open it (") + std::strerror(errno) + ")");
     std::string text;
-    char buffer[1 << 16];
-    size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
-    if (std::ferror(f.get())) {
-        Text msg;
-        msg << "mesh " << path << ": cannot read it (" << std::strerror(errno) << ")";
-        throw std::invalid_argument(msg.str());
+    try {
+        text.reserve(static_cast<size_t>(size));
+        char buffer[1 << 16];
+        size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) {
+            if (text.size() + n > max_bytes) too_large(text.size() + n);  // it grew
+            text.append(buffer, n);
+        }
+    } catch (const std::bad_alloc&) {
+        fail("out of memory reading it (" + std::to_string(size) + " bytes)");
     }
+    if (std::ferror(f.get())) fail(std::string("cannot read it (") + std::strerror(errno) + ")");
     return text;
 }
 
@@ -230,11 +272,39 @@ void check_node_count(Tokens& in, long n, long max_nodes) {
         in.fail(std::to_string(n) + " nodes: a body has at most " + std::to_string(max_nodes));
 }
 
+// MSH 4.1's section headers state the count and the tags' range of what the blocks hold: a
+// header that contradicts its blocks is a damaged file, refused as 2.2's count is (2.2 reads
+// exactly its count, and then expects the section's end).
+struct Header41 {
+    int line;
+    long count, smallest, largest;
+};
+Header41 read_header_41(Tokens& in, const char* what) {
+    Header41 h{};
+    in.at_end();
+    h.line = in.line();
+    h.count = in.count((std::string("the number of ") + what + "s").c_str(), max_count);
+    h.smallest = in.integer((std::string("the smallest ") + what + " tag").c_str());
+    h.largest = in.integer((std::string("the largest ") + what + " tag").c_str());
+    return h;
+}
+void check_header_41(Tokens& in, const Header41& h, const char* what, long count, long smallest,
+                     long largest) {
+    Text msg;
+    if (count != h.count)
+        msg << "the section declares " << h.count << " " << what << "s, its blocks hold " << count;
+    else if (count > 0 && (smallest != h.smallest || largest != h.largest))
+        msg << "the section declares " << what << " tags " << h.smallest << " to " << h.largest
+            << ", its blocks hold " << smallest << " to " << largest;
+    else
+        return;
+    in.fail(msg.str() + " (a damaged file)", h.line);
+}
+
 void read_nodes_41(Tokens& in, RawMesh& m, long max_nodes) {
     const long blocks = in.count("the number of node blocks", max_count);
-    check_node_count(in, in.count("the number of nodes", max_count), max_nodes);
-    in.integer("the smallest node tag");
-    in.integer("the largest node tag");
+    const Header41 header = read_header_41(in, "node");
+    check_node_count(in, header.count, max_nodes);
     for (long b = 0; b < blocks; ++b) {
         const int dim = static_cast<int>(in.count("a node block's dimension", 3));
         in.integer("a node block's entity tag");
@@ -250,6 +320,9 @@ void read_nodes_41(Tokens& in, RawMesh& m, long max_nodes) {
                 for (int p = 0; p < dim; ++p) in.real("a node's parametric coordinate");
         }
     }
+    check_header_41(in, header, "node", static_cast<long>(m.nodes.size()),
+                    m.nodes.empty() ? 0 : m.nodes.begin()->first,
+                    m.nodes.empty() ? 0 : m.nodes.rbegin()->first);
     in.expect("$EndNodes");
 }
 
@@ -280,9 +353,9 @@ void read_element_nodes(Tokens& in, long type, RawElement& e) {
 
 void read_elements_41(Tokens& in, RawMesh& m, const Entities& entities) {
     const long blocks = in.count("the number of element blocks", max_count);
-    in.count("the number of elements", max_count);
-    in.integer("the smallest element tag");
-    in.integer("the largest element tag");
+    const Header41 header = read_header_41(in, "element");
+    const size_t first = m.elements.size();
+    long smallest = 0, largest = 0;
     for (long b = 0; b < blocks; ++b) {
         const int dim = static_cast<int>(in.count("an element block's dimension", 3));
         const long entity = in.integer("an element block's entity tag");
@@ -296,9 +369,12 @@ void read_elements_41(Tokens& in, RawMesh& m, const Entities& entities) {
             e.tag = in.integer("an element tag");
             read_element_nodes(in, type, e);
             if (it != entities.end()) e.physicals = it->second;
+            smallest = m.elements.size() == first ? e.tag : std::min(smallest, e.tag);
+            largest = m.elements.size() == first ? e.tag : std::max(largest, e.tag);
             m.elements.push_back(std::move(e));
         }
     }
+    check_header_41(in, header, "element", static_cast<long>(m.elements.size() - first), smallest, largest);
     in.expect("$EndElements");
 }
 
@@ -320,19 +396,27 @@ void read_elements_22(Tokens& in, RawMesh& m) {
     in.expect("$EndElements");
 }
 
+uint64_t max_file_bytes(long max_nodes) {
+    return max_bytes_per_node * static_cast<uint64_t>(max_nodes) + (1u << 20);
+}
+
 RawMesh read_raw(const std::string& path, long max_nodes) {
-    std::string text = read_whole_file(path);
+    std::string text = read_whole_file(path, max_file_bytes(max_nodes));
     const uint64_t file_digest = digest(text);
+    const bool has_byte_order_mark = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
     Tokens in(path, std::move(text));
     if (in.at_end()) in.fail("the file is empty (a Gmsh MSH file starts with $MeshFormat)");
+    if (has_byte_order_mark)
+        in.fail("the file starts with a UTF-8 byte-order mark (the bytes EF BB BF, invisible in "
+                "most editors) before $MeshFormat: save it without one");
     in.expect("$MeshFormat");
     const std::string version(in.next("the format's version"));
     const std::string file_type(in.next("the format's file type"));
     if (file_type != "0")
-        in.fail("a binary MSH file (file type " + file_type + "): save it as ASCII (Gmsh: "
+        in.fail("a binary MSH file (file type " + shown(file_type) + "): save it as ASCII (Gmsh: "
                 "Mesh.Binary = 0, or gmsh -format msh41 without -bin)");
     if (version != "4.1" && version != "2.2")
-        in.fail("MSH version " + version + " is not read: save it as MSH 4.1 or 2.2, ASCII "
+        in.fail("MSH version " + shown(version) + " is not read: save it as MSH 4.1 or 2.2, ASCII "
                 "(Gmsh: -format msh41 or msh22)");
     in.next("the format's data size");
     in.expect("$EndMeshFormat");
@@ -343,7 +427,7 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     while (!in.at_end()) {
         const int line = in.line();
         const std::string section(in.next("a section"));
-        if (section.empty() || section[0] != '$') in.fail("expected a section ($Name), found \"" + section + "\"", line);
+        if (section.empty() || section[0] != '$') in.fail("expected a section ($Name), found \"" + shown(section) + "\"", line);
         if (section == "$PhysicalNames") {
             read_physical_names(in, m);
         } else if (section == "$Entities" && version == "4.1") {
@@ -372,9 +456,9 @@ std::string node_where(long tag, const RawNode& n) {
 
 }  // namespace
 
-uint64_t gmsh_file_digest(const std::string& path) {
+uint64_t gmsh_file_digest(const std::string& path, long max_nodes) {
     try {
-        return digest(read_whole_file(path));
+        return digest(read_whole_file(path, max_file_bytes(max_nodes)));
     } catch (const std::invalid_argument&) {
         return 0;
     }
@@ -388,8 +472,19 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         throw std::invalid_argument(msg.str());
     };
     for (const auto& [tag, n] : raw.nodes) {
-        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
-            fail(node_where(tag, n) + " has a coordinate that is not finite", n.line);
+        // A body in metres lies within 1000 km of its origin: a coordinate beyond is a damaged
+        // file or another unit (and would make areas and stiffnesses overflow).
+        constexpr double max_coordinate = 1e6;
+        for (const auto& [name, value] : {std::pair{"x", n.x}, std::pair{"y", n.y}, std::pair{"z", n.z}}) {
+            if (!std::isfinite(value))
+                fail("node " + std::to_string(tag) + " has " + name + " = " + format_number(value) +
+                         ": every coordinate must be a finite number", n.line);
+            if (std::abs(value) > max_coordinate)
+                fail("node " + std::to_string(tag) + " has " + name + " = " + format_number(value) +
+                         " m, beyond the 1e6 m a body in metres may reach: a damaged file, or a "
+                         "mesh in other units",
+                     n.line);
+        }
         if (n.z != 0)
             fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) +
                      ": the mesh must lie in the x-y plane (z = 0)", n.line);
@@ -441,7 +536,9 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     for (size_t n = 0; n < used.size(); ++n)
         if (!used[n]) {
             const RawNode& r = raw.nodes.at(tag_of[n]);
-            fail(node_where(tag_of[n], r) + " belongs to no triangle", r.line);
+            fail(node_where(tag_of[n], r) + " belongs to no triangle (Gmsh writes such nodes, "
+                     "for example the centres of arcs, when Mesh.SaveAll = 1: save without it, "
+                     "or with the physical groups only)", r.line);
         }
 
     // Orientation: counter-clockwise, as the assembly expects. A mesh whose triangles all turn
@@ -503,6 +600,10 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
             if (c) contact[static_cast<size_t>(n)] = 1;
             if (k) clamp[static_cast<size_t>(n)] = 1;
         }
+        if (c && e.dim == 2)
+            fail("the physical group \"contact\" holds triangle " + std::to_string(e.tag) +
+                     ": it must be a group of boundary lines (dimension 1), not of surfaces "
+                     "(dimension 2)", e.line);
         if (c && e.dim == 1) contact_lines.push_back({nodes[0], nodes[1]});
         contact_elements += c;
         clamp_elements += k;
@@ -542,6 +643,14 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         }
 
     finish_mesh(m, contact_lines);
+    if (!(m.clamp_height() > 0)) {
+        Text msg;
+        msg << "the clamp group's highest node (y = " << m.clamp_y << " m) is not above the contact "
+            << "group's lowest (y = " << m.contact_y << " m): the foundation lies below the contact "
+            << "group and the clamp drives the body from above (are \"contact\" and \"clamp\" "
+            << "swapped?)";
+        fail(msg.str(), 0);
+    }
     for (size_t i = 0; i < m.contact_nodes.size(); ++i)
         if (!(m.contact_shares[i] > 0)) {
             const long tag = tag_of[static_cast<size_t>(m.contact_nodes[i])];

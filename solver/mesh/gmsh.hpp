@@ -14,7 +14,8 @@
 namespace contactbody {
 
 // Throws std::invalid_argument "mesh FILE, line N: what is wrong" (line 0: the file as a
-// whole) for anything it cannot take: no file, a binary or unknown version, an element other
+// whole) for anything it cannot take: no file, no regular file (a folder, a device, a pipe),
+// a file larger than a mesh of max_nodes nodes needs, a binary or unknown version, an element other
 // than points, lines and first-order triangles, a missing group, a degenerate or inverted
 // triangle, a node of no triangle, a part not connected to the clamp, a non-finite or
 // out-of-plane coordinate, more than max_nodes nodes, a contact node that carries no length of
@@ -23,7 +24,7 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
 
 // A digest of the file's bytes (FNV-1a), the one read_gmsh_mesh keeps in Mesh::file_digest: a
 // body built from the file is reused over a reset only while the file is unchanged. 0 if the
-// file cannot be read.
-uint64_t gmsh_file_digest(const std::string& path);
+// file cannot be read (as read_gmsh_mesh with max_nodes would refuse it).
+uint64_t gmsh_file_digest(const std::string& path, long max_nodes);
 
 }  // namespace contactbody

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <string>
 #include <tuple>
@@ -71,23 +72,28 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
 // The midpoint step puts u^{k+1/2} in balance and extrapolates u^{k+1} = 2 u^{k+1/2} - u^k,
 // which stays in balance only while the problem is linear or positively homogeneous along the
 // path: with contact and Coulomb friction that holds from an unloaded touching state, but not
-// across the load where a gap closes (u^{k+1} then overshoots the kink, and the final substep
-// cannot take it back: the midpoint rule does not damp). So a gap is closed first by the
-// rigid shift `start` = -gap, and the path loads the body from touching. Its final substep
-// then moves nothing: u^{k+1/2} = u^{k+1} is in static balance with contact and friction, for
-// every variant. The body is left there at rest.
-static State quasi_static_path(Body& body, double top, double start = 0) {
+// across the load where a gap closes, nor where a node's friction coefficient changes on the
+// way (the stick memory: a node that stuck holds with F_s, one that slipped with F), nor where
+// the contact set grows. So a gap is closed first by the rigid shift `start` = -gap, and the
+// state taken is not the last u^{k+1} but the midpoint u^{k+1/2} of the final substep, from
+// `settle`, a body whose contact holds at the midpoint: that state is in static balance with
+// the substep's multipliers to round-off (A u = B^T lambda, the mass terms 1e-15), its active
+// nodes lie on the foundation, and its friction is within the cone the substep allowed. At
+// rest every pressed node sticks: it is marked so, and the stick memory then allows it F_s,
+// at least what it had. The body is left there at rest: the first dynamic substep's solution
+// is w = 0 with these multipliers.
+static State quasi_static_path(Body& path, Body& settle, double top, double start = 0) {
     constexpr int increments = 10;
     constexpr double quasi_static = 1e3;
     State rest;
-    body.to_full(body.initial_state(0.0), rest);
+    path.to_full(path.initial_state(0.0), rest);
     rest.v.setZero();
     for (Eigen::Index dof = 1; dof < rest.u.size(); dof += 2) rest.u[dof] = start;
-    State s = body.from_full(rest);
+    State s = path.from_full(rest);
     SubstepLoad load;
-    for (int k = 1; k <= increments + 1; ++k) {
-        load.top_start = start + (top - start) * std::min(k - 1, increments) / increments;
-        load.top_end = start + (top - start) * std::min(k, increments) / increments;
+    const auto run = [&](Body& body, double from, double to) {
+        load.top_start = from;
+        load.top_end = to;
         try {
             body.substep(s, quasi_static, load);
         } catch (const ContactSolveError& e) {
@@ -95,9 +101,28 @@ static State quasi_static_path(Body& body, double top, double start = 0) {
                 std::string("initial_state = static: the load path's contact solve failed (") +
                 e.what() + "); use initial_state = paper");
         }
-    }
+    };
+    for (int k = 1; k <= increments; ++k)
+        run(path, start + (top - start) * (k - 1) / increments, start + (top - start) * k / increments);
+    const Eigen::VectorXd before = s.u;
+    run(settle, top, top);
+    s.u = 0.5 * (before + s.u);  // u^{k+1/2}
     s.v.setZero();
+    const Eigen::Index nc = s.sticking.size();
+    const bool friction = s.lambda.size() == 2 * nc;
+    for (Eigen::Index i = 0; i < nc; ++i) s.sticking[i] = friction && s.lambda[i] < 0 ? 1.0 : 0.0;
     return s;
+}
+
+// The full body that runs a static start's load path: `p`'s mesh and material, with contact at
+// the end of the step where the boundary has several heights (below), or at the midpoint;
+// the mass, which weighs 1e-15 there, is the consistent one (no M_r to build), and no
+// damping (2/dt beta A would weigh 1e-8: a static state does not depend on it).
+static std::unique_ptr<Stepper> path_stepper(SceneParameters p, bool end_of_step) {
+    p.mass_matrix = end_of_step ? MassVariant::standard_implicit_contact : MassVariant::standard;
+    p.modes = 0;
+    p.damping_mass = p.damping_stiffness = 0;
+    return std::make_unique<Stepper>(p);
 }
 
 // Under force control the plate (u_x = 0, one u_y) is a clamp at an unknown height, and only
@@ -109,34 +134,41 @@ static State quasi_static_path(Body& body, double top, double start = 0) {
 //
 // A contact boundary of several heights (a mesh's curved one) touches more as it is pressed.
 // The midpoint contact's end-of-step state u^{k+1} = 2 u^{k+1/2} - u^k then overshoots the
-// static one where the contact set grew within the substep, so such a path is run by the full
-// body with the contact at the end of the step (static for dt -> inf: the variant's mass does
-// not enter), and the body takes its projection. The state no longer scales with the clamp
-// either: under force control the clamp's displacement for the force is found by secant steps
-// on the force, each a load path of its own.
+// static one where the contact set grew within the substep, so such a path's increments are
+// run with the contact at the end of the step (static for dt -> inf: the variant's mass does
+// not enter), and its final substep settles at the midpoint (quasi_static_path). The state no
+// longer scales with the clamp either: under force control the clamp's displacement for the
+// force is found by regula falsi (Illinois) on the force, each a load path of its own, within
+// a bracket: the force grows with the clamp's displacement.
+//
+// A reduced body takes the full body's path and its projection (exact: the static response
+// to edge forces is in its basis). Its own path would differ where the path decides: with
+// static friction above kinetic, which nodes stick along the way depends on the edge's
+// extrapolated velocities (E(0) was 1.75e-3 off in variant 3 with static_friction_ratio = 2).
 void Simulation::static_initial_state(double top, double force) {
     const SceneParameters& p = body_->parameters();
     const std::vector<double>& heights = body_->discretization().mesh.contact_heights;
     const bool flat = std::all_of(heights.begin(), heights.end(), [](double h) { return h == 0; });
+    const double time = state_.time;
+    SceneParameters path = p;
+    if (p.force_control) {
+        path.force_control = false;
+        path.initial_gap = 0;
+    }
+    // The body itself runs the path where it can (a flat boundary, the full body, contact at
+    // the midpoint, no damping); else full bodies of the path's own (path_stepper).
+    const bool own = flat && body_->modes() == 0 && !contact_at_end_of_step(p.mass_matrix) &&
+                     !p.force_control && !p.damped();
+    std::unique_ptr<Stepper> settle = own ? nullptr : path_stepper(path, false);
+    std::unique_ptr<Stepper> increments = flat || own ? nullptr : path_stepper(path, true);
+    Body& settle_body = own ? *body_ : *settle;
+    Body& increments_body = increments ? *increments : settle_body;
     if (!p.force_control) {
-        const double time = state_.time;
         // A top pressed below the gap touches: close the gap rigidly first (above).
         const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
-        if (flat && body_->modes() == 0) {
-            state_ = quasi_static_path(*body_, top, start);
-        } else {
-            // A reduced body takes the full body's path and its projection (exact: the static
-            // response to edge forces is in its basis). Its own path would differ where the
-            // path decides: with static friction above kinetic, which nodes stick along the
-            // way depends on the edge's extrapolated velocities (issue 42, C: E(0) 1.75e-3
-            // off in variant 3 with static_friction_ratio = 2).
-            SceneParameters path = p;
-            if (!flat) path.mass_matrix = MassVariant::standard_implicit_contact;
-            path.modes = 0;
-            Stepper path_stepper(path);
-            state_ = body_->from_full(quasi_static_path(path_stepper, top, start));
-        }
+        state_ = body_->from_full(quasi_static_path(increments_body, settle_body, top, start));
         state_.time = time;
+        check_static_balance();
         return;
     }
     if (!(force > 0))
@@ -144,14 +176,7 @@ void Simulation::static_initial_state(double top, double force) {
             "initial_state = static with top_control = force needs top_force > 0 at the start "
             "(it is " + std::to_string(force) + " N/m): only the contact holds the body; use "
             "initial_state = paper for a body that starts free");
-    SceneParameters clamped = p;
-    clamped.force_control = false;
-    clamped.initial_gap = 0;
-    if (!flat) clamped.mass_matrix = MassVariant::standard_implicit_contact;
-    clamped.modes = 0;  // the full body's path; a reduced body takes its projection (exact:
-                        // the static response to edge forces is in its basis)
-    Stepper path_stepper(clamped);
-    const Discretization& d = path_stepper.discretization();
+    const Discretization& d = settle->discretization();
     const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
         double pressing = 0;                             // (A symmetric: col = row)
         for (int dof : d.top_dofs)
@@ -159,24 +184,44 @@ void Simulation::static_initial_state(double top, double force) {
         return pressing;
     };
     double probe = -1e-4 * d.mesh.clamp_height();
-    State s = quasi_static_path(path_stepper, probe);
+    State s = quasi_static_path(increments_body, settle_body, probe);
     double pressing = pressing_force(s);
     if (!(pressing > 0))
         throw std::invalid_argument("initial_state = static: the clamped load path carries no "
                                     "force; use initial_state = paper");
     if (!flat) {  // (above)
-        double previous_probe = 0, previous_pressing = 0;
+        // The bracket [low, high] of clamp displacements (high pressing harder), and the
+        // pressing at each end; the unloaded body (0, 0) is its first low end.
+        double low = 0, low_pressing = 0, high = 0, high_pressing = 0;
+        bool bracketed = false;
+        int stale = 0;  // which end stayed last time (Illinois: halve its weight when it repeats)
         for (int iteration = 0; std::abs(pressing - force) > 1e-12 * force; ++iteration) {
-            if (iteration == 60)
-                throw std::invalid_argument("initial_state = static: the clamp's displacement for "
-                                            "top_force was not found in 60 load paths; use "
-                                            "initial_state = paper");
-            const double next = probe + (force - pressing) * (probe - previous_probe) /
-                                            (pressing - previous_pressing);
-            previous_probe = probe;
-            previous_pressing = pressing;
-            probe = std::isfinite(next) && next < 0 ? next : 2 * probe;
-            s = quasi_static_path(path_stepper, probe);
+            // The reaction sums terms much larger than itself: at 100 N/m on a tilted boundary
+            // it moved by 2e-11 of itself between clamp displacements one ulp apart, so a
+            // bracket of a few ulps is as near as the force can be told.
+            if (bracketed && std::abs(high - low) <= 8 * std::numeric_limits<double>::epsilon() * std::abs(high))
+                break;
+            if (iteration == 100) {
+                Text msg;
+                msg << "initial_state = static: the clamp's displacement for top_force = " << force
+                    << " N/m was not found in 100 load paths (the nearest, " << probe
+                    << " m, carries " << pressing << " N/m); use initial_state = paper";
+                throw std::invalid_argument(msg.str());
+            }
+            if (pressing < force) {
+                low = probe, low_pressing = pressing;
+                if (stale == -1) high_pressing = force + 0.5 * (high_pressing - force);
+                stale = -1;
+            } else {
+                high = probe, high_pressing = pressing, bracketed = true;
+                if (stale == 1) low_pressing = force + 0.5 * (low_pressing - force);
+                stale = 1;
+            }
+            // Unbracketed, the force grows at least linearly (the contact only grows): the
+            // linear estimate from the unloaded body reaches the force or passes it.
+            probe = bracketed ? low + (force - low_pressing) * (high - low) / (high_pressing - low_pressing)
+                              : probe * std::max(force / pressing, 1.0 + 1e-3);
+            s = quasi_static_path(increments_body, settle_body, probe);
             pressing = pressing_force(s);
         }
     }
@@ -187,8 +232,35 @@ void Simulation::static_initial_state(double top, double force) {
     full.v.setZero(full.u.size());
     full.lambda = scale * s.lambda;
     full.sticking = s.sticking;
-    full.time = state_.time;
+    full.time = time;
     state_ = body_->from_full(full);
+    check_static_balance();
+}
+
+// A static start is in balance: what the contact carries is what the top does, to round-off.
+// Anything else is a start that moves at once; initialization fails rather than give one.
+void Simulation::check_static_balance() const {
+    State full;
+    body_->to_full(state_, full);
+    const Discretization& d = body_->discretization();
+    Eigen::VectorXd relative, product;
+    d.remove_translation(full.u, relative);
+    product.noalias() = d.A * relative;
+    double top = 0;
+    for (int dof : d.top_dofs)
+        if (dof % 2 == 1) top += product[dof];
+    const Eigen::Index nc = body_->num_contact_nodes();
+    const double normal = -full.lambda.head(nc).sum();
+    // Round-off: relative, or the force of a strain of 1e-12 over the body's width where the
+    // body hangs free (the top then carries round-off and the contact nothing).
+    const SceneParameters& p = body_->parameters();
+    const double floor = 1e-12 * (p.lambda + 2 * p.mu) * d.mesh.width();
+    if (!(std::abs(normal + top) <= std::max(1e-9 * std::max(std::abs(normal), std::abs(top)), floor))) {
+        Text msg;
+        msg << "initial_state = static: the load path ended out of balance (the contact carries "
+            << normal << " N/m, the top " << -top << " N/m); use initial_state = paper";
+        throw std::invalid_argument(msg.str());
+    }
 }
 
 // Before the first step the outputs describe the initial state. A bottom node touches the
@@ -348,14 +420,20 @@ void Simulation::check_plausible() {
     const double energy = observables().energy;
     const Works& w = works_;
     const double initial = initial_energy_;
-    const double put_in = initial + std::abs(w.clamp) + std::abs(w.foundation);
+    // Floored by the energy of a strain of 1e-12 over the body: where nothing was put in
+    // (E(0) = 0, the gap never closes), round-off of 1e-28 J/m must not trip the ratio.
+    const Mesh& mesh = body_->discretization().mesh;
+    const double strain = 1e-12;
+    const double floor = 0.5 * (p.lambda + 2 * p.mu) * strain * strain * mesh.width() * mesh.height();
+    const double put_in = std::max(initial + std::abs(w.clamp) + std::abs(w.foundation), floor);
     const bool over_ratio = p.max_energy_ratio > 0 && energy > 0 && energy > p.max_energy_ratio * put_in;
     if (over_ratio || (p.max_energy > 0 && energy > p.max_energy)) {
         Text msg;
         msg << "energy E = " << energy << " J/m at t = " << state_.time << " exceeds ";
         if (over_ratio)
-            msg << "max_energy_ratio x (E(0) + work put in) = " << p.max_energy_ratio << " x "
-                << put_in << " J/m";
+            msg << "max_energy_ratio x (E(0) + work put in" << (put_in == floor ? ", floored by "
+                   "the energy of a strain of 1e-12 over the body" : "") << ") = "
+                << p.max_energy_ratio << " x " << put_in << " J/m";
         else
             msg << "max_energy = " << p.max_energy << " J/m";
         msg << " (E(0) = " << initial << ", clamp_work = " << w.clamp << ", foundation_work = "

@@ -182,6 +182,7 @@ private:
     struct StepSums;
     void initial_reactions();  // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static
+    void check_static_balance() const;
     // One substep over [s0, s0 + dt] of the step (times from its start), halved on failure;
     // weight = dt / nominal substep (a power of two), for the step averages.
     void advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums);

@@ -5,6 +5,8 @@
 #ifdef _WIN32
 #include <direct.h>
 #include <io.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 #include <windows.h>
 #else
 #include <dirent.h>
@@ -39,6 +41,14 @@ bool is_directory(const std::wstring& path) {
 
 }  // namespace
 
+PathKind path_kind(const std::string& path, uint64_t& size) {
+    struct _stat64 s;
+    if (_wstat64(wide(path).c_str(), &s) != 0) return PathKind::missing;
+    size = static_cast<uint64_t>(s.st_size);
+    return (s.st_mode & _S_IFMT) == _S_IFREG ? PathKind::regular
+           : (s.st_mode & _S_IFMT) == _S_IFDIR ? PathKind::directory
+                                              : PathKind::other;
+}
 File open_file(const std::string& path, const char* mode) {
     return File(_wfopen(wide(path).c_str(), wide(mode).c_str()));
 }
@@ -80,6 +90,12 @@ std::vector<std::string> directory_entries(const std::string& path) {
     return names;
 }
 #else
+PathKind path_kind(const std::string& path, uint64_t& size) {
+    struct stat s;
+    if (stat(path.c_str(), &s) != 0) return PathKind::missing;
+    size = static_cast<uint64_t>(s.st_size);
+    return S_ISREG(s.st_mode) ? PathKind::regular : S_ISDIR(s.st_mode) ? PathKind::directory : PathKind::other;
+}
 File open_file(const std::string& path, const char* mode) { return File(std::fopen(path.c_str(), mode)); }
 bool seek_file(std::FILE* f, uint64_t offset) {
     return fseeko(f, static_cast<off_t>(offset), SEEK_SET) == 0;

@@ -17,6 +17,10 @@ struct CloseFile {
 };
 using File = std::unique_ptr<std::FILE, CloseFile>;
 
+// What a path names, without opening it (opening a FIFO with no writer blocks).
+enum class PathKind { missing, regular, directory, other };
+// `size` is set for a regular file; on `missing`, errno says why.
+PathKind path_kind(const std::string& path, uint64_t& size);
 // fopen's modes; nullptr (errno set) if it fails.
 File open_file(const std::string& path, const char* mode);
 // To a byte offset from the start, 64-bit on every platform; false (errno set) if it fails.

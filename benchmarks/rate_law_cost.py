@@ -11,7 +11,10 @@ linearly from -2.67e-5 m (pressed, the default scaled to the height) to +2e-5 m.
 scene the FMU before the change took 143 s with the full law (16,810 substep halvings,
 15,920 factorizations) against 0.9 s with the constant law.
 
-    .venv/bin/python benchmarks/rate_law_cost.py [--repeats 3] [--out benchmarks/results]
+With --before FMU the same runs are made, interleaved, with another build of the FMU (for
+example one built at an earlier commit), and the table gives both.
+
+    .venv/bin/python benchmarks/rate_law_cost.py [--repeats 3] [--before FMU] [--out benchmarks/results]
 """
 import argparse
 import json
@@ -62,9 +65,9 @@ def run(law, fmu=None):
             "halving_warnings": sum("substep halvings" in w for w in warnings)}
 
 
-def in_child(law):
+def in_child(law, fmu=None):
     code = (f"import json, sys; sys.path.insert(0, {str(ROOT / 'benchmarks')!r}); "
-            f"import rate_law_cost; print(json.dumps(rate_law_cost.run({law!r})))")
+            f"import rate_law_cost; print(json.dumps(rate_law_cost.run({law!r}, {fmu!r})))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -72,29 +75,45 @@ def in_child(law):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--before", type=pathlib.Path, help="another build's ContactBody.fmu")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "benchmarks" / "results")
     args = parser.parse_args()
-    results = {}
+    builds = {"this build": None}
+    if args.before:
+        builds["before"] = str(args.before.resolve())
+    results = {build: {} for build in builds}
     for _ in range(args.repeats):  # interleaved, so that a noisy stretch hits every law
         for law in LAWS:
-            r = in_child(law)
-            best = results.get(law)
-            results[law] = r if best is None or r["cpu_s"] < best["cpu_s"] else best
-            results[law].setdefault("all_cpu_s", []).append(r["cpu_s"])
-    constant = results["constant"]["cpu_s"]
-    for r in results.values():
-        r["ratio_to_constant"] = r["cpu_s"] / constant
+            for build, fmu in builds.items():
+                r = in_child(law, fmu)
+                best = results[build].get(law)
+                results[build][law] = r if best is None or r["cpu_s"] < best["cpu_s"] else best
+                results[build][law].setdefault("all_cpu_s", []).append(r["cpu_s"])
+    for laws in results.values():
+        constant = laws["constant"]["cpu_s"]
+        for r in laws.values():
+            r["ratio_to_constant"] = r["cpu_s"] / constant
     args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "rate_law_cost.json").write_text(json.dumps(results, indent=1))
+    # This build's laws at the top (what the docs quote), another build's under "before".
+    record = dict(results["this build"])
+    if args.before:
+        record["before"] = {"fmu": str(args.before), **results["before"]}
+    (args.out / "rate_law_cost.json").write_text(json.dumps(record, indent=1))
     lines = [f"The outside checks' slip-rate scene ({STOP:g} s in steps of {STEP:g} s; "
              "`benchmarks/rate_law_cost.py`), CPU seconds, fastest of "
-             f"{args.repeats} runs each:", "",
-             "| law | CPU [s] | / constant law | halvings | Newton iterations | Gauss-Seidel sweeps "
-             "| max normal force [N/m] | halving warnings |", "|---|---|---|---|---|---|---|---|"]
-    for law, r in results.items():
-        lines.append(f"| {law} | {r['cpu_s']:.2f} | {r['ratio_to_constant']:.1f} | {r['halvings']} "
-                     f"| {r['newton_iterations']} | {r['gauss_seidel_sweeps']} "
-                     f"| {r['max_normal_force']:.3g} | {r['halving_warnings']} |")
+             f"{args.repeats} runs each:", ""]
+    if args.before:
+        lines[-1:-1] = [f"`before` is {args.before}."]
+    lines += [("| build " if args.before else "") +
+              "| law | CPU [s] | / constant law | halvings | Newton iterations | Gauss-Seidel sweeps "
+              "| max normal force [N/m] | halving warnings |",
+              ("|---" if args.before else "") + "|---|---|---|---|---|---|---|---|"]
+    for build, laws in results.items():
+        for law, r in laws.items():
+            lines.append((f"| {build} " if args.before else "") +
+                         f"| {law} | {r['cpu_s']:.2f} | {r['ratio_to_constant']:.1f} | {r['halvings']} "
+                         f"| {r['newton_iterations']} | {r['gauss_seidel_sweeps']} "
+                         f"| {r['max_normal_force']:.3g} | {r['halving_warnings']} |")
     lines += ["", "Newton iterations count 100 for a substep that Gauss-Seidel solved."]
     (args.out / "rate_law_cost.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))

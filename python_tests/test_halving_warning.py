@@ -22,8 +22,9 @@ def test_piled_up_halvings_are_said_once_per_step(fmu_path):
               "top_displacement": Profile.of([[0, -2.67e-5], [rate_law_cost.PERIOD, 2e-5]])}
     h = rate_law_cost.STEP
     with Model(fmu_path, name="halvings") as model:
-        # Five steps: halvings 3, 0, 0, 7 (at least 4, but under 5 % of 903), then 122 (piled up).
-        rows, _ = model.run(scene, 5 * h, h, ["substep_refinements", "substeps"], inputs=inputs)
+        # Eleven steps: halvings 2, 0, 0, 0, 5 (at least 4, but under 5 % of 903), 0, ..., then
+        # 47 (piled up).
+        rows, _ = model.run(scene, 11 * h, h, ["substep_refinements", "substeps"], inputs=inputs)
         warnings = [m[2] for m in model.instance.messages if m[0] == 1 and "halvings" in m[2]]
     nominal = int(np.ceil(h / scene["internal_step"] * (1 - 1e-9)))
     halvings = rows["substep_refinements"][1:]

@@ -186,7 +186,46 @@ def write_text(tmp_path, name, text):
 
 
 def test_missing_file(tmp_path, unzipped_fmu):
-    refused({"mesh": str(tmp_path / "nowhere.msh")}, unzipped_fmu, f"mesh {tmp_path / 'nowhere.msh'}: cannot open it")
+    refused({"mesh": str(tmp_path / "nowhere.msh")}, unzipped_fmu,
+            f"mesh {tmp_path / 'nowhere.msh'}, line 0: cannot open it")
+
+
+def test_a_folder(tmp_path, unzipped_fmu):
+    refused({"mesh": str(tmp_path)}, unzipped_fmu, f"mesh {tmp_path}, line 0: it is a folder, not a file")
+
+
+REFUSE_IN_A_PROCESS = """
+import resource, sys, time
+resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))
+from contactbody.fmu import Model
+with Model(sys.argv[1]) as model:
+    start = time.perf_counter()
+    try:
+        model.start({"mesh": sys.argv[2]})
+        print("accepted")
+    except Exception as e:
+        print(f"{time.perf_counter() - start:.3f}", e)
+"""
+
+
+@pytest.mark.parametrize("kind", ["/dev/zero", "fifo"])
+def test_only_regular_files_are_read(tmp_path, kind):
+    """/dev/zero grew memory without bound (2.6 GB in 10 s), and a named pipe with no writer
+    blocked initialization forever. Each is refused at once, naming the file (in a process of
+    its own, with memory limited and a deadline, so that a regression fails instead of
+    hanging the suite)."""
+    import os
+    import subprocess
+    import sys
+    path = kind
+    if kind == "fifo":
+        path = str(tmp_path / "pipe.msh")
+        os.mkfifo(path)
+    result = subprocess.run([sys.executable, "-c", REFUSE_IN_A_PROCESS, str(FMU), path],
+                            capture_output=True, text=True, timeout=60)
+    seconds, _, message = result.stdout.strip().partition(" ")
+    assert f"mesh {path}, line 0: it is not a regular file" in message, result.stdout + result.stderr
+    assert float(seconds) < 1.0, f"refused after {seconds} s"
 
 
 def test_binary_file(tmp_path, unzipped_fmu):
@@ -289,13 +328,76 @@ def test_part_not_connected_to_the_clamp(tmp_path, unzipped_fmu):
     refused({"mesh": str(path)}, unzipped_fmu, "is in a part of the body not connected to the clamp")
 
 
-def test_non_finite_coordinate(tmp_path, unzipped_fmu):
-    path = square_mesh(tmp_path, "finite", SQUARE, [1, 2, 3, 1, 3, 4])
+def with_line(path, start, replacement):
+    """The file with its first line that starts with `start` replaced; that line's number."""
     text = path.read_text().splitlines()
-    line = next(k for k, l in enumerate(text) if l.startswith("0.1 0.1 0"))
-    text[line] = "nan 0.1 0"
+    line = next(k for k, l in enumerate(text) if l.startswith(start))
+    text[line] = replacement
     path.write_text("\n".join(text) + "\n")
-    refused({"mesh": str(path)}, unzipped_fmu, f"line {line + 1}:", "not finite")
+    return line + 1
+
+
+@pytest.mark.parametrize("coordinates, needle", [
+    ("nan 0.1 0", "node 3 has x = nan: every coordinate must be a finite number"),
+    ("0.1 0.1 nan", "node 3 has z = nan: every coordinate must be a finite number"),
+    ("0.1 1e308 0", "node 3 has y = 1e+308 m, beyond the 1e6 m a body in metres may reach")])
+def test_a_coordinate_that_is_no_length_is_named(tmp_path, unzipped_fmu, coordinates, needle):
+    """A coordinate of 1e308 was a "degenerate triangle (area 2.16e+305 m^2)"; z = nan printed
+    the node's x and y."""
+    path = square_mesh(tmp_path, "finite", SQUARE, [1, 2, 3, 1, 3, 4])
+    line = with_line(path, "0.1 0.1 0", coordinates)
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {line}: {needle}")
+
+
+def test_a_contact_group_of_surfaces_is_named_as_such(tmp_path, unzipped_fmu):
+    """It blamed 'vertical contact lines'."""
+    with meshes.session("surfaces") as gmsh:
+        meshes.discrete_mesh(gmsh, SQUARE, [1, 2, 3, 1, 3, 4], {"clamp": [3, 4]})
+        tag = gmsh.model.getEntities(2)[0][1]
+        gmsh.model.addPhysicalGroup(2, [tag], name="contact")
+        path = meshes.write(gmsh, tmp_path / "surfaces.msh")
+    refused({"mesh": str(path)}, unzipped_fmu, 'the physical group "contact" holds triangle',
+            "not of surfaces (dimension 2)")
+
+
+def test_a_byte_order_mark_and_nul_bytes_are_shown(tmp_path, unzipped_fmu):
+    path = square_mesh(tmp_path, "marked", SQUARE, [1, 2, 3, 1, 3, 4])
+    text = path.read_bytes()
+    path.write_bytes(b"\xef\xbb\xbf" + text)
+    refused({"mesh": str(path)}, unzipped_fmu, "line 1: the file starts with a UTF-8 byte-order mark")
+    path.write_bytes(text.replace(b"$EndMeshFormat", b"$End\0MeshFormat"))
+    refused({"mesh": str(path)}, unzipped_fmu, 'found "$End\\x00MeshFormat"')
+
+
+def test_a_clamp_below_the_contact_group_is_refused(tmp_path, unzipped_fmu):
+    """contact and clamp swapped: the first step failed with 'the body is -0.1 m high'."""
+    path = square_mesh(tmp_path, "swapped", SQUARE, [1, 2, 3, 1, 3, 4], {"contact": [3, 4], "clamp": [1, 2]})
+    refused({"mesh": str(path)}, unzipped_fmu, "line 0: the clamp group's highest node (y = 0 m) is not "
+            "above the contact group's lowest (y = 0.1 m)", "swapped?")
+
+
+@pytest.mark.parametrize("field, value, needle", [
+    (1, "5", "the section declares 5 nodes, its blocks hold 4"),
+    (2, "2", "the section declares node tags 2 to 4, its blocks hold 1 to 4"),
+    (3, "9", "the section declares node tags 1 to 9, its blocks hold 1 to 4")])
+@pytest.mark.parametrize("section", ["$Nodes", "$Elements"])
+def test_msh41_headers_that_contradict_their_blocks_are_refused(tmp_path, unzipped_fmu, section,
+                                                                field, value, needle):
+    """2.2 refuses a count its section does not hold; 4.1 took any header."""
+    path = square_mesh(tmp_path, "header", SQUARE, [1, 2, 3, 1, 3, 4])
+    lines = path.read_text().splitlines()
+    header = lines.index(section) + 1
+    fields = lines[header].split()
+    what = "node" if section == "$Nodes" else "element"
+    if section == "$Elements":  # the counts and tags of this file's elements
+        count, first, last = fields[1:]
+        needle = {1: f"declares {value} elements, its blocks hold {count}",
+                  2: f"declares element tags {value} to {last}, its blocks hold {first} to {last}",
+                  3: f"declares element tags {first} to {value}, its blocks hold {first} to {last}"}[field]
+    fields[field] = value
+    lines[header] = " ".join(fields)
+    path.write_text("\n".join(lines) + "\n")
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {header + 1}: ", needle, "(a damaged file)")
 
 
 def test_too_many_nodes(tmp_path, unzipped_fmu):

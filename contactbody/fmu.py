@@ -92,7 +92,7 @@ class Instance:
     """An fmpy FMU2Slave whose log messages are kept in .messages as (status, category, text).
     Other attributes are the FMU2Slave's (doStep, getReal, ...)."""
 
-    def __init__(self, model_description, unzipped, name="instance"):
+    def __init__(self, model_description, unzipped, name="instance", logging_on=False):
         self.name = f"{name}#{next(_serial)}"
         self.messages = _messages_by_instance.setdefault(self.name, [])
         self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=str(unzipped),
@@ -101,7 +101,7 @@ class Instance:
         self.callbacks = fmi2CallbackFunctions()
         self.callbacks.logger = _logger
         addLoggerProxy(ctypes.byref(self.callbacks))
-        self.slave.instantiate(callbacks=self.callbacks)
+        self.slave.instantiate(callbacks=self.callbacks, loggingOn=logging_on)
 
     def __getattr__(self, name):
         return getattr(self.slave, name)

@@ -118,3 +118,31 @@ def test_round_off_does_not_trip_the_energy_guard(fmu_path):
         rows, _ = model.run(values, 1e-3, 1e-4, ["energy", "active_contact_nodes"])
     assert rows["energy"][0] == 0 and rows["active_contact_nodes"].max() == 0
     assert rows["energy"].max() < 1e-20
+
+
+def test_fmi2_debug_logging_honours_its_categories(model_description, unzipped):
+    """Instantiated with loggingOn, then told only logStatusError: logEvents and
+    logContactSolver messages kept arriving (FMI 3.0 honoured the list)."""
+    from contactbody.fmu import Instance
+    inst = Instance(model_description, unzipped, "categories", logging_on=True)
+    try:
+        inst.setDebugLogging(True, ["logStatusError"])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.exitInitializationMode()
+        inst.doStep(0.0, 1e-4)
+        assert not [m for m in inst.messages if m[1] in ("logEvents", "logContactSolver")], inst.messages
+        inst.setDebugLogging(True, ["logContactSolver"])  # and a category asked for arrives
+        inst.doStep(1e-4, 1e-4)
+        assert any(m[1] == "logContactSolver" for m in inst.messages), inst.messages
+    finally:
+        inst.close()
+
+
+def test_reduced_edge_is_checked_only_for_a_reduced_body(fmu_path):
+    """tangential_mass with redistributed_both was refused even for the full body (modes = 0),
+    which does not use reduced_edge."""
+    with Model(fmu_path, name="edge") as model:
+        model.start({"reduced_edge": 2, "mass_matrix": 2, "modes": 0})
+        with pytest.raises(Exception, match="reduced_edge = tangential_mass keeps"):
+            model.start({"reduced_edge": 2, "mass_matrix": 2, "modes": 8})

@@ -14,7 +14,7 @@ scene the FMU before the change took 143 s with the full law (16,810 substep hal
 With --before FMU the same runs are made, interleaved, with another build of the FMU (for
 example one built at an earlier commit), and the table gives both.
 
-    .venv/bin/python benchmarks/rate_law_cost.py [--repeats 3] [--before FMU] [--out benchmarks/results]
+    .venv/bin/python benchmarks/rate_law_cost.py [--repeats 3] [--fmu FMU] [--before FMU] [--out benchmarks/results]
 """
 import argparse
 import json
@@ -75,10 +75,12 @@ def in_child(law, fmu=None):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--fmu", type=pathlib.Path, help="this build's ContactBody.fmu (default: "
+                        "contactbody.find_fmu())")
     parser.add_argument("--before", type=pathlib.Path, help="another build's ContactBody.fmu")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "benchmarks" / "results")
     args = parser.parse_args()
-    builds = {"this build": None}
+    builds = {"this build": str(args.fmu.resolve()) if args.fmu else None}
     if args.before:
         builds["before"] = str(args.before.resolve())
     results = {build: {} for build in builds}
@@ -103,7 +105,7 @@ def main():
              "`benchmarks/rate_law_cost.py`), CPU seconds, fastest of "
              f"{args.repeats} runs each:", ""]
     if args.before:
-        lines[-1:-1] = [f"`before` is {args.before}."]
+        lines[-1:-1] = [f"`this build` is {args.fmu or 'build/ContactBody.fmu'}, `before` {args.before}."]
     lines += [("| build " if args.before else "") +
               "| law | CPU [s] | / constant law | halvings | Newton iterations | Gauss-Seidel sweeps "
               "| max normal force [N/m] | halving warnings |",

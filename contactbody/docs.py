@@ -67,10 +67,13 @@ def _fmi3_section(md2, md3):
     lines = ["## FMI 3.0 (`ContactBody_fmi3.fmu`)", "",
              "The same variables by the same names and value references, with FMI 3.0's types: "
              "Real is Float64, Integer Int32, Enumerations are set and read as Int64; `nx` and "
-             "`ny` are structural parameters of type UInt64 (settable in Configuration Mode, at "
-             "instantiation and in Initialization Mode). It adds the independent variable "
-             "`time` and the contact edge as arrays of `edge_nodes` = nx + 1 values, one per "
-             "bottom node ordered by x:", "",
+             "`ny` are structural parameters of type UInt64, `mesh` a structural String "
+             "(settable in Configuration Mode, at instantiation and in Initialization Mode). It "
+             "adds the independent variable `time` and the contact edge as arrays of "
+             "`edge_nodes` values, one per contact node ordered by x: nx + 1 for the "
+             "rectangle, a mesh's contact nodes (setting `nx` or `mesh` sets it, so an importer "
+             "that sets every structural parameter in Configuration Mode, as fmusim does, needs "
+             "not count them):", "",
              "| name | value reference | type | causality | unit | size | description |",
              "|---|---|---|---|---|---|---|"]
     for v in md3.modelVariables:

@@ -29,13 +29,6 @@ void as_model_error(F&& f) {
     }
 }
 
-// An absolute path on any platform: /..., \\server\..., C:/... or C:\...
-bool is_absolute_path(const std::string& path) {
-    if (!path.empty() && (path[0] == '/' || path[0] == '\\')) return true;
-    return path.size() > 2 && std::isalpha(static_cast<unsigned char>(path[0])) && path[1] == ':' &&
-           (path[2] == '/' || path[2] == '\\');
-}
-
 }  // namespace
 
 void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std::string>>& values) {
@@ -90,7 +83,7 @@ void ContactBodyModel::set_real(const Variable& v, double value, bool initialize
     check_settable(v, value, initialized);
     v.real(values_) = value;
     if (input_index(v) >= 0) input_rates_[input_index(v)] = 0;  // a new value is held
-    if (v.after_set) v.after_set(values_);
+    if (v.after_set) v.after_set(values_, resources_);
     if (!initialized) {
         rebuild_ = true;  // parameters and initial inputs define the initial state
     } else if (sim_ && v.tune) {
@@ -103,7 +96,7 @@ void ContactBodyModel::set_integer(const Variable& v, int value, bool initialize
         throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     check_settable(v, value, initialized);
     v.integer(values_) = value;
-    if (v.after_set) v.after_set(values_);
+    if (v.after_set) v.after_set(values_, resources_);
     if (!initialized) rebuild_ = true;
 }
 
@@ -112,6 +105,7 @@ void ContactBodyModel::set_string(const Variable& v, const char* value, bool ini
     check_writable(v, initialized);
     as_model_error([&] { check_string(v, value); });
     v.string(values_) = value;
+    if (v.after_set) v.after_set(values_, resources_);
     rebuild_ = true;
 }
 
@@ -167,7 +161,7 @@ void ContactBodyModel::set_input_derivative(const Variable& v, int order, double
 void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
     SceneParameters scene = values.scene();
-    if (!scene.mesh.empty() && !is_absolute_path(scene.mesh)) scene.mesh = resources_ + scene.mesh;
+    scene.mesh = mesh_path(scene.mesh, resources_);
     try {
         // The same parameters, and a mesh file as it was when the body was built from it.
         if (sim_ && same_discretization(sim_->body().parameters(), scene) &&

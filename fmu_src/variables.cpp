@@ -1,5 +1,6 @@
 #include "variables.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -8,9 +9,18 @@
 #include <unordered_map>
 #include <algorithm>
 
+#include "gmsh.hpp"
 #include "text.hpp"
 
 namespace contactbody::fmu {
+
+std::string mesh_path(const std::string& mesh, const std::string& resources) {
+    const bool absolute =
+        (!mesh.empty() && (mesh[0] == '/' || mesh[0] == '\\')) ||
+        (mesh.size() > 2 && std::isalpha(static_cast<unsigned char>(mesh[0])) && mesh[1] == ':' &&
+         (mesh[2] == '/' || mesh[2] == '\\'));
+    return mesh.empty() || absolute ? mesh : resources + mesh;
+}
 
 namespace {
 
@@ -111,7 +121,23 @@ Variable edge_state_output(const char* name, unsigned vr, const char* descriptio
     return v;
 }
 
-void follow_nx(Values& v) { v.edge_nodes = v.nx + 1; }  // the edge arrays follow nx
+// The edge arrays follow the body: nx + 1 for the rectangle, a mesh's contact nodes (a mesh
+// that cannot be read leaves edge_nodes as it is: initialization refuses the file, naming why).
+void follow_nx(Values& v, const std::string&) {
+    if (v.mesh.empty()) v.edge_nodes = v.nx + 1;
+}
+void follow_mesh(Values& v, const std::string& resources) {
+    if (v.mesh.empty()) {
+        v.edge_nodes = v.nx + 1;
+        return;
+    }
+    try {
+        std::vector<std::string> notes;
+        const Mesh mesh = read_gmsh_mesh(mesh_path(v.mesh, resources), max_nodes, notes);
+        v.edge_nodes = static_cast<int>(mesh.contact_nodes.size());
+    } catch (const std::invalid_argument&) {
+    }
+}
 void retune_friction(Simulation& s, double friction) { s.set_friction_coefficient(friction); }
 
 std::vector<Variable> checked(std::vector<Variable> rows) {
@@ -184,7 +210,7 @@ Variable& Variable::as_discrete() {
     variability = V::discrete;
     return *this;
 }
-Variable& Variable::then(void (*follow)(Values&)) {
+Variable& Variable::then(void (*follow)(Values&, const std::string& resources)) {
     after_set = follow;
     return *this;
 }
@@ -196,12 +222,12 @@ namespace {
 const std::vector<Variable>& table() {
     static const std::vector<Variable> rows = checked({
         // Parameters (docs/variables.md lists them)
-        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused"),
+        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused; setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh),
         real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"),
         real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"),
         integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx),
         integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both),
-        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
+        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (setting mesh sets it; another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
         real("density", 5, &Values::density, "kg/m3", 1000, 1e-3, inf, "Density rho"),
         real("lambda", 6, &Values::lambda, "Pa", 300e6, none, none, "First Lame coefficient (lambda + mu > 0)"),
         real("mu", 7, &Values::mu, "Pa", 150e6, 1, inf, "Shear modulus"),

@@ -82,8 +82,9 @@ struct Variable {
     bool fmu_only = false;
     // A tunable parameter: how a running simulation takes a new value.
     void (*tune)(Simulation&, double) = nullptr;
-    // What else changes with this variable (nx sets edge_nodes).
-    void (*after_set)(Values&) = nullptr;
+    // What else changes with this variable (nx and mesh set edge_nodes), given the FMU's
+    // resources folder (a mesh's relative path is taken from there).
+    void (*after_set)(Values&, const std::string& resources) = nullptr;
 
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
@@ -99,10 +100,13 @@ struct Variable {
     Variable& as_structural(Standard in);
     Variable& as_fmu_only();
     Variable& as_discrete();
-    Variable& then(void (*follow)(Values&));
+    Variable& then(void (*follow)(Values&, const std::string& resources));
 };
 
 const std::vector<Variable>& variables();
+// The file `mesh` names: as it is where absolute (/..., \\server\..., C:/... or C:\...), else
+// in the FMU's resources folder; "" (the rectangle) stays "".
+std::string mesh_path(const std::string& mesh, const std::string& resources);
 // The table's consistency, checked when it is built: value references unique, every parameter
 // reaching a SceneParameters field or declared FMU-only, every SceneParameters field set by a
 // parameter, every Observables field an output. Throws std::logic_error naming what is wrong.

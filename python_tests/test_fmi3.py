@@ -126,16 +126,16 @@ def limits(fmu):
 
 def test_one_variable_table_two_standards(md2, md3):
     """Every FMI 2.0 variable is in the FMI 3.0 FMU by the same name, reference, causality
-    (structural for nx, ny), unit, start and limits, with FMI 3.0's type."""
+    (structural for nx, ny and mesh), unit, start and limits, with FMI 3.0's type."""
     three = {v.name: v for v in md3.modelVariables}
     limits2, limits3 = limits(FMU), limits(FMU3)
     types = {"Real": "Float64", "Integer": "Int32", "Enumeration": "Enumeration", "String": "String"}
     for v in md2.modelVariables:
         w = three.pop(v.name)
         assert w.valueReference == v.valueReference, v.name
-        structural = v.name in ("nx", "ny")
+        structural = v.name in ("nx", "ny", "mesh")
         assert w.causality == ("structuralParameter" if structural else v.causality), v.name
-        assert w.type == ("UInt64" if structural else types[v.type]), v.name
+        assert w.type == ("UInt64" if v.name in ("nx", "ny") else types[v.type]), v.name
         assert w.variability == v.variability and w.unit == v.unit, v.name
         assert limits3[v.name] == limits2[v.name], v.name
         assert not w.dimensions, v.name

@@ -447,31 +447,59 @@ def test_force_control_static_start_on_a_curved_boundary_carries_the_force(tmp_p
     assert r["top_position"][0] < 0
 
 
-def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
-    """edge_nodes must be the mesh's contact node count: another value is refused naming it;
-    with it, the arrays sum to the scalar outputs."""
-    from contactbody.system import configured_copy
-    path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
-    nodes, clamp, contact = mesh_counts(path)
-    fmi3 = FMU.with_name("ContactBody_fmi3.fmu")
+def fmi3_run_with_mesh(tmp_path, path, order, edge_nodes=None):
+    """An FMI 3.0 instance through fmpy's FMU3Slave, `mesh` and `edge_nodes` set in
+    Configuration Mode in `order` (edge_nodes only when given), then initialized and stepped
+    once: (the raised error or None, the log, edge_x's size)."""
     from fmpy.fmi1 import FMICallException
     from fmpy.fmi3 import FMU3Slave
+    fmi3 = FMU.with_name("ContactBody_fmi3.fmu")
     md3 = fmpy.read_model_description(str(fmi3))
+    vr = {v.name: v.valueReference for v in md3.modelVariables}
     messages = []
-    slave = FMU3Slave(guid=md3.guid, unzipDirectory=fmpy.extract(str(fmi3), str(tmp_path / "fmi3")),
+    slave = FMU3Slave(guid=md3.guid, unzipDirectory=fmpy.extract(str(fmi3), str(tmp_path / f"fmi3_{order}")),
                       modelIdentifier=md3.coSimulation.modelIdentifier, instanceName="edge")
     slave.instantiate(loggingOn=True, logMessage=lambda env, status, category, message:
                       messages.append(message.decode()))
     try:
+        slave.enterConfigurationMode()
+        for name in order:
+            if name == "mesh":
+                slave.setString([vr["mesh"]], [str(path)])
+            elif edge_nodes is not None:
+                slave.setUInt64([vr["edge_nodes"]], [edge_nodes])
+        slave.exitConfigurationMode()
         slave.enterInitializationMode()
-        slave.setString([next(v.valueReference for v in md3.modelVariables if v.name == "mesh")], [str(path)])
-        with pytest.raises(FMICallException):
-            slave.exitInitializationMode()
+        slave.exitInitializationMode()
+        slave.doStep(0.0, 1e-4)
+        size = slave.getUInt64([vr["edge_nodes"]])[0]
+        return None, messages, len(slave.getFloat64([vr["edge_x"]], nValues=size))
+    except FMICallException as e:
+        return e, messages, None
     finally:
         slave.freeInstance()
-    assert any(f"set edge_nodes = {contact}" in m for m in messages), messages[-3:]
+
+
+def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
+    """`mesh` is a structural parameter in FMI 3.0, and edge_nodes follows it as it follows
+    nx: set in Configuration Mode alone (as fmusim sets every structural parameter there, then
+    the rest) or with edge_nodes after or before it, the arrays hold the contact nodes; another
+    edge_nodes is refused, naming the count. Through fmpy's simulate_fmu (a configured copy: fmpy
+    sizes arrays from the modelDescription) the arrays sum to the scalar outputs."""
+    path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
+    nodes, clamp, contact = mesh_counts(path)
+    assert contact != 21  # (the rectangle's default)
+    for order, given in [(["mesh"], None), (["mesh", "edge_nodes"], contact),
+                         (["edge_nodes", "mesh"], contact)]:
+        error, messages, size = fmi3_run_with_mesh(tmp_path, path, order, given)
+        assert error is None and size == contact, (order, size, messages[-3:])
+    error, messages, _ = fmi3_run_with_mesh(tmp_path, path, ["mesh", "edge_nodes"], contact + 1)
+    assert error is not None and any(f"set edge_nodes = {contact}" in m for m in messages), messages[-3:]
+    # fmpy's simulate_fmu sizes its recorder's arrays from the modelDescription's start of
+    # edge_nodes: a configured copy carries the mesh's.
+    from contactbody.system import configured_copy
     copy = tmp_path / "configured.fmu"
-    copy.write_bytes(configured_copy(fmi3, {"edge_nodes": contact}))
+    copy.write_bytes(configured_copy(FMU.with_name("ContactBody_fmi3.fmu"), {"edge_nodes": contact}))
     r = simulate_fmu(str(copy), start_values={"mesh": str(path), "friction_coefficient": 0.3},
                      stop_time=4e-4, output_interval=2e-4,
                      output=["normal_force", "edge_x", "edge_pressure", "edge_state"])
@@ -531,21 +559,25 @@ def test_field_output_writes_the_meshs_own_triangles(tmp_path):
     assert np.abs(data["displacement"]).max() > 0
 
 
-@pytest.mark.parametrize("contact_angle, far_size, carried", [
-    (180, 4e-3, False),  # the whole arc, cells from 0.1 to 4 mm along it
-    (180, 1e-3, True),   # the whole arc, cells of 1 mm along it
-    (20, 4e-3, True),    # the refined 20 degrees around the bottom only
+@pytest.mark.parametrize("variant", range(5))
+@pytest.mark.parametrize("contact_angle, far_size, relative", [
+    (180, 4e-3, True),   # the whole arc, cells from 0.1 to 4 mm along it
+    (180, 1e-3, False),  # the whole arc, cells of 1 mm along it
+    (20, 4e-3, False),   # the refined 20 degrees around the bottom only
 ])
-def test_m_r_on_a_graded_contact_group(tmp_path, contact_angle, far_size, carried, unzipped_fmu):
-    """The least-change redistribution cannot be carried by a contact group whose cells grow
-    along it (docs/meshes.md): initialization says so and what to do; the others run."""
+def test_m_r_on_a_graded_contact_group(tmp_path, contact_angle, far_size, relative, variant,
+                                       unzipped_fmu):
+    """The least change in the Frobenius norm cannot be carried by a contact group whose cells
+    grow along it; the least relative change can, and the log says which M_r was built. Every
+    variant initializes."""
     size = 1e-4 if far_size > 1e-3 else 1e-3
     path = meshes.half_disk(tmp_path / "roller.msh", contact_size=size, far_size=far_size,
                             fine_distance=4e-3, refine_distance=0.02, contact_angle=contact_angle)
-    error, messages = fmu_log({"mesh": str(path), "mass_matrix": 1, "foundation_velocity": 0.0}, unzipped_fmu)
-    assert (error is None) == carried, messages[-2:]
-    if not carried:
-        assert any("keep the cells along the contact group of one size" in m for m in messages)
+    error, messages = fmu_log({"mesh": str(path), "mass_matrix": variant, "foundation_velocity": 0.0},
+                              unzipped_fmu)
+    assert error is None, messages[-2:]
+    noted = any("M_r is the least relative change" in m for m in messages)
+    assert noted == (relative and variant in (1, 2, 4)), messages
 
 
 def test_a_model_reruns_a_mesh_over_reset_and_switches_to_another(tmp_path):

@@ -53,8 +53,9 @@ TEST(RedistributedMass, KeepsTotalMassFirstAndSecondMoments) {
     for (const MeshCase& c : mesh_cases) {
         const Mesh mesh = make_structured_mesh(c.width, c.height, c.nx, c.ny);
         const SparseMatrix M = scalar_mass_matrix(mesh, 1000);
+        std::vector<std::string> notes;
         const auto before = mass_moments(mesh, M);
-        const auto after = mass_moments(mesh, redistributed_mass(mesh, M));
+        const auto after = mass_moments(mesh, redistributed_mass(mesh, M, notes));
         for (int k = 0; k < 6; ++k)
             EXPECT_LE(std::abs(after[k] - before[k]), 1e-12 * std::abs(before[k]))
                 << "moment " << k << " on mesh " << c.nx << "x" << c.ny;
@@ -64,7 +65,8 @@ TEST(RedistributedMass, KeepsTotalMassFirstAndSecondMoments) {
 TEST(RedistributedMass, KernelIsExactlyTheContactNodes) {
     for (const MeshCase& c : mesh_cases) {
         const Mesh mesh = make_structured_mesh(c.width, c.height, c.nx, c.ny);
-        const Eigen::MatrixXd Mr = dense(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000)));
+        std::vector<std::string> notes;
+        const Eigen::MatrixXd Mr = dense(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000), notes));
         EXPECT_EQ((Mr - Mr.transpose()).cwiseAbs().maxCoeff(), 0.0) << "exactly symmetric";
 
         std::vector<char> contact(mesh.num_nodes(), 0);
@@ -90,14 +92,16 @@ TEST(RedistributedMass, KernelIsExactlyTheContactNodes) {
 
 TEST(RedistributedMass, RejectsAMeshTooCoarseForTheMoments) {
     const Mesh mesh = make_structured_mesh(0.1, 0.1, 4, 1);
-    EXPECT_THROW(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000)), std::invalid_argument);
+    std::vector<std::string> notes;
+    EXPECT_THROW(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000), notes), std::invalid_argument);
 }
 
 TEST(RedistributedMass, RejectsAnIndefiniteCorrection) {
     // Three elongated rows: removing the bottom row's mass needs a correction so large that
     // the least-squares M_r is indefinite; it is refused, not returned.
     const Mesh mesh = make_structured_mesh(0.3, 0.07, 7, 3);
-    EXPECT_THROW(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000)), std::invalid_argument);
+    std::vector<std::string> notes;
+    EXPECT_THROW(redistributed_mass(mesh, scalar_mass_matrix(mesh, 1000), notes), std::invalid_argument);
 }
 
 TEST(Mesh, DiagonalsAlternateAsGetFEMRegularSimplices) {

@@ -132,6 +132,14 @@ TEST(Variables, InputsInStepOrderAndTunableRetunes) {
         EXPECT_EQ(v.variability == Variability::tunable, v.tune != nullptr) << v.name;
     Values values = start_values();
     named("nx").integer(values) = 7;
-    named("nx").after_set(values);
+    named("nx").after_set(values, "");
+    EXPECT_EQ(values.edge_nodes, 8);
+    // A mesh sets it to its contact nodes (one that cannot be read leaves it; initialization
+    // refuses the file); back to the rectangle, nx + 1 again, and nx no longer moves it.
+    named("mesh").string(values) = "no such file.msh";
+    named("mesh").after_set(values, "/nowhere/");
+    EXPECT_EQ(values.edge_nodes, 8);
+    named("mesh").string(values) = "";
+    named("mesh").after_set(values, "");
     EXPECT_EQ(values.edge_nodes, 8);
 }

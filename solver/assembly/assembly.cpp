@@ -1,5 +1,9 @@
 #include "assembly.hpp"
 
+#include "text.hpp"
+
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <Eigen/Dense>
@@ -123,7 +127,52 @@ std::array<double, 6> mass_moments(const Mesh& mesh, const SparseMatrix& m) {
     return {s[0], s[1], s[2], s[3], s[4], s[5]};
 }
 
-SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass) {
+namespace {
+
+// The kept entries corrected to the target moments: m <- m - W C^T (C W C^T)^{-1} (C m - d),
+// the least change in sum (change_e^2 / w_e). w_e = 1 is the least change in the Frobenius
+// norm (KLR's); w_e = m_e the least change relative to each entry, which changes entry e by
+// the fraction c_e . y of itself, whatever its size. `largest_fraction`: max |c_e . y|.
+Triplets corrected_entries(const Triplets& kept, const std::vector<Point>& p,
+                           const Eigen::Matrix<double, 6, 1>& target, bool relative,
+                           double& largest_fraction) {
+    Eigen::Matrix<double, 6, 6> CWCt = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> Cm = Eigen::Matrix<double, 6, 1>::Zero();
+    for (const auto& e : kept) {
+        const auto c = moment_row(p[e.row()], p[e.col()]);
+        CWCt += (relative ? e.value() : 1.0) * c * c.transpose();
+        Cm += e.value() * c;
+    }
+    const Eigen::Matrix<double, 6, 1> y = CWCt.ldlt().solve(Cm - target);
+    Triplets corrected;
+    corrected.reserve(kept.size());
+    largest_fraction = 0;
+    for (const auto& e : kept) {
+        const double cy = moment_row(p[e.row()], p[e.col()]).dot(y);
+        corrected.emplace_back(e.row(), e.col(), e.value() - (relative ? e.value() : 1.0) * cy);
+        largest_fraction = std::max(largest_fraction, std::abs(relative ? cy : cy / e.value()));
+    }
+    return corrected;
+}
+
+// Whether the entries (which hold no contact node) are positive definite on the other nodes.
+bool positive_definite_off_contact(const Triplets& entries, const std::vector<char>& is_contact) {
+    std::vector<int> position(is_contact.size(), -1);
+    int n = 0;
+    for (size_t k = 0; k < is_contact.size(); ++k)
+        if (!is_contact[k]) position[k] = n++;
+    Triplets restricted;
+    restricted.reserve(entries.size());
+    for (const auto& e : entries)
+        restricted.emplace_back(position[e.row()], position[e.col()], e.value());
+    Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(n, restricted));
+    return llt.info() == Eigen::Success;
+}
+
+}  // namespace
+
+SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
+                                std::vector<std::string>& notes) {
     const std::vector<Point> p = normalized_points(mesh);
     std::vector<char> is_contact(mesh.num_nodes(), 0);
     for (int n : mesh.contact_nodes) is_contact[n] = 1;
@@ -131,64 +180,59 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     // Target moments (of the consistent mass) and the kept entries.
     Eigen::Matrix<double, 6, 1> target = Eigen::Matrix<double, 6, 1>::Zero();
     Triplets kept;
+    Eigen::Matrix<double, 6, 6> CCt = Eigen::Matrix<double, 6, 6>::Zero();
     for (int j = 0; j < scalar_mass.outerSize(); ++j)
         for (SparseMatrix::InnerIterator it(scalar_mass, j); it; ++it) {
-            target += it.value() * moment_row(p[it.row()], p[it.col()]);
-            if (!is_contact[it.row()] && !is_contact[it.col()])
+            const auto c = moment_row(p[it.row()], p[it.col()]);
+            target += it.value() * c;
+            if (!is_contact[it.row()] && !is_contact[it.col()]) {
                 kept.emplace_back(it.row(), it.col(), it.value());
+                CCt += c * c.transpose();
+            }
         }
-
-    // Least-Frobenius correction: m <- m - C^T (C C^T)^{-1} (C m - d).
-    Eigen::Matrix<double, 6, 6> CCt = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> Cm = Eigen::Matrix<double, 6, 1>::Zero();
-    for (const auto& e : kept) {
-        const auto c = moment_row(p[e.row()], p[e.col()]);
-        CCt += c * c.transpose();
-        Cm += e.value() * c;
-    }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(CCt);
     if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(5))
         throw std::invalid_argument(
             "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the six moments "
             "without its contact nodes (the rectangle needs ny >= 2); use mass_matrix = 0 or 3");
-    const Eigen::Matrix<double, 6, 1> y = CCt.ldlt().solve(Cm - target);
 
-    Triplets corrected;
-    corrected.reserve(kept.size());
-    for (const auto& e : kept)
-        corrected.emplace_back(e.row(), e.col(),
-                               e.value() - moment_row(p[e.row()], p[e.col()]).dot(y));
-    SparseMatrix redistributed = from_triplets(mesh.num_nodes(), corrected);
-
-    // The minimal correction is not positive definite on every mesh (very coarse or
-    // elongated cells): check on the non-contact nodes rather than return an unusable M_r.
-    std::vector<int> rest;
-    for (int n = 0; n < mesh.num_nodes(); ++n)
-        if (!is_contact[n]) rest.push_back(n);
-    Triplets restricted;
-    std::vector<int> position(mesh.num_nodes(), -1);
-    for (size_t k = 0; k < rest.size(); ++k) position[rest[k]] = static_cast<int>(k);
-    for (const auto& e : corrected)
-        restricted.emplace_back(position[e.row()], position[e.col()], e.value());
-    Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(static_cast<int>(rest.size()), restricted));
-    if (llt.info() != Eigen::Success && mesh.is_rectangle())
-        throw std::invalid_argument(
-            "mass redistribution: the corrected mass matrix is not positive definite on this "
-            "mesh (nx = " + std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) +
-            "). It depends on nx and ny only (measured for any width and height): ny = 2 fails "
-            "for nx >= 2, ny = 3 for nx >= 3, ny = 4 for nx >= 7, and ny >= 5 never failed "
-            "(checked up to nx = 1000); a larger nx does not help. Use ny >= 5, or mass_matrix "
-            "= 0 or 3 (consistent mass)");
-    if (llt.info() != Eigen::Success)
-        throw std::invalid_argument(
-            "mass redistribution: the least-change redistribution over the contact nodes of " +
-            mesh_name(mesh) + " is not positive definite. The least change spreads its correction "
-            "over every entry of the mass matrix alike, and the small cells of a mesh graded along "
-            "its contact boundary cannot carry their part (a half-disk whose contact arc grows from "
-            "0.1 to 4 mm cells fails, one of uniform cells along the arc does not): keep the cells "
-            "along the contact group of one size, make the contact group shorter, or use "
-            "mass_matrix = 0 or 3 (consistent mass)");
-    return redistributed;
+    // The least change in the Frobenius norm, where it is positive definite (every rectangle
+    // of ny >= 5, and the paper's: its bits are those before). It spreads its correction over
+    // every entry alike, and the small cells of a mesh graded along its contact boundary
+    // cannot carry their part; there the least relative change, which changes each entry by a
+    // fraction of itself: the P1 mass is at least a quarter of its lumped form (an element's
+    // is area/12 [2 1 1; 1 2 1; 1 1 2], eigenvalues area/12 {4, 1, 1}), so changes of less than
+    // a quarter of every entry keep it positive definite, whatever the grading.
+    double fraction = 0;
+    Triplets corrected = corrected_entries(kept, p, target, false, fraction);
+    if (!positive_definite_off_contact(corrected, is_contact)) {
+        corrected = corrected_entries(kept, p, target, true, fraction);
+        if (!positive_definite_off_contact(corrected, is_contact) && mesh.is_rectangle())
+            throw std::invalid_argument(
+                "mass redistribution: M_r is not positive definite on this mesh (nx = " +
+                std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) + "). On the "
+                "rectangle it depends on nx and ny only (measured for any width and height): ny = "
+                "3 fails for nx >= 3, every other ny >= 2 is carried (checked up to nx = 1000); a "
+                "larger nx does not help. Use ny = 2, 4 or more, or mass_matrix = 0 or 3 "
+                "(consistent mass)");
+        if (!positive_definite_off_contact(corrected, is_contact)) {
+            Text msg;
+            msg << "mass redistribution: " << mesh_name(mesh) << " cannot carry M_r. Removing "
+                << "the contact nodes' normal mass and restoring the six moments changes the other "
+                << "entries by up to " << format_number(fraction) << " of themselves here; M_r is "
+                << "positive definite when no entry changes by 1/4 of itself or more (the mass of "
+                << "the contact nodes' neighbours is a small part of the body's). Use a body with "
+                << "more cells between the contact group and the rest (ny >= 5 for the rectangle), "
+                << "or mass_matrix = 0 or 3 (consistent mass)";
+            throw std::invalid_argument(msg.str());
+        }
+        Text msg;
+        msg << "mass redistribution: the least change in the Frobenius norm is not positive "
+            << "definite on " << mesh_name(mesh) << "; M_r is the least relative change (each "
+            << "entry changed by at most " << format_number(fraction) << " of itself)";
+        notes.push_back(msg.str());
+    }
+    return from_triplets(mesh.num_nodes(), corrected);
 }
 
 SparseMatrix vector_mass_matrix(const SparseMatrix& mass_x, const SparseMatrix& mass_y) {

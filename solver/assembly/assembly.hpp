@@ -45,9 +45,12 @@ SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho);
 
 // Khenous-Laborde-Renard redistribution of a scalar mass matrix: contact nodes' rows and
 // columns zeroed, the other entries (same pattern) corrected by the least change in the
-// Frobenius norm that restores the total mass, first and second moments. Throws
-// std::invalid_argument when the mesh is too coarse for the six moments to be matched.
-SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass);
+// Frobenius norm that restores the total mass, first and second moments; where that is not
+// positive definite, by the least change relative to each entry (`notes` says so). Throws
+// std::invalid_argument when the mesh is too coarse for the six moments to be matched, or
+// neither is positive definite.
+SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
+                                std::vector<std::string>& notes);
 
 // The six moments used by the redistribution: sum m_ij, sum m_ij x_i, sum m_ij y_i,
 // sum m_ij x_i x_j, sum m_ij x_i y_j, sum m_ij y_i y_j.

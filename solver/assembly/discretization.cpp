@@ -145,7 +145,7 @@ Discretization discretize(const SceneParameters& p) {
 
     const SparseMatrix scalar = scalar_mass_matrix(d.mesh, p.density);
     SparseMatrix redistributed;
-    if (redistributes_normal(p.mass_matrix)) redistributed = redistributed_mass(d.mesh, scalar);
+    if (redistributes_normal(p.mass_matrix)) redistributed = redistributed_mass(d.mesh, scalar, d.mesh_notes);
     if (p.mass_matrix == MassVariant::redistributed_both)
         d.M = vector_mass_matrix(redistributed, redistributed);
     else if (redistributes_normal(p.mass_matrix))

@@ -1,5 +1,5 @@
 """Partial slip of a pressed half-cylinder against Cattaneo-Mindlin (issue 43): after the normal
-load (static start, as benchmarks/hertz.py), the foundation creeps along x (V = 2 mm/s,
+load (static start, as benchmarks/hertz.py, with friction or frictionless), the foundation creeps along x (V = 2 mm/s,
 stiffness damping): the friction force Q grows to F P, and the contact splits into a central stick zone
 and two slip zones. The 2D partial-slip solution (Cattaneo, Mindlin; uncoupled normal and
 tangential problems) gives the stick zone's half-width
@@ -21,7 +21,6 @@ import tempfile
 import time
 
 import numpy as np
-from fmpy import simulate_fmu
 
 from contactbody import edge, find_fmu, meshes
 
@@ -60,7 +59,11 @@ def elastic(nu):
     return lam, 2 * MU * (1 + nu) / (1 - nu ** 2)
 
 
-def run(nu):
+def run(nu, frictionless_normal_load=False):
+    """One creep run. With frictionless_normal_load the static start presses the body with
+    F = 0 (no tangential traction is locked in by the normal load), and F is set to FRICTION
+    (a tunable parameter) before the first step."""
+    from contactbody.fmu import Model
     lam, e_star = elastic(nu)
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
@@ -68,15 +71,24 @@ def run(nu):
                                 far_size=RADIUS / 10, fine_distance=1.5 * A_EXPECTED,
                                 refine_distance=8 * A_EXPECTED, contact_angle=CONTACT_ANGLE)
         t0 = time.perf_counter()
-        result = simulate_fmu(str(find_fmu()), stop_time=STOP, output_interval=INTERVAL,
-                              start_values={"mesh": str(path), "initial_state": 1, "mass_matrix": 4, "lambda": lam,
-                                            "friction_coefficient": FRICTION, "top_displacement": TOP,
-                                            "foundation_velocity": SPEED, "damping_stiffness": BETA,
-                                            "internal_step": SUBSTEP,
-                                            "result_directory": str(tmp / "out"),
-                                            "edge_output_interval": INTERVAL},
-                              output=["normal_force", "friction_force", "active_contact_nodes",
-                                      "slipping_contact_nodes"])
+        names = ["normal_force", "friction_force", "active_contact_nodes", "slipping_contact_nodes"]
+        with Model(find_fmu(), name="cattaneo_mindlin") as model:
+            model.start({"mesh": str(path), "initial_state": 1, "mass_matrix": 4, "lambda": lam,
+                         "friction_coefficient": 0.0 if frictionless_normal_load else FRICTION,
+                         "top_displacement": TOP, "foundation_velocity": SPEED,
+                         "damping_stiffness": BETA, "internal_step": SUBSTEP,
+                         "result_directory": str(tmp / "out"), "edge_output_interval": INTERVAL})
+            inst = model.instance
+            if frictionless_normal_load:
+                inst.setReal([model.variable("friction_coefficient").valueReference], [FRICTION])
+            refs = [model.variable(n).valueReference for n in names[:2]]
+            values = [inst.getReal(refs)]
+            steps = int(round(STOP / INTERVAL))
+            for k in range(steps):
+                inst.doStep(k * INTERVAL, INTERVAL)
+                values.append(inst.getReal(refs))
+            inst.terminate()
+        result = {n: np.array([v[j] for v in values]) for j, n in enumerate(names[:2])}
         seconds = time.perf_counter() - t0
         e = edge.load(tmp / "out" / "contactbody_edge.npy")
     rows = []
@@ -97,6 +109,7 @@ def run(nu):
                      "stick_nodes": int(np.sum(state == 1)), "slip_nodes": int(np.sum(state == 2))})
     partial = [r for r in rows if 0.1 <= r["Q_over_FP"] <= 0.9]
     return {"nu": nu, "dundurs_beta": (1 - 2 * nu) / (2 * (1 - nu)), "run_seconds": seconds,
+            "normal_load": "frictionless" if frictionless_normal_load else "with friction",
             "rows": rows, "partial_slip": {
                 "records": len(partial),
                 "max_abs_c_error_over_a": max(abs(r["c_error_over_a"]) for r in partial),
@@ -107,7 +120,11 @@ def main():
     # The FMU's default material (nu = 1/3), and a nearly incompressible one (nu = 0.49), for
     # which the normal and tangential problems nearly uncouple (Dundurs' beta -> 0) as
     # Cattaneo-Mindlin assumes.
-    cases = {"nu_1_3": run(1 / 3), "nu_0_49": run(0.49)}
+    # Each with the normal load applied with friction (the static start at F = 0.3: tangential
+    # tractions are locked in as the contact grows) and frictionless (F = 0.3 set after it).
+    cases = {"nu_1_3": run(1 / 3), "nu_0_49": run(0.49),
+             "nu_1_3_frictionless_normal_load": run(1 / 3, True),
+             "nu_0_49_frictionless_normal_load": run(0.49, True)}
     result_file = {"radius": RADIUS, "top_displacement": TOP, "friction": FRICTION, "speed": SPEED,
                    "element_size": SIZE, "cases": cases}
     OUT.mkdir(parents=True, exist_ok=True)
@@ -126,7 +143,8 @@ def report(r):
              "with Hertz's a for the measured P.", ""]
     for name, case in r["cases"].items():
         ps = case["partial_slip"]
-        lines += [f"## nu = {case['nu']:.4g} (Dundurs' beta = {case['dundurs_beta']:.3f}; run {case['run_seconds']:.1f} s)", "",
+        lines += [f"## nu = {case['nu']:.4g}, normal load {case['normal_load']} (Dundurs' beta = "
+                  f"{case['dundurs_beta']:.3f}; run {case['run_seconds']:.1f} s)", "",
                   f"Partial slip (0.1 <= Q / (F P) <= 0.9): {ps['records']} records, largest "
                   f"|c - c_theory| / a = {ps['max_abs_c_error_over_a']:.3f}, mean {ps['mean_c_error_over_a']:+.3f}.", "",
                   "| t [ms] | Q / (F P) | a nodes [mm] | a Hertz [mm] | c [mm] | c theory [mm] | (c - c theory) / a | stick | slip |",
@@ -146,9 +164,11 @@ def plot(r, path):
     fig, ax = plt.subplots(figsize=(6.5, 4.4))
     q = np.linspace(0, 1, 200)
     ax.plot(q, np.sqrt(1 - q), "k-", label="Cattaneo-Mindlin: c / a = sqrt(1 - Q / (F P))")
-    for (name, case), marker in zip(r["cases"].items(), "os"):
+    for (name, case), marker in zip(r["cases"].items(), ["o", "s", "^", "v"]):
         ax.plot([x["Q_over_FP"] for x in case["rows"]], [x["c"] / x["a_hertz"] for x in case["rows"]],
-                marker, ms=4, label=f"FMU, nu = {case['nu']:.3g} (beta = {case['dundurs_beta']:.2f})")
+                marker, ms=4, fillstyle="none" if case["normal_load"] == "frictionless" else "full",
+                label=f"FMU, nu = {case['nu']:.3g} (beta = {case['dundurs_beta']:.2f}), "
+                      f"normal load {case['normal_load']}")
     ax.set_xlabel("Q / (F P)")
     ax.set_ylabel("c / a (sticking nodes' half-extent)")
     ax.legend(fontsize=8)

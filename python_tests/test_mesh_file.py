@@ -582,6 +582,18 @@ def test_m_r_on_a_graded_contact_group(tmp_path, contact_angle, far_size, relati
     assert noted == (relative and variant in (1, 2, 4)), messages
 
 
+def test_a_mesh_that_cannot_carry_m_r_is_refused_with_the_rule(tmp_path, unzipped_fmu):
+    """Three rows of cells (the rectangle's ny = 3 from a file): neither the least change nor
+    the least relative change is positive definite; the message is contract.md's."""
+    path = meshes.rectangle(tmp_path / "thin.msh", nx=7, ny=3)
+    refused({"mesh": str(path), "mass_matrix": 1}, unzipped_fmu,
+            f"mass redistribution: the mesh {path} cannot carry M_r. Removing the contact nodes' "
+            "normal mass and restoring the six moments changes the other entries by up to ",
+            "of themselves here, and the result is not positive definite (changes below 1/4 of "
+            "every entry would keep it so). Use a mesh with more cells between the contact group "
+            "and the rest of the body, or mass_matrix = 0 or 3 (consistent mass)")
+
+
 def test_a_model_reruns_a_mesh_over_reset_and_switches_to_another(tmp_path):
     """contactbody.fmu.Model (studies, system models) resets its one instance between runs: a
     mesh is kept over the reset (the same results as the first run), and another mesh, or

@@ -219,11 +219,10 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
             Text msg;
             msg << "mass redistribution: " << mesh_name(mesh) << " cannot carry M_r. Removing "
                 << "the contact nodes' normal mass and restoring the six moments changes the other "
-                << "entries by up to " << format_number(fraction) << " of themselves here; M_r is "
-                << "positive definite when no entry changes by 1/4 of itself or more (the mass of "
-                << "the contact nodes' neighbours is a small part of the body's). Use a body with "
-                << "more cells between the contact group and the rest (ny >= 5 for the rectangle), "
-                << "or mass_matrix = 0 or 3 (consistent mass)";
+                << "entries by up to " << format_number(fraction) << " of themselves here, and the "
+                << "result is not positive definite (changes below 1/4 of every entry would keep it "
+                << "so). Use a mesh with more cells between the contact group and the rest of the "
+                << "body, or mass_matrix = 0 or 3 (consistent mass)";
             throw std::invalid_argument(msg.str());
         }
         Text msg;

@@ -18,12 +18,10 @@ import re
 import sys
 import tempfile
 
-import numpy as np
-
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import hertz  # noqa: E402
 
-from contactbody import edge, meshes  # noqa: E402
+from contactbody import meshes  # noqa: E402
 from contactbody.fmu import Model  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -70,20 +68,8 @@ def hertz_on_the_graded_arc(fmu, folder):
     path = meshes.half_disk(folder / "whole_arc.msh", radius=hertz.RADIUS, contact_size=1e-4,
                             far_size=4e-3, fine_distance=1.25 * hertz.EXPECTED_A,
                             refine_distance=8 * hertz.EXPECTED_A, contact_angle=180)
-    out = folder / "out"
-    with Model(fmu, name="hertz") as model:
-        rows, _ = model.run({"mesh": str(path), "initial_state": 1, "mass_matrix": 1,
-                             "friction_coefficient": 0.0, "foundation_velocity": 0.0,
-                             "top_displacement": hertz.TOP, "internal_step": 1e-7,
-                             "result_directory": str(out), "edge_output_interval": 1e-7},
-                            1e-7, 1e-7, ["normal_force"])
-    record = edge.load(out / "contactbody_edge.npy")[0]
-    load = float(rows["normal_force"][0])
-    a_fit, p0_fit = hertz.fit(record["x"], record["pressure"])
-    a_h, p0_h = hertz.hertz(load)
     return {"contact_size": 1e-4, "far_size": 4e-3, "mass_matrix": "redistributed_normal",
-            "P": load, "a_error": a_fit / a_h - 1, "p0_error": p0_fit / p0_h - 1,
-            "active_nodes": int(np.sum(record["pressure"] > 0))}
+            **hertz.pressed(fmu, path, folder / "out")}
 
 
 def report(result):

@@ -48,6 +48,24 @@ def fit(x, p):
     return math.sqrt(-intercept / slope), p0
 
 
+def pressed(fmu, path, out):
+    """The static start of the mesh at `path` pressed by TOP with F = 0 (the edge history in
+    the folder `out`): its load and the fitted a and p0 against Hertz's."""
+    from contactbody.fmu import Model
+    with Model(fmu, name="hertz") as model:
+        rows, _ = model.run({"mesh": str(path), "initial_state": 1, "mass_matrix": 1,
+                             "friction_coefficient": 0.0, "foundation_velocity": 0.0,
+                             "top_displacement": TOP, "internal_step": 1e-7,
+                             "result_directory": str(out), "edge_output_interval": 1e-7},
+                            1e-7, 1e-7, ["normal_force"])
+    record = edge.load(pathlib.Path(out) / "contactbody_edge.npy")[0]
+    load = float(rows["normal_force"][0])
+    a_fit, p0_fit = fit(record["x"], record["pressure"])
+    a_h, p0_h = hertz(load)
+    return {"P": load, "a_error": a_fit / a_h - 1, "p0_error": p0_fit / p0_h - 1,
+            "active_nodes": int(np.sum(record["pressure"] > 0))}
+
+
 def run_level(contact_size, folder):
     path = meshes.half_disk(folder / f"half_disk_{contact_size:.3g}.msh", radius=RADIUS,
                             contact_size=contact_size, far_size=RADIUS / 10,

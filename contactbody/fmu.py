@@ -55,14 +55,15 @@ def simulate_fmi3(fmu: str | os.PathLike | None = None, start_values: dict | Non
     any mesh. fmpy 0.3.32 neither enters Configuration Mode nor sizes the edge arrays by the
     structural parameter: it takes their size from the modelDescription's start of
     `edge_nodes`, so `start_values={"nx": 40}` alone makes the FMU refuse the first array read
-    (rightly: its arrays hold 41 values). Here a new nx or ny goes into a configured copy
-    (contactbody.system.configured_copy: nx, ny and edge_nodes = nx + 1 as start values), which
-    is run and removed; the other start values and keyword arguments pass to simulate_fmu."""
+    (rightly: its arrays hold 41 values). Here a new nx, ny or mesh goes into a configured copy
+    (contactbody.system.configured_copy: them, and edge_nodes = nx + 1 or the mesh's contact
+    nodes, as start values), which is run and removed; the other start values and keyword
+    arguments pass to simulate_fmu."""
     from .system import configured_copy
 
     path = pathlib.Path(fmu) if fmu else find_fmu().with_name("ContactBody_fmi3.fmu")
     start_values = dict(start_values or {})
-    mesh = {k: start_values.pop(k) for k in ("nx", "ny") if k in start_values}
+    mesh = {k: start_values.pop(k) for k in ("nx", "ny", "mesh") if k in start_values}
     if not mesh:
         return fmpy.simulate_fmu(str(path), start_values=start_values, **kwargs)
     directory = tempfile.mkdtemp(prefix="ContactBody_fmi3_")

@@ -115,9 +115,10 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                 log(env, name.c_str(), static_cast<fmi2Status>(status), category, "%s", message);
             };
         auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn);
-        // A configured copy's start values (contactbody.system's SSP components).
-        instance->model.set_defaults(read_start_values(start_values_path(fmuResourceLocation)));
+        // A configured copy's start values (contactbody.system's SSP components), after the
+        // folder that a relative mesh among them is taken from.
         instance->model.set_resources(resources_directory(fmuResourceLocation), /*edge_arrays=*/false);
+        instance->model.set_defaults(read_start_values(start_values_path(fmuResourceLocation)));
         return instance.release();
     } catch (const std::exception& e) {
         return fail(e.what());

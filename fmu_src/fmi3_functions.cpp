@@ -232,11 +232,12 @@ fmi3Instance fmi3InstantiateCoSimulation(
             };
         auto instance = std::make_unique<Instance>(instanceName, std::move(logger), loggingOn,
                                                    LogRule::fmi3_settings_only);
-        // A configured copy's start values (resources/start_values.txt).
+        // A configured copy's start values (resources/start_values.txt), after the folder that
+        // a relative mesh among them is taken from.
+        instance->model.set_resources(resourcePath ? resourcePath : "", /*edge_arrays=*/true);
         if (resourcePath && *resourcePath)
             instance->model.set_defaults(
                 read_start_values(std::string(resourcePath) + "/start_values.txt"));
-        instance->model.set_resources(resourcePath ? resourcePath : "", /*edge_arrays=*/true);
         return instance.release();
     } catch (const std::exception& e) {
         return fail(e.what());

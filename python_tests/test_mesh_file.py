@@ -486,8 +486,9 @@ def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
     """`mesh` is a structural parameter in FMI 3.0, and edge_nodes follows it as it follows
     nx: set in Configuration Mode alone (as fmusim sets every structural parameter there, then
     the rest) or with edge_nodes after or before it, the arrays hold the contact nodes; another
-    edge_nodes is refused, naming the count. Through fmpy's simulate_fmu (a configured copy: fmpy
-    sizes arrays from the modelDescription) the arrays sum to the scalar outputs."""
+    edge_nodes is refused, naming the count. Through contactbody.fmu.simulate_fmi3 (fmpy's
+    simulate_fmu on a configured copy: fmpy sizes arrays from the modelDescription) the arrays
+    sum to the scalar outputs."""
     path = meshes.plate_with_hole(tmp_path / "hole.msh", size=0.01)
     nodes, clamp, contact = mesh_counts(path)
     assert contact != 21  # (the rectangle's default)
@@ -498,11 +499,11 @@ def test_the_fmi3_edge_arrays_hold_the_contact_nodes(tmp_path):
     error, messages, _ = fmi3_run_with_mesh(tmp_path, path, ["mesh", "edge_nodes"], contact + 1)
     assert error is not None and any(f"set edge_nodes = {contact}" in m for m in messages), messages[-3:]
     # fmpy's simulate_fmu sizes its recorder's arrays from the modelDescription's start of
-    # edge_nodes: a configured copy carries the mesh's.
-    from contactbody.system import configured_copy
-    copy = tmp_path / "configured.fmu"
-    copy.write_bytes(configured_copy(FMU.with_name("ContactBody_fmi3.fmu"), {"edge_nodes": contact}))
-    r = simulate_fmu(str(copy), start_values={"mesh": str(path), "friction_coefficient": 0.3},
+    # edge_nodes: simulate_fmi3 runs a configured copy that carries the mesh's, counted by the
+    # FMU itself.
+    from contactbody.fmu import simulate_fmi3
+    r = simulate_fmi3(FMU.with_name("ContactBody_fmi3.fmu"),
+                      start_values={"mesh": str(path), "friction_coefficient": 0.3},
                      stop_time=4e-4, output_interval=2e-4,
                      output=["normal_force", "edge_x", "edge_pressure", "edge_state"])
     x = r["edge_x"][-1]

@@ -148,9 +148,11 @@ def plate_with_hole(path, width=0.1, height=0.06, hole=(0.05, 0.03, 0.015), size
 
 
 def pad(path, width=0.06, height=0.02, chamfer=0.004, slot_width=0.006, slot_depth=0.008,
-        size=1e-3, version="4.1"):
+        size=1e-3, contact_size=None, growth=0.2, version="4.1"):
     """A brake-pad-like block: chamfered bottom corners, a slot cut up from the middle of its
-    bottom face; the two bottom faces beside the slot are "contact", the top face "clamp"."""
+    bottom face; the two bottom faces beside the slot are "contact", the top face "clamp".
+    With contact_size, the cells along the contact faces are that size, growing away from
+    them at the rate `growth` up to `size`."""
     w, h, c, sw, sd = width, height, chamfer, slot_width, slot_depth
     outline = [(c, 0), (w / 2 - sw / 2, 0), (w / 2 - sw / 2, sd), (w / 2 + sw / 2, sd),
                (w / 2 + sw / 2, 0), (w - c, 0), (w, c), (w, h), (0, h), (0, c)]
@@ -164,5 +166,20 @@ def pad(path, width=0.06, height=0.02, chamfer=0.004, slot_width=0.006, slot_dep
         gmsh.model.addPhysicalGroup(1, [lines[0], lines[4]], name="contact")
         gmsh.model.addPhysicalGroup(1, [lines[7]], name="clamp")
         gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        if contact_size:
+            field = gmsh.model.mesh.field
+            d = field.add("Distance")
+            field.setNumbers(d, "CurvesList", [lines[0], lines[4]])
+            field.setNumber(d, "Sampling", int(2 * width / contact_size) + 10)
+            t = field.add("Threshold")
+            field.setNumber(t, "InField", d)
+            field.setNumber(t, "SizeMin", contact_size)
+            field.setNumber(t, "SizeMax", size)
+            field.setNumber(t, "DistMin", 0)
+            field.setNumber(t, "DistMax", (size - contact_size) / growth)
+            field.setAsBackgroundMesh(t)
+            for option in ("Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromPoints",
+                           "Mesh.MeshSizeFromCurvature"):
+                gmsh.option.setNumber(option, 0)
         gmsh.model.mesh.generate(2)
         return write(gmsh, path, version)

@@ -38,9 +38,10 @@ STOP, INTERVAL, SUBSTEP = 0.1, 2e-3, 1e-5
 # elastic stress at this loading rate), no mass damping, which would resist the sticking nodes'
 # motion with the foundation.
 BETA = 2e-4
-# The contact group: the arc within 10 degrees of the bottom (8.7 mm either side, 3.3 a). The
-# whole arc, graded from SIZE to 5 mm, cannot carry M_r's least-change redistribution
-# (docs/contract.md): a shorter group of uniform cells can.
+# The contact group: the arc within 10 degrees of the bottom (8.7 mm either side, 3.3 a), all
+# that can touch. (The whole arc, graded from SIZE to 5 mm, could not carry M_r's least change
+# when this benchmark was written; it now takes the least relative change, docs/meshes.md. The
+# group is kept so that the results stay comparable.)
 CONTACT_ANGLE = 20.0
 
 

@@ -13,9 +13,11 @@ Writes benchmarks/results/contact_scaling.json and contact_scaling.md.
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import child  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results"
@@ -46,10 +48,7 @@ def measure(fmu, mesh, modes):
 
 
 def in_child(fmu, mesh, modes):
-    code = (f"import json, sys; sys.path.insert(0, {str(ROOT / 'benchmarks')!r}); "
-            f"import contact_scaling; print(json.dumps(contact_scaling.measure({fmu!r}, {mesh!r}, {modes})))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return child.in_child("contact_scaling", "measure", fmu, mesh, modes)
 
 
 def main():

@@ -19,8 +19,10 @@ example one built at an earlier commit), and the table gives both.
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import child  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
@@ -66,10 +68,7 @@ def run(law, fmu=None):
 
 
 def in_child(law, fmu=None):
-    code = (f"import json, sys; sys.path.insert(0, {str(ROOT / 'benchmarks')!r}); "
-            f"import rate_law_cost; print(json.dumps(rate_law_cost.run({law!r}, {fmu!r})))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return child.in_child("rate_law_cost", "run", law, fmu)
 
 
 def main():

@@ -81,6 +81,30 @@ INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
                                             ::testing::Values(1.2, 0.0),
                                             ::testing::Bool()));
 
+// The same on the sparse contact solve (sparse_contact.hpp): its held factor's
+// refactorizations, its coupled system and its kept directions reuse their storage.
+TEST_P(NoAllocation, OnTheSparseContactSolveOnceWarm) {
+    SceneParameters p;
+    p.nx = p.ny = 8;
+    p.internal_step = 1e-5;
+    p.mass_matrix = static_cast<MassVariant>(std::get<0>(GetParam()));
+    p.friction_coefficient = std::get<1>(GetParam());
+    if (std::get<2>(GetParam())) {
+        p.damping_mass = 50;
+        p.damping_stiffness = 4e-6;
+    }
+    auto stepper = std::make_unique<Stepper>(p);
+    stepper->set_contact_path(Stepper::ContactPath::sparse);
+    const Stepper& body = *stepper;
+    Simulation sim(std::move(stepper), -2.5e-5);
+    StepInputs in;
+    in.foundation_velocity = 20;
+    in.top_displacement = -2.5e-5;
+    for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);
+    ASSERT_TRUE(body.sparse_contact());
+    EXPECT_GT(expect_no_allocation(sim, in), 0);
+}
+
 // The slip-rate law: the full Newton Jacobian lives in the same buffer.
 TEST(NoAllocationWithTheSlipRateLaw, InTheStepLoopOnceWarm) {
     for (const int variant : {1, 3}) {

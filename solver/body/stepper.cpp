@@ -42,6 +42,8 @@ struct Stepper::Factor {
     Eigen::MatrixXd G;         // trailing positions x (N, T)
     Eigen::MatrixXd delassus;  // G^T G, (N, T) x (N, T)
     SparseMatrix K_free_clamped;  // the coupling of free and clamped dofs in K
+    // The sparse contact solve's operator instead of cholesky, G and delassus (wants_sparse).
+    std::unique_ptr<HeldOperator> held;
 };
 
 namespace {
@@ -69,6 +71,7 @@ void Stepper::start_run() {
     options_ = ContactSolverOptions{};
     options_.tolerance = params_.contact_tolerance;
     solver_ = ContactSolver{};
+    sparse_solver_ = SparseContactSolver{};
     problem_ = ContactProblem{};
     snapshot_ = ContactSnapshot{};
     timing_ = false;
@@ -214,9 +217,37 @@ void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
     problem_factor_ = 0;
 }
 
+bool Stepper::sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns) {
+    const double m = 2.0 * static_cast<double>(contact_nodes);
+    return m * m > sparse_contact_kappa * static_cast<double>(unknowns);
+}
+
+bool Stepper::sparse_contact() const { return cache_[0] && cache_[0]->held; }
+
+long Stepper::sparse_refactorizations() const {
+    long count = 0;
+    for (const auto& f : cache_)
+        if (f && f->held) count += f->held->refactorizations();
+    return count;
+}
+
+bool Stepper::wants_sparse() const {
+    if (contact_path_ != ContactPath::automatic) return contact_path_ == ContactPath::sparse;
+    return !rate_law(params_).active() &&
+           sparse_contact_pays(num_contact_nodes(), disc_.expand.cols());
+}
+
+void Stepper::set_contact_path(ContactPath path) {
+    contact_path_ = path;
+    for (auto& f : cache_) f.reset();
+    spare_.clear();
+    problem_factor_ = 0;
+}
+
 std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
+    const bool sparse = wants_sparse();
     for (auto it = spare_.begin(); it != spare_.end(); ++it) {
-        if ((*it)->dt == dt) {
+        if ((*it)->dt == dt && ((*it)->held != nullptr) == sparse) {
             auto f = std::move(*it);
             spare_.erase(it);
             f->id = ++factor_ids_;
@@ -233,9 +264,13 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
         K += (2.0 / dt) * disc_.C_free;
         f->K_free_clamped += (2.0 / dt) * disc_.C_free_clamped;
     }
-    f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
     ++factorizations_;
     f->id = ++factor_ids_;
+    if (sparse) {
+        f->held = std::make_unique<HeldOperator>(K, contact_dofs);
+        return f;
+    }
+    f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);
 
     // B rows: N_i = -e_y(i), T_i = +e_x(i).
     const Eigen::Index first = f->cholesky->size() - m;
@@ -248,8 +283,15 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
 }
 
 void Stepper::setup_contact_problem(const Factor& f) {
-    problem_.set_operator(f.delassus, params_.friction_coefficient);
-    snapshot_.delassus_diagonal = f.delassus.diagonal();
+    if (f.held) {  // no W: its diagonal's lower bound 1 / K_jj
+        problem_.set_conditions(num_contact_nodes(), params_.friction_coefficient);
+        snapshot_.delassus_diagonal.resize(f.held->unknowns());
+        for (Eigen::Index j = 0; j < f.held->unknowns(); ++j)
+            snapshot_.delassus_diagonal[j] = 1 / f.held->stiffness(j);
+    } else {
+        problem_.set_operator(f.delassus, params_.friction_coefficient);
+        snapshot_.delassus_diagonal = f.delassus.diagonal();
+    }
     problem_factor_ = f.id;
 }
 
@@ -262,7 +304,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     const int nc = num_contact_nodes();
     const bool friction = problem_.has_friction();
     const double c1 = 4.0 / (dt * dt), c2 = 2.0 / dt;
-    if (s.lambda.size() != problem_.W.rows()) s.lambda.setZero(problem_.W.rows());
+    if (s.lambda.size() != problem_.a.size()) s.lambda.setZero(problem_.a.size());
 
     // The unknown is the increment w = u^{k+1/2} - u^k (docs/contract.md, "Precision"): with
     // u^{k+1/2} itself the right-hand side carries 4/dt^2 M u^k, and the velocity
@@ -287,32 +329,47 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         rhs_[d.plate_index] += d.plate_mass * c2 * s.v[d.top_y_dof()] - load.top_force;
     }
     laps.lap(timings_.update);
-    Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
-    laps.lap(timings_.solve);
-
-    // Condensed contact problem on B w; the conditions on u^{k+1/2} (or, for the
-    // implicit-contact variants, on u^{k+1}, an affine map of it) shifted by B u^k.
-    const int unknowns = static_cast<int>(problem_.W.rows());
-    const auto G = f.G.leftCols(unknowns);
-    auto y_contact = y.tail(f.G.rows());
-    problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
+    // The contact conditions on u^{k+1/2} (or, for the implicit-contact variants, on u^{k+1},
+    // an affine map of it) shifted by B u^k.
     const bool implicit = d.contact_at_end_of_step;
-    const bool touching = set_contact_conditions(
-        problem_, params_, implicit, dt, load.foundation_velocity, s.sticking,
-        [&](int i) { return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])]; });  // g - u_N^k
+    const auto gap_old = [&](int i) {  // g - u_N^k
+        return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])];
+    };
     SubstepReport report;
-    if (touching) {
-        const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
+    bool touching = false;
+    if (f.held) {  // the sparse system (sparse_contact.hpp): w_free_ and lambda at once
+        problem_.a.setZero();  // unknown here: every substep solves, and says who touched
+        set_contact_conditions(problem_, params_, implicit, dt, load.foundation_velocity,
+                               s.sticking, gap_old);
+        const ContactSolveInfo info =
+            sparse_solver_.solve(*f.held, problem_, options_, rhs_, s.sticking, s.lambda, w_free_);
+        touching = sparse_solver_.touching();
         report.contact_iterations = info.iterations;
-        report.contact_sweeps = info.sweeps;
-        report.contact_solved = true;
-        y_contact.noalias() += G * s.lambda;  // L^-1 P B^T lambda lives in the trailing block
+        report.contact_solved = touching;
+        laps.lap(timings_.contact);
     } else {
-        s.lambda.setZero();  // no node can touch: the contact solve is skipped
+        Eigen::Map<Eigen::VectorXd> y = f.cholesky->forward(rhs_);
+        laps.lap(timings_.solve);
+        // Condensed contact problem on B w.
+        const int unknowns = static_cast<int>(problem_.W.rows());
+        const auto G = f.G.leftCols(unknowns);
+        auto y_contact = y.tail(f.G.rows());
+        problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
+        touching = set_contact_conditions(problem_, params_, implicit, dt,
+                                          load.foundation_velocity, s.sticking, gap_old);
+        if (touching) {
+            const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
+            report.contact_iterations = info.iterations;
+            report.contact_sweeps = info.sweeps;
+            report.contact_solved = true;
+            y_contact.noalias() += G * s.lambda;  // L^-1 P B^T lambda lives in the trailing block
+        } else {
+            s.lambda.setZero();  // no node can touch: the contact solve is skipped
+        }
+        laps.lap(timings_.contact);
+        f.cholesky->backward(w_free_);
+        laps.lap(timings_.solve);
     }
-    laps.lap(timings_.contact);
-    f.cholesky->backward(w_free_);
-    laps.lap(timings_.solve);
 
     w_.noalias() = d.expand * w_free_;  // (the plate's w on every top y dof)
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) w_[d.clamped_dofs[k]] = clamped_half_[k];
@@ -353,7 +410,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     }
     record_contact(
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
-        touching, solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
+        touching, f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
         [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;

@@ -17,6 +17,7 @@
 #include "body.hpp"
 #include "contact_solver.hpp"
 #include "discretization.hpp"
+#include "sparse_contact.hpp"
 
 namespace contactbody {
 
@@ -220,6 +221,20 @@ public:
     size_t operator_cache_size() const override { return factor_cache_size; }
     int factorizations() const override { return factorizations_; }  // over the stepper's life
     const char* operator_name() const override { return "factorized 4/dt^2 M + A"; }
+    // Which contact solve the factors carry: automatic takes the measured cost model
+    // (sparse_contact_pays); the others force one (tests, benchmarks). Drops cached factors.
+    enum class ContactPath { automatic, condensed, sparse };
+    void set_contact_path(ContactPath path);
+    // Whether the last substep's factor solves the contact on the sparse system.
+    bool sparse_contact() const;
+    // The cost model: the sparse solve where the condensed one's dense work per substep,
+    // about (2 n_c)^2, exceeds kappa times the unknowns n_f (a sparse solve's work grows with
+    // them), kappa measured by benchmarks/contact_crossover.py. A slip-rate law keeps the
+    // condensed solve (its full Jacobian and exact node solves need W).
+    static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns);
+    static constexpr double sparse_contact_kappa = 8;
+    const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
+    long sparse_refactorizations() const;  // of the cached factors' held operators
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() override { return options_; }
@@ -234,6 +249,9 @@ private:
     Discretization disc_;
     ContactSolverOptions options_;
     ContactSolver solver_;
+    SparseContactSolver sparse_solver_;
+    ContactPath contact_path_ = ContactPath::automatic;
+    bool wants_sparse() const;
     ContactProblem problem_;
     // Most recent first: masters alternate step sizes. Two, as before refinement existed: which
     // factor a substep reuses decides its last bits, and the paper's figures are kept bit for

@@ -104,9 +104,44 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         if (c.lnz < camd_fill) best = &metis;
         cholmod_free_factor(&probe, &c);
     }
-    c_->factor = analyze_given(a, *best, c);
-    c_->check("analysis");
-    cholmod_factorize(&a, c_->factor, &c);
+    if (m_ == 0) {
+        // Nothing trailing: the factor may be refactored (refactor()). CHOLMOD permutes and
+        // transposes a lower-triangular matrix into a new one at every factorization, so it
+        // is given triu(P K P^T) itself, in natural order: refactoring then allocates nothing.
+        perm_ = *best;
+        std::vector<int> inverse(n);
+        for (size_t k = 0; k < n; ++k) inverse[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
+        std::vector<Eigen::Triplet<double>> entries;
+        entries.reserve(static_cast<size_t>(lower.nonZeros()));
+        for (Eigen::Index col = 0; col < lower.outerSize(); ++col)
+            for (int k = lower.outerIndexPtr()[col]; k < lower.outerIndexPtr()[col + 1]; ++k) {
+                const int pr = inverse[static_cast<size_t>(lower.innerIndexPtr()[k])];
+                const int pc = inverse[static_cast<size_t>(col)];
+                entries.emplace_back(std::min(pr, pc), std::max(pr, pc), static_cast<double>(k));
+            }
+        permuted_upper_.resize(n_, n_);
+        permuted_upper_.setFromTriplets(entries.begin(), entries.end());
+        permuted_upper_.makeCompressed();
+        value_map_.resize(static_cast<size_t>(permuted_upper_.nonZeros()));
+        for (Eigen::Index k = 0; k < permuted_upper_.nonZeros(); ++k) {
+            value_map_[static_cast<size_t>(k)] = static_cast<int>(permuted_upper_.valuePtr()[k]);
+            permuted_upper_.valuePtr()[k] = lower.valuePtr()[value_map_[static_cast<size_t>(k)]];
+        }
+        cholmod_sparse upper = lower_view(permuted_upper_);
+        upper.stype = 1;
+        c.nmethods = 1;
+        c.method[0].ordering = CHOLMOD_NATURAL;
+        c.postorder = 0;
+        c_->factor = cholmod_analyze(&upper, &c);
+        c_->check("analysis");
+        cholmod_factorize(&upper, c_->factor, &c);
+    } else {
+        c_->factor = analyze_given(a, *best, c);
+        c_->check("analysis");
+        cholmod_factorize(&a, c_->factor, &c);
+        const int* given = static_cast<const int*>(c_->factor->Perm);
+        perm_.assign(given, given + n);
+    }
     if (c.status == CHOLMOD_NOT_POSDEF)
         throw std::runtime_error("4/dt^2 M + A is not positive definite (Cholesky failed at column " +
                                  std::to_string(c_->factor->minor) + ")");
@@ -114,9 +149,8 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
     cholmod_factor& L = *c_->factor;
     if (!L.is_ll) throw std::runtime_error("CHOLMOD returned an LDL' factor");
 
-    const int* perm = static_cast<const int*>(L.Perm);
     inverse_perm_.assign(n, 0);
-    for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm[k])] = static_cast<int>(k);
+    for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
     for (int t : trailing)
         if (position(t) < n_ - m_) throw std::logic_error("trailing unknowns not ordered last");
 
@@ -155,6 +189,21 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
 
 TrailingCholesky::~TrailingCholesky() = default;
 
+void TrailingCholesky::refactor(const SparseMatrix& K2) {
+    if (m_ != 0) throw std::logic_error("TrailingCholesky::refactor: a trailing block would be stale");
+    cholmod_common& c = c_->common;
+    // K2 holds its lower triangle in K's pattern: its values, permuted as in the factor.
+    for (size_t k = 0; k < value_map_.size(); ++k)
+        permuted_upper_.valuePtr()[k] = K2.valuePtr()[value_map_[k]];
+    cholmod_sparse upper = lower_view(permuted_upper_);
+    upper.stype = 1;
+    cholmod_factorize(&upper, c_->factor, &c);
+    if (c.status == CHOLMOD_NOT_POSDEF)
+        throw std::runtime_error("the held stiffness is not positive definite (Cholesky failed at column " +
+                                 std::to_string(c_->factor->minor) + ")");
+    c_->check("refactorization");
+}
+
 double TrailingCholesky::factor_nonzeros() const {
     const cholmod_factor& L = *c_->factor;
     return static_cast<double>(L.is_super ? L.xsize : static_cast<size_t>(static_cast<const int*>(L.p)[L.n]));
@@ -163,8 +212,7 @@ double TrailingCholesky::factor_nonzeros() const {
 Eigen::Map<Eigen::VectorXd> TrailingCholesky::forward(const Eigen::VectorXd& b) {
     Cholmod& c = *c_;
     double* permuted = static_cast<double*>(c.permuted->x);
-    const int* perm = static_cast<const int*>(c.factor->Perm);
-    for (Eigen::Index k = 0; k < n_; ++k) permuted[k] = b[perm[k]];
+    for (Eigen::Index k = 0; k < n_; ++k) permuted[k] = b[perm_[static_cast<size_t>(k)]];
     c.reshape_workspace();
     if (!cholmod_solve2(CHOLMOD_L, c.factor, c.permuted, nullptr, &c.y, nullptr, &c.work_y,
                         &c.work_e, &c.common))
@@ -179,9 +227,8 @@ void TrailingCholesky::backward(Eigen::VectorXd& x) {
                         &c.common))
         throw std::runtime_error("CHOLMOD backward solve failed (status " + std::to_string(c.common.status) + ")");
     const double* result = static_cast<const double*>(c.x->x);
-    const int* perm = static_cast<const int*>(c.factor->Perm);
     x.resize(n_);
-    for (Eigen::Index k = 0; k < n_; ++k) x[perm[k]] = result[k];
+    for (Eigen::Index k = 0; k < n_; ++k) x[perm_[static_cast<size_t>(k)]] = result[k];
 }
 
 }  // namespace contactbody

@@ -33,6 +33,10 @@ public:
     const Eigen::MatrixXd& trailing_block() const { return trailing_block_; }
     // Nonzeros of L (memory of the factor, and what a solve costs).
     double factor_nonzeros() const;
+    // Factors K2 in place of K, keeping the ordering and symbolic analysis: K2's nonzeros must
+    // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
+    // the diagonal). The trailing block is not updated (none was asked: an empty trailing set).
+    void refactor(const SparseMatrix& K2);
 
     // y = L^-1 P b; the returned view is valid until the next forward() and may be
     // modified in place before backward().
@@ -49,7 +53,11 @@ private:
     struct Cholmod;
     std::unique_ptr<Cholmod> c_;
     Eigen::Index n_ = 0, m_ = 0;
-    std::vector<int> inverse_perm_;
+    std::vector<int> perm_, inverse_perm_;  // factor position -> unknown, and back
+    // Without trailing unknowns: triu(P K P^T), factored in natural order, and for each of its
+    // values the position of K's lower-triangle value it is (refactor()).
+    SparseMatrix permuted_upper_;
+    std::vector<int> value_map_;
     Eigen::MatrixXd trailing_block_;
 };
 

@@ -24,6 +24,14 @@ void ContactProblem::set_operator(const Eigen::MatrixXd& delassus, double fricti
     revision = next_revision();
 }
 
+void ContactProblem::set_conditions(Eigen::Index n, double friction_coefficient) {
+    const bool with_friction = friction_coefficient > 0;
+    W.resize(0, 0);
+    a.setZero(with_friction ? 2 * n : n);
+    friction.setConstant(with_friction ? n : 0, friction_coefficient);
+    revision = next_revision();
+}
+
 double ContactProblem::RateLaw::coefficient(double base, double slip, double* derivative) const {
     const double v = std::abs(slip) / slip_time, sign = slip >= 0 ? 1.0 : -1.0;
     double F = base + viscous * v, dF = viscous;
@@ -74,37 +82,20 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
         trial_pressure_.resize(n);
     }
     for (Eigen::Index i = 0; i < n; ++i) {
-        const double pressure = -lambda[i];
-        const double trial = pressure - r_[i] * (p.gap_limit[i] - u_hat_[i]);
-        if (trial <= 0) {
-            phi[i] = pressure;
-            if (friction) phi[n + i] = lambda[n + i];
-            status_[i] = NodeStatus::open;
-            pattern_[i] = 0;
-            continue;
-        }
-        phi[i] = pressure - trial;
-        pattern_[i] = 1;
-        if (!friction) {
-            status_[i] = NodeStatus::stick;
-            continue;
-        }
-        double F = p.friction[i];
-        if (rate) {
-            F = p.coefficient(i, u_hat_[n + i] - p.slip_origin[i], &rate_dF_[i]);
-            rate_F_[i] = F;
-            trial_pressure_[i] = trial;
-        }
-        const double bound = F * trial;
-        const double z = lambda[n + i] - r_[n + i] * (u_hat_[n + i] - p.slip_origin[i]);
-        if (std::abs(z) <= bound) {
-            phi[n + i] = lambda[n + i] - z;
-            status_[i] = NodeStatus::stick;
-        } else {
-            phi[n + i] = lambda[n + i] - std::copysign(bound, z);
-            status_[i] = NodeStatus::slip;
-            pattern_[i] = z > 0 ? 2 : -2;
-        }
+        double unused = 0;
+        double& phiT = friction ? phi[n + i] : unused;
+        pattern_[i] = alart_curnier_node(
+            lambda[i], friction ? lambda[n + i] : 0.0, u_hat_[i], friction ? u_hat_[n + i] : 0.0,
+            r_[i], friction ? r_[n + i] : 0.0, p.gap_limit[i], friction ? p.slip_origin[i] : 0.0,
+            friction,
+            [&](double trial) {
+                if (!rate) return p.friction[i];
+                const double F = p.coefficient(i, u_hat_[n + i] - p.slip_origin[i], &rate_dF_[i]);
+                rate_F_[i] = F;
+                trial_pressure_[i] = trial;
+                return F;
+            },
+            phi[i], phiT, status_[i]);
     }
     const double scale = lambda.lpNorm<Eigen::Infinity>();
     const double size = phi.lpNorm<Eigen::Infinity>();

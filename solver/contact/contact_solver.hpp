@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,40 @@
 namespace contactbody {
 
 enum class NodeStatus : unsigned char { open, stick, slip };
+
+// One node's Alart-Curnier residual (phi_N, phi_T), zero exactly where the node obeys the
+// contact law, with augmentation parameters r_N, r_T > 0: u = (u_N, u_T) its displacements,
+// lambda = (l_N, l_T) its multipliers. coefficient(trial) gives its friction coefficient (called
+// for an active node with friction only). Returns its pattern: 0 open, 1 stick (or active
+// without friction), +-2 slip with the sign of z. Both contact solvers classify nodes by it.
+template <class Coefficient>
+signed char alart_curnier_node(double lN, double lT, double uN, double uT, double rN, double rT,
+                               double gap, double origin, bool friction, Coefficient&& coefficient,
+                               double& phiN, double& phiT, NodeStatus& status) {
+    const double pressure = -lN;
+    const double trial = pressure - rN * (gap - uN);
+    if (trial <= 0) {
+        phiN = pressure;
+        if (friction) phiT = lT;
+        status = NodeStatus::open;
+        return 0;
+    }
+    phiN = pressure - trial;
+    if (!friction) {
+        status = NodeStatus::stick;
+        return 1;
+    }
+    const double bound = coefficient(trial) * trial;
+    const double z = lT - rT * (uT - origin);
+    if (std::abs(z) <= bound) {
+        phiT = lT - z;
+        status = NodeStatus::stick;
+        return 1;
+    }
+    phiT = lT - std::copysign(bound, z);
+    status = NodeStatus::slip;
+    return z > 0 ? 2 : -2;
+}
 
 struct ContactProblem {
     Eigen::MatrixXd W;           // 2n x 2n (or n x n without friction)
@@ -60,7 +95,11 @@ struct ContactProblem {
     // of it with friction, its normal block without (friction_coefficient 0); a and friction
     // sized to match, and a new revision.
     void set_operator(const Eigen::MatrixXd& delassus, double friction_coefficient);
-    bool has_friction() const { return W.rows() == 2 * gap_limit.size(); }
+    // The conditions of n nodes without W (the sparse contact solve's): a (zero) and friction
+    // sized as set_operator sizes them, W empty.
+    void set_conditions(Eigen::Index n, double friction_coefficient);
+    // a holds the N and T unknowns with friction, the N ones without.
+    bool has_friction() const { return a.size() == 2 * gap_limit.size(); }
 };
 
 struct ContactSolverOptions {

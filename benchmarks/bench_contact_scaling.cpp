@@ -1,0 +1,90 @@
+// One case of benchmarks/contact_scaling.py: a mesh body sliding from the static start, its
+// contact solved by the path asked for. Prints one JSON object: the static start's and one
+// substep's wall time (the mean over SUBSTEPS after the first step), one sparse solve of the
+// same body (K in its fill-reducing order, the floor of a substep), the solve's counts and the
+// peak memory.
+//   bench_contact_scaling MESH MODES PATH(automatic|condensed|sparse) [SUBSTEPS]
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+
+#include "bench_common.hpp"
+#include "reduced_stepper.hpp"
+#include "simulation.hpp"
+#include "trailing_cholesky.hpp"
+
+using namespace contactbody;
+using namespace bench;
+
+int main(int argc, char** argv) {
+    if (argc < 4) {
+        std::fprintf(stderr, "usage: bench_contact_scaling MESH MODES PATH [SUBSTEPS]\n");
+        return 2;
+    }
+    SceneParameters p;  // contact_scaling.py's SCENE
+    p.mesh = argv[1];
+    p.modes = std::atoi(argv[2]);
+    p.friction_coefficient = 0.3;
+    p.damping_stiffness = 4e-6;
+    p.internal_step = 1e-6;
+    p.static_initial_state = true;
+    const double top = -5e-6, velocity = 20, step = 1e-5;
+    const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
+    const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0 ? Stepper::ContactPath::sparse
+                                      : std::strcmp(argv[3], "condensed") == 0 ? Stepper::ContactPath::condensed
+                                                                               : Stepper::ContactPath::automatic;
+    auto t0 = Clock::now();
+    std::unique_ptr<Body> body;
+    Stepper* stepper = nullptr;
+    if (p.modes == 0) {
+        auto s = std::make_unique<Stepper>(p);
+        s->set_contact_path(path);
+        stepper = s.get();
+        body = std::move(s);
+    } else {
+        body = std::make_unique<ReducedStepper>(p, p.modes);
+    }
+    Simulation sim(std::move(body), top);
+    const double start = seconds_since(t0);
+    StepInputs in;
+    in.foundation_velocity = velocity;
+    in.top_displacement = top;
+    sim.do_step(step, in);  // factors what the others reuse
+    const int per_step = static_cast<int>(std::lround(step / p.internal_step));
+    const int steps = std::max(1, substeps / per_step);
+    t0 = Clock::now();
+    int iterations = 0;
+    for (int k = 0; k < steps; ++k) {
+        sim.do_step(step, in);
+        iterations += sim.statistics().contact_iterations;
+    }
+    const double substep = seconds_since(t0) / (steps * per_step);
+    const Observables& o = sim.observables();
+
+    // The floor: one solve with K's Cholesky factor in its fill-reducing order.
+    const Discretization& d = sim.body().discretization();
+    const double dt = p.internal_step;
+    SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free + (2.0 / dt) * d.C_free;
+    TrailingCholesky factor(K, {});
+    Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows()), x(K.rows());
+    factor.solve(b, x);
+    t0 = Clock::now();
+    const int solves = 50;
+    for (int k = 0; k < solves; ++k) factor.solve(b, x);
+    const double solve = seconds_since(t0) / solves;
+    std::printf("{\"contact_nodes\": %d, \"unknowns\": %ld, \"modes\": %d, \"sparse\": %s, "
+                "\"static_start_seconds\": %.6g, \"substep_seconds\": %.6g, "
+                "\"sparse_solve_seconds\": %.6g, \"substep_per_solve\": %.4g, "
+                "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
+                "\"krylov_iterations\": %ld, \"held_refactorizations\": %ld, "
+                "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
+                "\"peak_memory_mb\": %.1f}\n",
+                sim.body().num_contact_nodes(), static_cast<long>(K.rows()), p.modes,
+                stepper && stepper->sparse_contact() ? "true" : "false", start, substep, solve,
+                substep / solve, static_cast<double>(iterations) / (steps * per_step),
+                stepper ? stepper->sparse_solver().solves() : 0L,
+                stepper ? stepper->sparse_solver().krylov_iterations() : 0L,
+                stepper ? stepper->sparse_refactorizations() : 0L, o.normal_force,
+                o.kinetic_energy, o.strain_energy, peak_rss_mb());
+}

@@ -1,0 +1,363 @@
+#include "sparse_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "text.hpp"
+#include "trailing_cholesky.hpp"
+
+namespace contactbody {
+
+HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
+    : K_(K), dofs_(std::move(contact_dofs)) {
+    K_.makeCompressed();
+    lower_ = K_.triangularView<Eigen::Lower>();
+    lower_.makeCompressed();
+    held_lower_ = lower_;
+    const Eigen::Index m = unknowns(), nf = K_.rows();
+    std::vector<int> unknown_of(static_cast<size_t>(nf), -1);
+    for (Eigen::Index j = 0; j < m; ++j) unknown_of[static_cast<size_t>(dof(j))] = static_cast<int>(j);
+    positions_.assign(static_cast<size_t>(m), {});
+    diagonal_.assign(static_cast<size_t>(m), -1);
+    for (Eigen::Index c = 0; c < nf; ++c) {
+        for (int k = lower_.outerIndexPtr()[c]; k < lower_.outerIndexPtr()[c + 1]; ++k) {
+            const int r = lower_.innerIndexPtr()[k];
+            const int jr = unknown_of[static_cast<size_t>(r)], jc = unknown_of[static_cast<size_t>(c)];
+            if (jc >= 0) positions_[static_cast<size_t>(jc)].push_back(k);
+            if (jr >= 0 && r != c) positions_[static_cast<size_t>(jr)].push_back(k);
+            if (jc >= 0 && r == c) diagonal_[static_cast<size_t>(jc)] = k;
+        }
+    }
+    // K's rows at the contact dofs are its columns there (K is symmetric).
+    std::vector<Eigen::Triplet<double>> entries;
+    stiffness_.resize(m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+        if (diagonal_[static_cast<size_t>(j)] < 0)
+            throw std::logic_error("HeldOperator: a contact dof without a diagonal entry");
+        stiffness_[j] = lower_.valuePtr()[diagonal_[static_cast<size_t>(j)]];
+        for (SparseMatrix::InnerIterator it(K_, dof(j)); it; ++it)
+            entries.emplace_back(static_cast<int>(j), static_cast<int>(it.row()), it.value());
+    }
+    rows_.resize(m, nf);
+    rows_.setFromTriplets(entries.begin(), entries.end());
+    factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{});
+    held_.assign(static_cast<size_t>(m), 0);
+    held_dof_.assign(static_cast<size_t>(nf), 0);
+}
+
+HeldOperator::~HeldOperator() = default;
+
+double HeldOperator::factor_nonzeros() const { return factor_->factor_nonzeros(); }
+
+void HeldOperator::hold(const std::vector<char>& held) {
+    if (held == held_) return;
+    std::copy(lower_.valuePtr(), lower_.valuePtr() + lower_.nonZeros(), held_lower_.valuePtr());
+    for (size_t j = 0; j < held.size(); ++j) {
+        held_dof_[static_cast<size_t>(dofs_[j])] = held[j];
+        if (!held[j]) continue;
+        for (int k : positions_[j]) held_lower_.valuePtr()[k] = 0;
+        held_lower_.valuePtr()[diagonal_[j]] = 1;
+    }
+    factor_->refactor(held_lower_);
+    held_ = held;
+    ++refactorizations_;
+}
+
+void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const {
+    for (size_t j = 0; j < held_.size(); ++j) {
+        if (!held_[j] || values[static_cast<Eigen::Index>(j)] == 0) continue;
+        const double v = values[static_cast<Eigen::Index>(j)];
+        for (SparseMatrix::InnerIterator it(K_, dofs_[j]); it; ++it)
+            if (!held_dof_[static_cast<size_t>(it.row())]) b[it.row()] -= it.value() * v;
+    }
+    for (size_t j = 0; j < held_.size(); ++j)
+        if (held_[j]) b[dofs_[j]] = values[static_cast<Eigen::Index>(j)];
+}
+
+void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) { factor_->solve(b, x); }
+
+namespace {
+double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
+    return pattern > 0 ? p.friction[i] : -p.friction[i];
+}
+}  // namespace
+
+double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem& p,
+                                     const Eigen::VectorXd& w, const Eigen::VectorXd& lambda,
+                                     Eigen::VectorXd& phi) {
+    const Eigen::Index n = p.gap_limit.size();
+    const bool friction = p.has_friction();
+    phi.resize(lambda.size());
+    trial_pattern_.resize(n);
+    trial_status_.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        double unused = 0;
+        double& phiT = friction ? phi[n + i] : unused;
+        trial_pattern_[i] = alart_curnier_node(
+            lambda[i], friction ? lambda[n + i] : 0.0, -w[K.dof(i)], friction ? w[K.dof(n + i)] : 0.0,
+            K.stiffness(i), friction ? K.stiffness(n + i) : 0.0, p.gap_limit[i],
+            friction ? p.slip_origin[i] : 0.0, friction, [&](double) { return p.friction[i]; },
+            phi[i], phiT, trial_status_[i]);
+    }
+    const double scale = lambda.lpNorm<Eigen::Infinity>();
+    const double size = phi.lpNorm<Eigen::Infinity>();
+    if (size == 0) return 0;
+    return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
+}
+
+// The multipliers of w: the contact dofs' reactions K w - rhs (B^T lambda), zero at open nodes.
+void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem& p,
+                                    const Eigen::VectorXd& rhs) {
+    const Eigen::Index n = p.gap_limit.size();
+    const bool friction = p.has_friction();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const bool active = pattern_[i] != 0;
+        lambda_new_[i] = active ? -(K.row_product(i, w_new_) - rhs[K.dof(i)]) : 0.0;
+        if (friction)
+            lambda_new_[n + i] = active ? K.row_product(n + i, w_new_) - rhs[K.dof(n + i)] : 0.0;
+    }
+}
+
+void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
+                                     const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x) {
+    const Eigen::Index m = K.unknowns();
+    if (affine) b_ = rhs;
+    else b_.setZero();
+    for (Eigen::Index j = 0; j < m; ++j) values_[j] = affine ? targets_[j] : 0.0;
+    for (size_t k = 0; k < coupling_.size(); ++k) {
+        const Coupling& c = coupling_[k];
+        const double v = xi[static_cast<Eigen::Index>(k)];
+        if (c.kind == load) b_[K.dof(c.unknown)] += v;
+        else values_[c.unknown] = v / K.stiffness(c.unknown);
+    }
+    K.impose(b_, values_);
+    K.solve(b_, x);
+    ++solves_;
+}
+
+void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem& p,
+                                    const Eigen::VectorXd& rhs, const Eigen::VectorXd& x,
+                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const {
+    const Eigen::Index n = p.gap_limit.size();
+    const auto reaction = [&](Eigen::Index j) {
+        return K.row_product(j, x) - (homogeneous ? 0.0 : rhs[K.dof(j)]);
+    };
+    for (size_t k = 0; k < coupling_.size(); ++k) {
+        const Coupling& c = coupling_[k];
+        const Eigen::Index j = c.unknown;
+        e[static_cast<Eigen::Index>(k)] =
+            c.held ? K.stiffness(j) * (x[K.dof(j)] - (homogeneous ? 0.0 : targets_[j]))
+                   : reaction(j) - (c.sf != 0 ? c.sf * reaction(j - n) : 0.0);
+    }
+}
+
+// The step of pattern_ from the multipliers in lambda_trial_ (the iterate): w_new_, lambda_new_.
+void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p,
+                                        const Eigen::VectorXd& rhs, double scale,
+                                        double tolerance) {
+    const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
+    const bool friction = p.has_friction();
+    int differing = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        held_[static_cast<size_t>(i)] = pattern_[i] != 0;
+        held_[static_cast<size_t>(n + i)] = friction && pattern_[i] == 1;
+        targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
+        targets_[n + i] = friction ? p.slip_origin[i] : 0.0;
+    }
+    for (Eigen::Index j = 0; j < m; ++j) differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
+    if (differing > max_differing) K.hold(held_);
+    // On a factor of another held set, GCR stops after max_detour solves and the pattern is
+    // solved again on its own factor (where the body is stiff, as in the static start's load
+    // paths, the differing dofs' system converges slowly).
+    if (!solve_coupled(K, p, rhs, scale, tolerance, K.held() == held_ ? max_directions : max_detour)) {
+        K.hold(held_);
+        solve_coupled(K, p, rhs, scale, tolerance, max_directions);
+    }
+    reactions(K, p, rhs);
+}
+
+bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p,
+                                        const Eigen::VectorXd& rhs, double scale,
+                                        double tolerance, int max_iterations) {
+    const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
+    const bool friction = p.has_friction();
+    // The unknowns: what the pattern asks that the factor's held set does not give.
+    coupling_.clear();
+    for (Eigen::Index j = 0; j < m; ++j) {
+        const Eigen::Index i = j < n ? j : j - n;
+        const bool wants = held_[static_cast<size_t>(j)] != 0, has = K.held()[static_cast<size_t>(j)] != 0;
+        const bool slips = j >= n && friction && (pattern_[i] == 2 || pattern_[i] == -2);
+        const double sf = slips ? slip_sign(p, i, pattern_[i]) : 0.0;
+        if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true});
+        else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false});
+        else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false});
+    }
+    // Their first values from the iterate's multipliers (a held value from rest).
+    const Eigen::Index q = static_cast<Eigen::Index>(coupling_.size());
+    double force_scale = scale;
+    for (Eigen::Index k = 0; k < q; ++k) {
+        const Coupling& c = coupling_[static_cast<size_t>(k)];
+        const Eigen::Index i = c.unknown < n ? c.unknown : c.unknown - n;
+        double guess = 0;
+        if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
+        else if (c.kind == load) guess = c.sf * -lambda_trial_[i];
+        xi_[k] = guess;
+        force_scale = std::max(force_scale, std::abs(guess));
+    }
+    held_solve(K, rhs, true, xi_, w_new_);
+    if (q > 0) {
+        auto r = krylov_residual_.head(q);
+        equations(K, p, rhs, w_new_, false, r);
+        r = -r;
+        force_scale = std::max(force_scale, r.lpNorm<Eigen::Infinity>());
+        const double goal = 0.5 * tolerance * force_scale;
+        // The kept directions hold while the system does: the same pattern, factor and
+        // coefficients.
+        if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations() ||
+            kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_ ||
+            kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction) {
+            kept_ = first_ = 0;
+            kept_operator_ = &K;
+            kept_refactorizations_ = K.refactorizations();
+            kept_pattern_ = pattern_;
+            kept_friction_ = p.friction;
+        }
+        // GCR: the kept directions' images c_j are orthonormal, so the residual's part in
+        // their span goes at no solve; each new direction costs one held solve. Directions
+        // are kept as loads and values (q entries), not as solutions: w is solved once more
+        // at the end, which costs less than updating n_f-sized solutions with each of them.
+        const auto column = [&](int j) { return (first_ + j) % max_directions; };
+        bool changed = false;
+        for (int j = 0; j < kept_; ++j) {
+            const double alpha = images_.col(column(j)).head(q).dot(r);
+            r -= alpha * images_.col(column(j)).head(q);
+            xi_.head(q) += alpha * directions_.col(column(j)).head(q);
+            changed = true;
+        }
+        int iterations = 0;
+        while (r.lpNorm<Eigen::Infinity>() > goal) {
+            if (iterations >= max_iterations) {
+                if (max_iterations < max_directions) return false;
+                Text msg;
+                msg << "sparse contact solve: GCR on " << q << " coupled unknowns did not reach "
+                    << goal << " N/m in " << max_iterations << " held solves ("
+                    << r.lpNorm<Eigen::Infinity>() << " N/m left)";
+                throw ContactSolveError(msg.str());
+            }
+            if (kept_ == max_directions) {  // the oldest goes (the rest stay orthonormal)
+                first_ = (first_ + 1) % max_directions;
+                --kept_;
+            }
+            const int slot = column(kept_);
+            auto v = directions_.col(slot).head(q);
+            auto c = images_.col(slot).head(q);
+            v = r;
+            held_solve(K, rhs, false, directions_.col(slot), z_);
+            equations(K, p, rhs, z_, true, c);
+            for (int j = 0; j < kept_; ++j) {  // modified Gram-Schmidt on the images
+                const double beta = images_.col(column(j)).head(q).dot(c);
+                c -= beta * images_.col(column(j)).head(q);
+                v -= beta * directions_.col(column(j)).head(q);
+            }
+            const double norm = c.norm();
+            if (!(norm > 0)) throw ContactSolveError("sparse contact solve: GCR broke down");
+            c /= norm;
+            v /= norm;
+            const double alpha = c.dot(r);
+            r -= alpha * c;
+            xi_.head(q) += alpha * v;
+            changed = true;
+            ++kept_;
+            ++iterations;
+            ++krylov_iterations_;
+        }
+        if (changed) held_solve(K, rhs, true, xi_, w_new_);
+    }
+    return true;
+}
+
+ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProblem& p,
+                                            const ContactSolverOptions& options,
+                                            const Eigen::VectorXd& rhs,
+                                            const Eigen::VectorXd& sticking,
+                                            Eigen::VectorXd& lambda, Eigen::VectorXd& w) {
+    const Eigen::Index n = p.gap_limit.size(), nf = K.size();
+    const bool friction = p.has_friction();
+    const Eigen::Index m = friction ? 2 * n : n;
+    if (lambda.size() != m) lambda.setZero(m);
+    // Workspace: sized once (resizing to the same size does not allocate).
+    const Eigen::Index m2 = K.unknowns();
+    held_.resize(static_cast<size_t>(m2));
+    coupling_.reserve(static_cast<size_t>(m2));
+    values_.resize(m2);
+    targets_.resize(m2);
+    xi_.resize(m2);
+    direction_.resize(m2);
+    krylov_residual_.resize(m2);
+    for (Eigen::VectorXd* v : {&w, &w_new_, &w_trial_, &b_, &z_}) v->resize(nf);
+    for (Eigen::VectorXd* v : {&lambda_new_, &lambda_trial_}) v->resize(m);
+    if (images_.rows() != m2) {
+        images_.resize(m2, max_directions);
+        directions_.resize(m2, max_directions);
+        kept_ = first_ = 0;
+    }
+    // The first pattern from the State: the last substep's pressed nodes, sticking where its
+    // stick memory says, else slipping along their friction.
+    pattern_.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (!(lambda[i] < 0)) pattern_[i] = 0;
+        else if (!friction || sticking[i] != 0) pattern_[i] = 1;
+        else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
+    }
+    lambda_trial_ = lambda;
+    ContactSolveInfo info;
+    double merit = std::numeric_limits<double>::infinity();
+    for (;;) {
+        if (info.iterations >= options.max_iterations) {
+            Text msg;
+            msg << "sparse contact solve did not converge in " << options.max_iterations
+                << " iterations (relative residual " << info.residual << ", tolerance "
+                << options.tolerance << ")";
+            throw ContactSolveError(msg.str());
+        }
+        ++info.iterations;
+        solve_pattern(K, p, rhs, lambda_trial_.lpNorm<Eigen::Infinity>(), options.tolerance);
+        double res = residual(K, p, w_new_, lambda_new_, phi_new_);
+        double trial_merit = phi_new_.squaredNorm();
+        if (info.iterations > 1 && res > options.tolerance && !(trial_merit <= (1 - 1e-4) * merit)) {
+            // Backtrack between the iterate and the step (both in balance: so is any mix).
+            bool decreased = false;
+            double alpha = 1;
+            for (int k = 0; k < 8 && !decreased; ++k) {
+                alpha *= 0.5;
+                w_trial_ = w + alpha * (w_new_ - w);
+                lambda_trial_ = lambda + alpha * (lambda_new_ - lambda);
+                const double r = residual(K, p, w_trial_, lambda_trial_, phi_);
+                if (phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit) {
+                    decreased = true;
+                    w_new_.swap(w_trial_);
+                    lambda_new_.swap(lambda_trial_);
+                    phi_new_.swap(phi_);
+                    res = r;
+                    trial_merit = phi_new_.squaredNorm();
+                }
+            }
+            if (!decreased) {  // the full step anyway: its pattern again
+                res = residual(K, p, w_new_, lambda_new_, phi_new_);
+                trial_merit = phi_new_.squaredNorm();
+            }
+        }
+        w.swap(w_new_);
+        lambda.swap(lambda_new_);
+        lambda_trial_ = lambda;
+        pattern_.swap(trial_pattern_);
+        status_.swap(trial_status_);
+        merit = trial_merit;
+        info.residual = res;
+        if (res <= options.tolerance) return info;
+    }
+}
+
+}  // namespace contactbody

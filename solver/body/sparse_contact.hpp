@@ -1,0 +1,146 @@
+// The contact solve on the body's sparse system, for contact boundaries too long for the
+// condensed one (docs/decisions.md, "The contact solve at any size"): the Delassus operator
+// W = B K^-1 B^T is dense in the 2 n_c contact unknowns, so forming it costs n_c^3 and
+// (2 n_c)^2 memory. Here it is never formed.
+//
+// Semi-smooth Newton on the same Alart-Curnier residual as ContactSolver (alart_curnier_node),
+// iterated as a primal-dual active set: each iterate (w, lambda) satisfies K w = rhs + B^T lambda
+// exactly, and a node pattern's step solves that pattern's linear problem on the sparse system:
+//   active node:   its y dof held at the gap (u_N = gap limit),
+//   sticking node: its x dof held at the slip origin too,
+//   slipping node: its x dof loaded by lambda_T = sf pressure, sf = +-F (the reaction of its
+//                  held y dof: a non-symmetric coupling),
+//   open node:     unloaded.
+// The held factor is the Cholesky factor of K with a set of contact dofs held (their rows and
+// columns the identity's), in K's own fill-reducing ordering and symbolic analysis. A pattern
+// is solved on the factor of a nearby held set: what differs (dofs held now but free in the
+// factor, dofs free now but held in it, and the slipping nodes' loads) are the unknowns of a
+// small linear system solved by GCR, one held solve an iteration, whose directions are kept
+// while the pattern holds (a substep like the last needs none). The factor is rebuilt (a
+// numeric refactorization) only where many dofs differ.
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+#include <vector>
+
+#include "assembly.hpp"
+#include "contact_solver.hpp"
+
+namespace contactbody {
+
+class TrailingCholesky;
+
+// K on the free dofs for one substep size, with a set of contact unknowns held.
+class HeldOperator {
+public:
+    // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
+    // then x dofs; Discretization::contact_unknowns).
+    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs);
+    ~HeldOperator();
+    HeldOperator(const HeldOperator&) = delete;
+    HeldOperator& operator=(const HeldOperator&) = delete;
+
+    Eigen::Index size() const { return K_.rows(); }
+    Eigen::Index unknowns() const { return static_cast<Eigen::Index>(dofs_.size()); }
+    int dof(Eigen::Index j) const { return dofs_[static_cast<size_t>(j)]; }
+    // K's diagonal at contact unknown j: 1 / K_jj <= W_jj, the augmentation parameter's scale.
+    double stiffness(Eigen::Index j) const { return stiffness_[j]; }
+    // (K x) at contact unknown j's dof.
+    double row_product(Eigen::Index j, const Eigen::VectorXd& x) const {
+        return rows_.row(j).dot(x);
+    }
+    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed).
+    void hold(const std::vector<char>& held);
+    const std::vector<char>& held() const { return held_; }
+    // b <- b - K(:, held) values(held) on the rows not held, and values on the held rows: the
+    // right-hand side whose held solve has x = values on the held dofs.
+    void impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const;
+    // x = K_H^-1 b (K_H: K with the held rows and columns the identity's).
+    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+    long refactorizations() const { return refactorizations_; }
+    double factor_nonzeros() const;
+
+private:
+    SparseMatrix K_;                 // both triangles: the held columns' entries
+    SparseMatrix lower_, held_lower_;  // lower triangle, and as factored (same pattern)
+    RowMajorSparseMatrix rows_;      // K's rows at the contact unknowns
+    std::vector<int> dofs_;
+    Eigen::VectorXd stiffness_;
+    // Per contact unknown: the positions in lower_'s values of its row and column, and of its
+    // diagonal entry.
+    std::vector<std::vector<int>> positions_;
+    std::vector<int> diagonal_;
+    std::unique_ptr<TrailingCholesky> factor_;
+    std::vector<char> held_, held_dof_;  // per contact unknown, per free dof
+    long refactorizations_ = 0;
+};
+
+class SparseContactSolver {
+public:
+    // Solves K w = rhs + B^T lambda with the contact conditions of `problem` (its gap limits,
+    // slip origins and friction coefficients; its W and a are not used), from the multipliers
+    // of the last substep in lambda and its stick memory `sticking` (the first pattern: so the
+    // result depends on the State alone). Throws ContactSolveError where Newton or GMRES fail.
+    // B: N_i = -e_y(i), T_i = +e_x(i) (the full stepper's).
+    ContactSolveInfo solve(HeldOperator& K, const ContactProblem& problem,
+                           const ContactSolverOptions& options, const Eigen::VectorXd& rhs,
+                           const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
+                           Eigen::VectorXd& w);
+    const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
+    bool touching() const { return (pattern_.array() != 0).any(); }
+    long solves() const { return solves_; }  // held solves over the solver's life
+    long krylov_iterations() const { return krylov_iterations_; }
+
+    static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
+    // More dofs differing from the factor's held set than this: refactor to the pattern's.
+    static constexpr int max_differing = 64;
+    static constexpr int max_detour = 16;
+
+private:
+    void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                       double scale, double tolerance);
+    // The coupled unknowns' system on K's current factor, into w_new_; false where it took
+    // more than max_iterations held solves.
+    bool solve_coupled(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                       double scale, double tolerance, int max_iterations);
+    double residual(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& w,
+                    const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
+    void reactions(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs);
+    // The system's unknowns (Coupling) and what a held solve with them gives.
+    enum Kind : int { load, value };
+    struct Coupling {
+        int unknown;   // contact unknown j (N: node i, T: n + i)
+        Kind kind;     // a load (the factor's dof free) or a held value (held in the factor)
+        double sf;     // +-F where the equation is a slip law's, else 0
+        bool held;     // the pattern holds the dof (else it is loaded)
+    };
+    // The right-hand side and held values of unknowns xi on top of base (the affine part's),
+    // solved into x.
+    void held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
+                    const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x);
+    // The system's equations at x (homogeneous: without rhs and held values).
+    void equations(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                   const Eigen::VectorXd& x, bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const;
+
+    using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
+    Pattern pattern_, trial_pattern_;
+    Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;
+    std::vector<char> held_;
+    // The iterate and the pattern step's result (new_), the backtracking trial.
+    Eigen::VectorXd w_new_, lambda_new_, w_trial_, lambda_trial_, phi_, phi_new_;
+    Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values
+    std::vector<Coupling> coupling_;
+    Eigen::VectorXd xi_, krylov_residual_, direction_;
+    // GCR's kept directions (loads and values) and their images (orthonormal), a ring of
+    // kept_ from first_, valid for the pattern, factor and coefficients they were made with.
+    Eigen::MatrixXd directions_, images_;
+    int kept_ = 0, first_ = 0;
+    Pattern kept_pattern_;
+    Eigen::VectorXd kept_friction_;
+    const HeldOperator* kept_operator_ = nullptr;
+    long kept_refactorizations_ = -1;
+    long solves_ = 0, krylov_iterations_ = 0;
+};
+
+}  // namespace contactbody

@@ -38,14 +38,16 @@ void expect_contact_law(const ContactSnapshot& c, double F, double eps, const st
 
 }  // namespace
 
-class ContactLaw : public ::testing::TestWithParam<std::tuple<int, double>> {};
+// The condensed contact solve, and the sparse one (sparse_contact.hpp).
+class ContactLaw : public ::testing::TestWithParam<std::tuple<int, double, bool>> {};
 
 TEST_P(ContactLaw, HoldsAtEverySubstep) {
-    const auto [variant, F] = GetParam();
+    const auto [variant, F, sparse] = GetParam();
     SceneParameters p;
     p.mass_matrix = static_cast<MassVariant>(variant);
     p.friction_coefficient = F;
     Stepper stepper(p);
+    stepper.set_contact_path(sparse ? Stepper::ContactPath::sparse : Stepper::ContactPath::condensed);
     State s = stepper.initial_state(-2.5e-5);
     SubstepLoad load{-2.5e-5, -2.5e-5, 0, 20};
     int contact_substeps = 0;
@@ -62,7 +64,7 @@ TEST_P(ContactLaw, HoldsAtEverySubstep) {
 
 INSTANTIATE_TEST_SUITE_P(Variants, ContactLaw,
                          ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
-                                            ::testing::Values(1.2, 0.2, 0.0)));
+                                            ::testing::Values(1.2, 0.2, 0.0), ::testing::Bool()));
 
 TEST(Simulation, FailedContactSolveRestoresTheStepStart) {
     SceneParameters p;

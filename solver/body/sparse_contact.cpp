@@ -42,7 +42,7 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
     }
     rows_.resize(m, nf);
     rows_.setFromTriplets(entries.begin(), entries.end());
-    factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{});
+    factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{}, true);
     held_.assign(static_cast<size_t>(m), 0);
     held_dof_.assign(static_cast<size_t>(nf), 0);
 }
@@ -282,7 +282,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                                             const ContactSolverOptions& options,
                                             const Eigen::VectorXd& rhs,
                                             const Eigen::VectorXd& sticking,
-                                            Eigen::VectorXd& lambda, Eigen::VectorXd& w) {
+                                            Eigen::VectorXd& lambda, Eigen::VectorXd& w,
+                                            bool fresh_factor) {
     const Eigen::Index n = p.gap_limit.size(), nf = K.size();
     const bool friction = p.has_friction();
     const Eigen::Index m = friction ? 2 * n : n;
@@ -310,6 +311,14 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         if (!(lambda[i] < 0)) pattern_[i] = 0;
         else if (!friction || sticking[i] != 0) pattern_[i] = 1;
         else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
+    }
+    if (fresh_factor) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            held_[static_cast<size_t>(i)] = pattern_[i] != 0;
+            held_[static_cast<size_t>(n + i)] = pattern_[i] == 1 && friction;
+        }
+        K.hold(held_);
+        forget();
     }
     lambda_trial_ = lambda;
     ContactSolveInfo info;

@@ -81,12 +81,16 @@ public:
     // Solves K w = rhs + B^T lambda with the contact conditions of `problem` (its gap limits,
     // slip origins and friction coefficients; its W and a are not used), from the multipliers
     // of the last substep in lambda and its stick memory `sticking` (the first pattern: so the
-    // result depends on the State alone). Throws ContactSolveError where Newton or GMRES fail.
+    // result depends on the State and K's held set; with fresh_factor, K is first held at that
+    // pattern and the kept directions dropped). Throws ContactSolveError where Newton or GCR
+    // fail.
     // B: N_i = -e_y(i), T_i = +e_x(i) (the full stepper's).
     ContactSolveInfo solve(HeldOperator& K, const ContactProblem& problem,
                            const ContactSolverOptions& options, const Eigen::VectorXd& rhs,
                            const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
-                           Eigen::VectorXd& w);
+                           Eigen::VectorXd& w, bool fresh_factor);
+    // Drops the kept directions (they make a solve faster, and change its last bits).
+    void forget() { kept_ = first_ = 0; kept_operator_ = nullptr; }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life

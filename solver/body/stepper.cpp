@@ -77,6 +77,7 @@ void Stepper::start_run() {
     timing_ = false;
     timings_ = SubstepTimings{};
     problem_factor_ = 0;
+    current_factor_ = 0;
     const Eigen::Index nf = disc_.expand.cols();
     const Eigen::Index nc = num_contact_nodes();
     relative_.resize(disc_.mesh.num_dofs());
@@ -224,6 +225,37 @@ bool Stepper::sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unkno
 
 bool Stepper::sparse_contact() const { return cache_[0] && cache_[0]->held; }
 
+ContactFactorization Stepper::contact_factorization() const {
+    const Factor* f = nullptr;
+    for (const auto& c : cache_)
+        if (c && c->id == current_factor_) f = c.get();
+    if (!f || !f->held) return {};
+    const Eigen::Index nc = num_contact_nodes();
+    ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc))};
+    for (Eigen::Index i = 0; i < nc; ++i)
+        out.pattern[static_cast<size_t>(i)] = static_cast<signed char>(
+            !f->held->held()[static_cast<size_t>(i)] ? 0 : f->held->held()[static_cast<size_t>(nc + i)] ? 1 : 2);
+    return out;
+}
+
+void Stepper::set_contact_factorization(const ContactFactorization& saved) {
+    sparse_solver_.forget();
+    current_factor_ = 0;  // none: the next factor used starts at the state's held set
+    if (saved.pattern.empty()) return;
+    for (const auto& c : cache_) {
+        if (!c || !c->held || c->dt != saved.substep) continue;
+        const Eigen::Index nc = num_contact_nodes();
+        std::vector<char> held(static_cast<size_t>(2 * nc));
+        for (Eigen::Index i = 0; i < nc; ++i) {
+            const signed char x = saved.pattern[static_cast<size_t>(i)];
+            held[static_cast<size_t>(i)] = x != 0;
+            held[static_cast<size_t>(nc + i)] = x == 1;
+        }
+        c->held->hold(held);
+        current_factor_ = c->id;
+    }
+}
+
 long Stepper::sparse_refactorizations() const {
     long count = 0;
     for (const auto& f : cache_)
@@ -298,6 +330,11 @@ void Stepper::setup_contact_problem(const Factor& f) {
 SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     Laps laps(timing_);
     const Factor& f = factor_for(dt);
+    struct Current {  // current_factor_ = f.id once the substep is done (or failed)
+        int& id;
+        int f;
+        ~Current() { id = f; }
+    } current{current_factor_, f.id};
     if (problem_factor_ != f.id) setup_contact_problem(f);
     laps.lap(timings_.factor);
     const Discretization& d = disc_;
@@ -341,8 +378,8 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         problem_.a.setZero();  // unknown here: every substep solves, and says who touched
         set_contact_conditions(problem_, params_, implicit, dt, load.foundation_velocity,
                                s.sticking, gap_old);
-        const ContactSolveInfo info =
-            sparse_solver_.solve(*f.held, problem_, options_, rhs_, s.sticking, s.lambda, w_free_);
+        const ContactSolveInfo info = sparse_solver_.solve(*f.held, problem_, options_, rhs_, s.sticking,
+                                                           s.lambda, w_free_, f.id != current_factor_);
         touching = sparse_solver_.touching();
         report.contact_iterations = info.iterations;
         report.contact_solved = touching;

@@ -235,6 +235,11 @@ public:
     static constexpr double sparse_contact_kappa = 8;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     long sparse_refactorizations() const;  // of the cached factors' held operators
+    // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held) of the
+    // current factor: a saved state keeps it, so that a restored one solves on the same.
+    ContactFactorization contact_factorization() const override;
+    void set_contact_factorization(const ContactFactorization& f) override;
+    void begin_step() override { sparse_solver_.forget(); }
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() override { return options_; }
@@ -269,6 +274,9 @@ private:
     void start_run();  // the state of a new stepper, but for the discretization and factors
     int factor_ids_ = 0;  // factors built or taken from spare_: problem_factor_ names one
     int problem_factor_ = 0;  // id of the factor problem_.W was built from
+    // The factor the last substep used: another one (new, switched to after a change of the
+    // substep size, or after a restart) starts at the state's own held set.
+    int current_factor_ = 0;
     int factorizations_ = 0;
     bool timing_ = false;
     SubstepTimings timings_;

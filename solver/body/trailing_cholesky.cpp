@@ -66,7 +66,8 @@ cholmod_factor* analyze_given(cholmod_sparse& a, std::vector<int>& perm, cholmod
 
 }  // namespace
 
-TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing)
+TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing,
+                                   bool refactorable)
     : c_(std::make_unique<Cholmod>()), n_(K.rows()), m_(static_cast<Eigen::Index>(trailing.size())) {
     cholmod_common& c = c_->common;
     // Simplicial L L^T: with one right-hand side its solves are 1.6-2.5x faster than the
@@ -104,8 +105,9 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         if (c.lnz < camd_fill) best = &metis;
         cholmod_free_factor(&probe, &c);
     }
-    if (m_ == 0) {
-        // Nothing trailing: the factor may be refactored (refactor()). CHOLMOD permutes and
+    if (refactorable) {
+        if (m_ != 0) throw std::logic_error("TrailingCholesky: a refactorable factor has no trailing block");
+        // The factor may be refactored (refactor()). CHOLMOD permutes and
         // transposes a lower-triangular matrix into a new one at every factorization, so it
         // is given triu(P K P^T) itself, in natural order: refactoring then allocates nothing.
         perm_ = *best;
@@ -190,7 +192,7 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
 TrailingCholesky::~TrailingCholesky() = default;
 
 void TrailingCholesky::refactor(const SparseMatrix& K2) {
-    if (m_ != 0) throw std::logic_error("TrailingCholesky::refactor: a trailing block would be stale");
+    if (value_map_.empty()) throw std::logic_error("TrailingCholesky::refactor: not refactorable");
     cholmod_common& c = c_->common;
     // K2 holds its lower triangle in K's pattern: its values, permuted as in the factor.
     for (size_t k = 0; k < value_map_.size(); ++k)

@@ -20,7 +20,9 @@ public:
     // Factors the symmetric positive definite K (only its lower triangle is read) with the
     // unknowns in `trailing` ordered last (fill-reducing order elsewhere, and among them).
     // Throws std::runtime_error naming the cause if K is not positive definite.
-    TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing);
+    // refactorable (no trailing unknowns): refactor() may be called; the factor is then kept
+    // as CHOLMOD factors a prepermuted matrix, in natural order.
+    TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false);
     ~TrailingCholesky();
     TrailingCholesky(const TrailingCholesky&) = delete;
     TrailingCholesky& operator=(const TrailingCholesky&) = delete;
@@ -35,7 +37,7 @@ public:
     double factor_nonzeros() const;
     // Factors K2 in place of K, keeping the ordering and symbolic analysis: K2's nonzeros must
     // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
-    // the diagonal). The trailing block is not updated (none was asked: an empty trailing set).
+    // the diagonal). Only for a refactorable factor.
     void refactor(const SparseMatrix& K2);
 
     // y = L^-1 P b; the returned view is valid until the next forward() and may be

@@ -340,6 +340,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const double dt = h / n, t0 = state_.time;
     saved_ = state_;
     const Works saved_works = works_;
+    body_->begin_step();
 
     StepSums sums;
     Observables& avg = sums.avg;

@@ -3,7 +3,7 @@
 // substep's wall time (the mean over SUBSTEPS after the first step), one sparse solve of the
 // same body (K in its fill-reducing order, the floor of a substep), the solve's counts and the
 // peak memory.
-//   bench_contact_scaling MESH MODES PATH(automatic|condensed|sparse) [SUBSTEPS]
+//   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse) [SUBSTEPS]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -23,7 +23,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     SceneParameters p;  // contact_scaling.py's SCENE
-    p.mesh = argv[1];
+    // MESH: a Gmsh file, or rect:NX for the paper's rectangle with nx = ny = NX.
+    if (std::strncmp(argv[1], "rect:", 5) == 0) p.nx = p.ny = std::atoi(argv[1] + 5);
+    else p.mesh = argv[1];
     p.modes = std::atoi(argv[2]);
     p.friction_coefficient = 0.3;
     p.damping_stiffness = 4e-6;

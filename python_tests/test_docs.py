@@ -118,3 +118,16 @@ def test_generated_table_ratio_and_text_lines_are_checked(tmp_path, monkeypatch)
         True, False, True, False, True, False]
     doc_tables.write(page, tmp_path)  # --write regenerates the stale table
     assert [holds for _, _, _, holds in quotes(page)].count(False) == 2
+
+
+def test_the_contact_solve_cost_model_is_the_measured_crossover():
+    """Stepper::sparse_contact_kappa lies between the largest (2 n_c)^2 / n_f where the
+    condensed solve was measured faster and the smallest where the sparse one was
+    (benchmarks/contact_crossover.py)."""
+    header = (ROOT / "solver" / "body" / "stepper.hpp").read_text()
+    kappa = float(re.search(r"sparse_contact_kappa = ([0-9.]+);", header).group(1))
+    measured = json.loads((ROOT / "benchmarks" / "results" / "contact_crossover.json").read_text())
+    assert measured["condensed_wins_up_to"] < kappa < measured["sparse_wins_from"]
+    for row in measured["rows"]:  # the model picks the faster solve on every measured body
+        sparse = row["ratio"] > kappa
+        assert (row["sparse_seconds"] < row["condensed_seconds"]) == sparse, row["body"]

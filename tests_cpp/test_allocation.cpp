@@ -52,19 +52,25 @@ long expect_no_allocation(Simulation& sim, const StepInputs& in) {
     return contact_solves;
 }
 
-class NoAllocation : public ::testing::TestWithParam<std::tuple<int, double, bool>> {};
+class NoAllocation : public ::testing::TestWithParam<std::tuple<int, double, bool>> {
+protected:
+    // The parameters' scene: variant, F, and whether damped.
+    SceneParameters scene() const {
+        SceneParameters p;
+        p.nx = p.ny = 8;
+        p.internal_step = 1e-5;
+        p.mass_matrix = static_cast<MassVariant>(std::get<0>(GetParam()));
+        p.friction_coefficient = std::get<1>(GetParam());
+        if (std::get<2>(GetParam())) {  // Rayleigh damping adds two sparse products, no storage
+            p.damping_mass = 50;
+            p.damping_stiffness = 4e-6;
+        }
+        return p;
+    }
+};
 
 TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
-    SceneParameters p;
-    p.nx = p.ny = 8;
-    p.internal_step = 1e-5;
-    p.mass_matrix = static_cast<MassVariant>(std::get<0>(GetParam()));
-    p.friction_coefficient = std::get<1>(GetParam());
-    if (std::get<2>(GetParam())) {  // Rayleigh damping adds two sparse products, no storage
-        p.damping_mass = 50;
-        p.damping_stiffness = 4e-6;
-    }
-    Simulation sim(p, -2.5e-5);
+    Simulation sim(scene(), -2.5e-5);
     StepInputs in;
     in.foundation_velocity = 20;
     in.top_displacement = -2.5e-5;
@@ -84,16 +90,7 @@ INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
 // The same on the sparse contact solve (sparse_contact.hpp): its held factor's
 // refactorizations, its coupled system and its kept directions reuse their storage.
 TEST_P(NoAllocation, OnTheSparseContactSolveOnceWarm) {
-    SceneParameters p;
-    p.nx = p.ny = 8;
-    p.internal_step = 1e-5;
-    p.mass_matrix = static_cast<MassVariant>(std::get<0>(GetParam()));
-    p.friction_coefficient = std::get<1>(GetParam());
-    if (std::get<2>(GetParam())) {
-        p.damping_mass = 50;
-        p.damping_stiffness = 4e-6;
-    }
-    auto stepper = std::make_unique<Stepper>(p);
+    auto stepper = std::make_unique<Stepper>(scene());
     stepper->set_contact_path(Stepper::ContactPath::sparse);
     const Stepper& body = *stepper;
     Simulation sim(std::move(stepper), -2.5e-5);

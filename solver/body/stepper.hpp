@@ -232,7 +232,7 @@ public:
     // them), kappa measured by benchmarks/contact_crossover.py. A slip-rate law keeps the
     // condensed solve (its full Jacobian and exact node solves need W).
     static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns);
-    static constexpr double sparse_contact_kappa = 8;
+    static constexpr double sparse_contact_kappa = 73;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     long sparse_refactorizations() const;  // of the cached factors' held operators
     // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held) of the

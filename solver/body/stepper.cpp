@@ -1,5 +1,6 @@
 #include "stepper.hpp"
 
+#include "text.hpp"
 #include "trailing_cholesky.hpp"
 
 #include <algorithm>
@@ -221,6 +222,20 @@ void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
 bool Stepper::sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns) {
     const double m = 2.0 * static_cast<double>(contact_nodes);
     return m * m > sparse_contact_kappa * static_cast<double>(unknowns);
+}
+
+std::string Stepper::summary() const {
+    const double m = 2.0 * num_contact_nodes(), ratio = m * m / static_cast<double>(disc_.expand.cols());
+    Text msg;
+    msg << "contact solve: " << (wants_sparse() ? "sparse, on the body's system" : "condensed, a dense W")
+        << " of the " << num_contact_nodes() << " contact nodes ((2 n_c)^2 / unknowns = " << ratio
+        << (contact_path_ != ContactPath::automatic ? ", chosen by the caller"
+            : rate_law(params_).active() ? ", a slip-rate law: condensed"
+            : ratio > sparse_contact_kappa ? " > " : " <= ")
+        << (contact_path_ == ContactPath::automatic && !rate_law(params_).active()
+                ? std::to_string(static_cast<int>(sparse_contact_kappa)) : std::string())
+        << ")";
+    return msg.str();
 }
 
 bool Stepper::sparse_contact() const { return cache_[0] && cache_[0]->held; }

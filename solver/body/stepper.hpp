@@ -234,6 +234,8 @@ public:
     static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns);
     static constexpr double sparse_contact_kappa = 73;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
+    // Which contact solve the body takes, and why (the log's).
+    std::string summary() const override;
     long sparse_refactorizations() const;  // of the cached factors' held operators
     // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held) of the
     // current factor: a saved state keeps it, so that a restored one solves on the same.

@@ -3,7 +3,7 @@
 // substep's wall time (the mean over SUBSTEPS after the first step), one sparse solve of the
 // same body (K in its fill-reducing order, the floor of a substep), the solve's counts and the
 // peak memory.
-//   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse) [SUBSTEPS]
+//   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse) [SUBSTEPS] [F]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     p.static_initial_state = true;
     const double top = -5e-6, velocity = 20, step = 1e-5;
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
+    if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
     const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0 ? Stepper::ContactPath::sparse
                                       : std::strcmp(argv[3], "condensed") == 0 ? Stepper::ContactPath::condensed
                                                                                : Stepper::ContactPath::automatic;

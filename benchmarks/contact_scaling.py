@@ -33,10 +33,11 @@ def pad_mesh(folder, n):
                       contact_size=CONTACT_LENGTH / (n - 2))
 
 
-def measure(build, mesh, modes, path, substeps=SUBSTEPS):
+def measure(build, mesh, modes, path, substeps=SUBSTEPS, friction=SCENE["friction_coefficient"]):
     """One case in a process of its own: bench_contact_scaling's JSON."""
     out = subprocess.run([str(build / "bench_contact_scaling"), str(mesh), str(modes), path,
-                          str(substeps)], capture_output=True, text=True, check=True)
+                          str(substeps), repr(friction)], capture_output=True, text=True,
+                         check=True)
     return json.loads(out.stdout)
 
 

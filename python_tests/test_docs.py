@@ -121,13 +121,15 @@ def test_generated_table_ratio_and_text_lines_are_checked(tmp_path, monkeypatch)
 
 
 def test_the_contact_solve_cost_model_is_the_measured_crossover():
-    """Stepper::sparse_contact_kappa lies between the largest (2 n_c)^2 / n_f where the
-    condensed solve was measured faster and the smallest where the sparse one was
-    (benchmarks/contact_crossover.py)."""
+    """Stepper's kappa(F) = kappa_0 + kappa_F F lies, at every friction coefficient measured,
+    above every (2 n_c)^2 / n_f where the condensed solve was clearly faster and below every
+    one where the sparse solve was (benchmarks/contact_crossover.py)."""
     header = (ROOT / "solver" / "body" / "stepper.hpp").read_text()
-    kappa = float(re.search(r"sparse_contact_kappa = ([0-9.]+);", header).group(1))
+    k0, kf = map(float, re.search(r"sparse_contact_kappa_0 = ([0-9.]+), sparse_contact_kappa_F = "
+                                  r"([0-9.]+);", header).groups())
     measured = json.loads((ROOT / "benchmarks" / "results" / "contact_crossover.json").read_text())
-    assert measured["condensed_wins_up_to"] < kappa < measured["sparse_wins_from"]
-    for row in measured["rows"]:  # the model picks the faster solve on every measured body
-        sparse = row["ratio"] > kappa
-        assert (row["sparse_seconds"] < row["condensed_seconds"]) == sparse, row["body"]
+    assert len(measured["kappa_bounds"]) >= 3
+    for friction, b in measured["kappa_bounds"].items():
+        kappa = k0 + kf * float(friction)
+        assert b["above"] < kappa, friction
+        assert b["below"] is None or kappa < b["below"], friction

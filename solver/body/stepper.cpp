@@ -219,9 +219,9 @@ void Stepper::set_cached_substeps(const std::vector<double>& sizes) {
     problem_factor_ = 0;
 }
 
-bool Stepper::sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns) {
+bool Stepper::sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns, double friction) {
     const double m = 2.0 * static_cast<double>(contact_nodes);
-    return m * m > sparse_contact_kappa * static_cast<double>(unknowns);
+    return m * m > sparse_contact_kappa(friction) * static_cast<double>(unknowns);
 }
 
 std::string Stepper::summary() const {
@@ -231,10 +231,11 @@ std::string Stepper::summary() const {
         << " of the " << num_contact_nodes() << " contact nodes ((2 n_c)^2 / unknowns = " << ratio
         << (contact_path_ != ContactPath::automatic ? ", chosen by the caller"
             : rate_law(params_).active() ? ", a slip-rate law: condensed"
-            : ratio > sparse_contact_kappa ? " > " : " <= ")
-        << (contact_path_ == ContactPath::automatic && !rate_law(params_).active()
-                ? std::to_string(static_cast<int>(sparse_contact_kappa)) : std::string())
-        << ")";
+            : ratio > sparse_contact_kappa(params_.friction_coefficient) ? " > " : " <= ");
+    if (contact_path_ == ContactPath::automatic && !rate_law(params_).active())
+        msg << sparse_contact_kappa_0 << " + " << sparse_contact_kappa_F << " F = "
+            << sparse_contact_kappa(params_.friction_coefficient);
+    msg << ")";
     return msg.str();
 }
 
@@ -281,7 +282,7 @@ long Stepper::sparse_refactorizations() const {
 bool Stepper::wants_sparse() const {
     if (contact_path_ != ContactPath::automatic) return contact_path_ == ContactPath::sparse;
     return !rate_law(params_).active() &&
-           sparse_contact_pays(num_contact_nodes(), disc_.expand.cols());
+           sparse_contact_pays(num_contact_nodes(), disc_.expand.cols(), params_.friction_coefficient);
 }
 
 void Stepper::set_contact_path(ContactPath path) {

@@ -228,11 +228,16 @@ public:
     // Whether the last substep's factor solves the contact on the sparse system.
     bool sparse_contact() const;
     // The cost model: the sparse solve where the condensed one's dense work per substep,
-    // about (2 n_c)^2, exceeds kappa times the unknowns n_f (a sparse solve's work grows with
-    // them), kappa measured by benchmarks/contact_crossover.py. A slip-rate law keeps the
-    // condensed solve (its full Jacobian and exact node solves need W).
-    static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns);
-    static constexpr double sparse_contact_kappa = 73;
+    // about (2 n_c)^2, exceeds kappa(F) = kappa_0 + kappa_F F times the unknowns n_f (a sparse
+    // solve's work grows with them, and its slipping nodes' friction costs held solves in
+    // proportion to F), the constants fitted to benchmarks/contact_crossover.py's bounds. The
+    // choice is made when a factor is made. A slip-rate law keeps the condensed solve (its full
+    // Jacobian and exact node solves need W).
+    static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns, double friction);
+    static double sparse_contact_kappa(double friction) {
+        return sparse_contact_kappa_0 + sparse_contact_kappa_F * friction;
+    }
+    static constexpr double sparse_contact_kappa_0 = 36, sparse_contact_kappa_F = 120;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     // Which contact solve the body takes, and why (the log's).
     std::string summary() const override;

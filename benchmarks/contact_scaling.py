@@ -72,7 +72,7 @@ def main():
              "`.venv/bin/python benchmarks/contact_scaling.py`: the pad, damped sliding at 20 m/s "
              "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
-             "FMU takes it (the sparse contact solve from about 300 contact nodes on), *condensed* "
+             "FMU takes it (the sparse contact solve from about 250 contact nodes on), *condensed* "
              "the solve it had before, *reduced* the reduced body (40 modes). The static start's load "
              "paths take the cost model's solve in every row.", "",
              "| contact nodes | unknowns | body | contact solve | static start [s] | one substep [ms] "

@@ -237,7 +237,7 @@ public:
     static double sparse_contact_kappa(double friction) {
         return sparse_contact_kappa_0 + sparse_contact_kappa_F * friction;
     }
-    static constexpr double sparse_contact_kappa_0 = 36, sparse_contact_kappa_F = 120;
+    static constexpr double sparse_contact_kappa_0 = 20, sparse_contact_kappa_F = 150;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     // Which contact solve the body takes, and why (the log's).
     std::string summary() const override;

@@ -120,6 +120,14 @@ void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem&
     }
 }
 
+void SparseContactSolver::held_set(bool friction) {
+    const Eigen::Index n = pattern_.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        held_[static_cast<size_t>(i)] = pattern_[i] != 0;
+        held_[static_cast<size_t>(n + i)] = friction && pattern_[i] == 1;
+    }
+}
+
 void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
                                      const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x) {
     const Eigen::Index m = K.unknowns();
@@ -160,9 +168,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     int differing = 0;
+    held_set(friction);
     for (Eigen::Index i = 0; i < n; ++i) {
-        held_[static_cast<size_t>(i)] = pattern_[i] != 0;
-        held_[static_cast<size_t>(n + i)] = friction && pattern_[i] == 1;
         targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
         targets_[n + i] = friction ? p.slip_origin[i] : 0.0;
     }
@@ -295,7 +302,6 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     values_.resize(m2);
     targets_.resize(m2);
     xi_.resize(m2);
-    direction_.resize(m2);
     krylov_residual_.resize(m2);
     for (Eigen::VectorXd* v : {&w, &w_new_, &w_trial_, &b_, &z_}) v->resize(nf);
     for (Eigen::VectorXd* v : {&lambda_new_, &lambda_trial_}) v->resize(m);
@@ -313,10 +319,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
     }
     if (fresh_factor) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-            held_[static_cast<size_t>(i)] = pattern_[i] != 0;
-            held_[static_cast<size_t>(n + i)] = pattern_[i] == 1 && friction;
-        }
+        held_set(friction);
         K.hold(held_);
         forget();
     }

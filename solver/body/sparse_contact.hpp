@@ -102,6 +102,8 @@ public:
     static constexpr int max_detour = 16;
 
 private:
+    // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction.
+    void held_set(bool friction);
     void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
                        double scale, double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took
@@ -135,7 +137,7 @@ private:
     Eigen::VectorXd w_new_, lambda_new_, w_trial_, lambda_trial_, phi_, phi_new_;
     Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values
     std::vector<Coupling> coupling_;
-    Eigen::VectorXd xi_, krylov_residual_, direction_;
+    Eigen::VectorXd xi_, krylov_residual_;
     // GCR's kept directions (loads and values) and their images (orthonormal), a ring of
     // kept_ from first_, valid for the pattern, factor and coefficients they were made with.
     Eigen::MatrixXd directions_, images_;

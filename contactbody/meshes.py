@@ -123,6 +123,54 @@ def half_disk(path, radius=0.05, contact_size=5e-4, far_size=5e-3, refine_distan
         return write(gmsh, path, version)
 
 
+def hemisphere(path, radius=0.05, contact_size=1e-3, far_size=1e-2, refine_distance=None,
+               fine_distance=None, contact_angle=60.0, version="4.1"):
+    """A 3D body of tetrahedra: the lower half of a ball of `radius` centred at (0, radius, 0),
+    its flat face on top (y = radius, "clamp"), its curved face touching y = 0 at the origin.
+    The cap of the curved face within `contact_angle` degrees around the bottom is "contact"
+    (surface triangles). Elements of `contact_size` within `fine_distance` of the bottom point
+    (by default a tenth of `refine_distance`), `far_size` beyond `refine_distance` (by
+    default radius / 2)."""
+    r = radius
+    with session("hemisphere") as gmsh:
+        occ = gmsh.model.occ
+        ball = occ.addSphere(0, r, 0, r)
+        upper = occ.addBox(-2 * r, r, -2 * r, 4 * r, 2 * r, 4 * r)
+        half, _ = occ.cut([(3, ball)], [(3, upper)])
+        # The cap: a ball's surface below the height where the contact angle ends.
+        cap_height = r - r * math.cos(math.radians(contact_angle) / 2)
+        below = occ.addBox(-2 * r, -r, -2 * r, 4 * r, r + cap_height, 4 * r)
+        pieces, _ = occ.fragment(half, [(3, below)])
+        occ.synchronize()
+        # Keep the body's pieces; drop what lies outside the half ball (the rest of the box).
+        body = []
+        for dim, tag in gmsh.model.getEntities(3):
+            x, y, z = occ.getCenterOfMass(dim, tag)
+            if x * x + (y - r) ** 2 + z * z < r * r:
+                body.append(tag)
+            else:
+                occ.remove([(dim, tag)], recursive=True)
+        occ.synchronize()
+        body = [tag for _, tag in gmsh.model.getEntities(3)]
+        contact, clamp = [], []
+        for _, tag in gmsh.model.getBoundary([(3, t) for t in body], oriented=False):
+            x, y, z = occ.getCenterOfMass(2, tag)
+            if abs(y - r) < 1e-9 * r:
+                clamp.append(tag)
+            elif y < cap_height:
+                contact.append(tag)
+        gmsh.model.addPhysicalGroup(3, body, name="body")
+        gmsh.model.addPhysicalGroup(2, contact, name="contact")
+        gmsh.model.addPhysicalGroup(2, clamp, name="clamp")
+        # The bottom point, embedded in the cap, is where the elements are finest.
+        bottom = occ.addPoint(0, 0, 0)
+        occ.synchronize()
+        gmsh.model.mesh.embed(0, [bottom], 2, contact[0])
+        _refine_near(gmsh, bottom, contact_size, far_size, refine_distance or r / 2, fine_distance)
+        gmsh.model.mesh.generate(3)
+        return write(gmsh, path, version)
+
+
 def plate_with_hole(path, width=0.1, height=0.06, hole=(0.05, 0.03, 0.015), size=0.005, version="4.1"):
     """A rectangle (bottom "contact", top "clamp") with a circular hole (x, y, radius)."""
     with session("plate_with_hole") as gmsh:

@@ -30,8 +30,8 @@ TEST(Stiffness, SymmetricWithRigidMotionsAsKernel) {
     Eigen::MatrixXd rigid(mesh.num_dofs(), 3);
     for (int n = 0; n < mesh.num_nodes(); ++n) {
         const Point p = mesh.point(n);
-        rigid.row(dof_x(n)) << 1, 0, -p.y;
-        rigid.row(dof_y(n)) << 0, 1, p.x;
+        rigid.row(mesh.dof(n, 0)) << 1, 0, -p.y;
+        rigid.row(mesh.dof(n, 1)) << 0, 1, p.x;
     }
     EXPECT_LE((A * rigid).cwiseAbs().maxCoeff(), 1e-12 * scale);
 
@@ -107,8 +107,8 @@ TEST(RedistributedMass, RejectsAnIndefiniteCorrection) {
 TEST(Mesh, DiagonalsAlternateAsGetFEMRegularSimplices) {
     const Mesh mesh = make_structured_mesh(1, 1, 2, 2);
     // Cell (0,0): diagonal (0,0)-(1,1); cell (1,0): diagonal (2,0)-(1,1).
-    EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{0, 1, 4}));
-    EXPECT_EQ(mesh.triangles[2], (std::array<int, 3>{1, 2, 4}));
+    EXPECT_EQ(std::vector<int>(mesh.cell(0), mesh.cell(0) + 3), (std::vector<int>{0, 1, 4}));
+    EXPECT_EQ(std::vector<int>(mesh.cell(2), mesh.cell(2) + 3), (std::vector<int>{1, 2, 4}));
     EXPECT_EQ(mesh.contact_nodes.size(), 3u);
     EXPECT_EQ(mesh.top_nodes.front(), 6);
 }

@@ -122,9 +122,9 @@ TEST(Mesh, GmshFilesOfBothVersionsGiveTheSameMesh) {
         EXPECT_EQ(m->contact_heights[0], 0.0);
         EXPECT_EQ(m->contact_y, 0.0);
         EXPECT_EQ(m->clamp_y, 0.1);
-        EXPECT_EQ(m->triangles.size(), 3u);
+        EXPECT_EQ(m->num_cells(), 3u);
     }
-    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.cells, b.cells);
     EXPECT_TRUE(notes41.empty());
 }
 
@@ -165,7 +165,7 @@ TEST(Mesh, AMeshFileIsAssembledAsTheRectangleIs) {
     const Mesh m = read_gmsh_mesh(write_file("assembled.msh", msh41), max_nodes, notes);
     const SparseMatrix A = stiffness_matrix(m, 3e8, 1.5e8);
     Eigen::VectorXd t = Eigen::VectorXd::Zero(m.num_dofs());
-    for (int n = 0; n < m.num_nodes(); ++n) t[dof_x(n)] = 1;
+    for (int n = 0; n < m.num_nodes(); ++n) t[m.dof(n, 0)] = 1;
     EXPECT_LT((A * t).norm(), 1e-6);
     const SparseMatrix M = scalar_mass_matrix(m, 1000);
     const double area = 0.2 * 0.1 - 0.5 * 0.2 * 0.01;

@@ -17,8 +17,93 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 
 namespace {
 
-double signed_area(const Point& a, const Point& b, const Point& c) {
-    return 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+// A P1 simplex's shape function gradients (grad[a] of node a's) and its measure (area or
+// volume), from its positively oriented nodes. The triangle's are formed as they always were
+// (the 2D body's bits); the tetrahedron's from the cofactors of its edge matrix.
+template <int D>
+struct Simplex {
+    std::array<Eigen::Matrix<double, D, 1>, D + 1> grad;
+    double measure;
+};
+
+template <int D>
+Simplex<D> simplex(const Mesh& mesh, const int* cell) {
+    Simplex<D> s;
+    if constexpr (D == 2) {
+        const Point p[3] = {mesh.point(cell[0]), mesh.point(cell[1]), mesh.point(cell[2])};
+        const double area = 0.5 * ((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+        for (int a = 0; a < 3; ++a) {
+            const Point& q1 = p[(a + 1) % 3];
+            const Point& q2 = p[(a + 2) % 3];
+            s.grad[a] << (q1.y - q2.y) / (2 * area), (q2.x - q1.x) / (2 * area);
+        }
+        s.measure = area;
+    } else {
+        Eigen::Matrix3d J;  // columns: the edges from node 0
+        const Point& o = mesh.point(cell[0]);
+        for (int a = 1; a <= 3; ++a) {
+            const Point& q = mesh.point(cell[a]);
+            J.col(a - 1) << q.x - o.x, q.y - o.y, q.z - o.z;
+        }
+        const double det = J.determinant();
+        // grad N_a (a = 1..3) are the rows of J^-1: cofactors over the determinant.
+        const Eigen::Matrix3d inverse = J.inverse();
+        s.grad[0].setZero();
+        for (int a = 1; a <= 3; ++a) {
+            s.grad[a] = inverse.row(a - 1).transpose();
+            s.grad[0] -= s.grad[a];
+        }
+        s.measure = det / 6;
+    }
+    return s;
+}
+
+// Strain components in Voigt order: xx, yy, (zz,) then the engineering shears xy (, yz, zx).
+template <int D>
+constexpr int voigt_size = D * (D + 1) / 2;
+
+template <int D>
+Eigen::Matrix<double, voigt_size<D>, voigt_size<D>> elasticity(double lambda, double mu) {
+    Eigen::Matrix<double, voigt_size<D>, voigt_size<D>> E;
+    E.setZero();
+    for (int i = 0; i < D; ++i) {
+        for (int j = 0; j < D; ++j) E(i, j) = lambda;
+        E(i, i) = lambda + 2 * mu;
+    }
+    for (int i = D; i < voigt_size<D>; ++i) E(i, i) = mu;
+    return E;
+}
+
+// Shear k (0: xy, 1: yz, 2: zx) couples components shear_pair[k].
+constexpr int shear_pair[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+
+template <int D>
+SparseMatrix stiffness(const Mesh& mesh, double lambda, double mu) {
+    constexpr int S = voigt_size<D>, N = D * (D + 1);
+    const auto E = elasticity<D>(lambda, mu);
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(mesh.num_cells() * N * N);
+    for (size_t e = 0; e < mesh.num_cells(); ++e) {
+        const int* cell = mesh.cell(e);
+        const Simplex<D> s = simplex<D>(mesh, cell);
+        Eigen::Matrix<double, S, N> B = Eigen::Matrix<double, S, N>::Zero();
+        for (int a = 0; a <= D; ++a) {
+            for (int i = 0; i < D; ++i) B(i, D * a + i) = s.grad[a][i];
+            for (int k = 0; k + D < S; ++k) {
+                const int i = shear_pair[k][0], j = shear_pair[k][1];
+                B(D + k, D * a + i) = s.grad[a][j];
+                B(D + k, D * a + j) = s.grad[a][i];
+            }
+        }
+        const Eigen::Matrix<double, N, N> Ke = s.measure * B.transpose() * E * B;
+        for (int a = 0; a < N; ++a)
+            for (int b = 0; b < N; ++b)
+                t.emplace_back(D * cell[a / D] + a % D, D * cell[b / D] + b % D, Ke(a, b));
+    }
+    SparseMatrix m(mesh.num_dofs(), mesh.num_dofs());
+    m.setFromTriplets(t.begin(), t.end());
+    m.makeCompressed();
+    return m;
 }
 
 SparseMatrix from_triplets(int n, const Triplets& t) {
@@ -28,13 +113,14 @@ SparseMatrix from_triplets(int n, const Triplets& t) {
     return m;
 }
 
-// Coordinates centred and scaled to O(1): the six moment constraints span the same space
-// under any affine change of coordinates, and C C^T is far better conditioned this way.
+// Coordinates centred and scaled to O(1): the moment constraints span the same space under
+// any affine change of coordinates, and C C^T is far better conditioned this way.
 std::vector<Point> normalized_points(const Mesh& mesh) {
     std::vector<Point> p(mesh.num_nodes());
     for (int n = 0; n < mesh.num_nodes(); ++n) {
         const Point q = mesh.point(n);
         p[n] = {2 * (q.x - mesh.x_min) / mesh.width() - 1, 2 * (q.y - mesh.y_min) / mesh.height() - 1};
+        if (mesh.dim == 3) p[n].z = 2 * (q.z - mesh.z_min) / (mesh.z_max - mesh.z_min) - 1;
     }
     return p;
 }
@@ -43,88 +129,130 @@ std::string mesh_name(const Mesh& mesh) {
     return mesh.is_rectangle() ? "the rectangle" : "the mesh " + mesh.source;
 }
 
-// Row of the symmetric-form constraint matrix for entry (i, j).
-Eigen::Matrix<double, 6, 1> moment_row(const Point& pi, const Point& pj) {
-    Eigen::Matrix<double, 6, 1> c;
-    c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), pi.x * pj.x,
-        0.5 * (pi.x * pj.y + pj.x * pi.y), pi.y * pj.y;
+// The moments M_r keeps: the total mass, the D first and the D(D+1)/2 second ones.
+template <int D>
+constexpr int moment_count = 1 + D + D * (D + 1) / 2;
+template <int D>
+using Moments = Eigen::Matrix<double, moment_count<D>, 1>;
+template <int D>
+constexpr const char* moment_words = D == 2 ? "six" : "ten";
+
+// Row of the symmetric-form constraint matrix for entry (i, j): 1, the mean of each
+// coordinate, then the symmetrized products x_a x_b (a <= b).
+template <int D>
+Moments<D> moment_row(const Point& pi, const Point& pj) {
+    Moments<D> c;
+    if constexpr (D == 2) {
+        c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), pi.x * pj.x,
+            0.5 * (pi.x * pj.y + pj.x * pi.y), pi.y * pj.y;
+    } else {
+        c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), 0.5 * (pi.z + pj.z), pi.x * pj.x,
+            0.5 * (pi.x * pj.y + pj.x * pi.y), 0.5 * (pi.x * pj.z + pj.x * pi.z), pi.y * pj.y,
+            0.5 * (pi.y * pj.z + pj.y * pi.z), pi.z * pj.z;
+    }
     return c;
 }
 
 }  // namespace
 
 SparseMatrix stiffness_matrix(const Mesh& mesh, double lambda, double mu) {
-    Eigen::Matrix3d D;
-    D << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
-    Triplets t;
-    t.reserve(mesh.triangles.size() * 36);
-    for (const auto& tri : mesh.triangles) {
-        const Point p[3] = {mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2])};
-        const double area = signed_area(p[0], p[1], p[2]);
-        Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
-        for (int a = 0; a < 3; ++a) {
-            const Point& q1 = p[(a + 1) % 3];
-            const Point& q2 = p[(a + 2) % 3];
-            const double dNdx = (q1.y - q2.y) / (2 * area);
-            const double dNdy = (q2.x - q1.x) / (2 * area);
-            B(0, 2 * a) = dNdx;
-            B(1, 2 * a + 1) = dNdy;
-            B(2, 2 * a) = dNdy;
-            B(2, 2 * a + 1) = dNdx;
-        }
-        const Eigen::Matrix<double, 6, 6> Ke = area * B.transpose() * D * B;
-        for (int a = 0; a < 6; ++a)
-            for (int b = 0; b < 6; ++b)
-                t.emplace_back(2 * tri[a / 2] + a % 2, 2 * tri[b / 2] + b % 2, Ke(a, b));
-    }
-    return from_triplets(mesh.num_dofs(), t);
+    return mesh.dim == 2 ? stiffness<2>(mesh, lambda, mu) : stiffness<3>(mesh, lambda, mu);
 }
 
-StrainEnergy::StrainEnergy(const Mesh& mesh, double lambda, double mu) : lambda_(lambda), mu_(mu) {
-    elements_.reserve(mesh.triangles.size());
-    for (const auto& tri : mesh.triangles) {
-        const Point p[3] = {mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2])};
-        const double area = signed_area(p[0], p[1], p[2]);
-        // dN_a/dx = (y_{a+1} - y_{a+2}) / 2 area, dN_a/dy = (x_{a+2} - x_{a+1}) / 2 area
-        elements_.push_back({tri, (p[2].y - p[0].y) / (2 * area), (p[0].x - p[2].x) / (2 * area),
-                             (p[0].y - p[1].y) / (2 * area), (p[1].x - p[0].x) / (2 * area), area});
+StrainEnergy::StrainEnergy(const Mesh& mesh, double lambda, double mu)
+    : dim_(mesh.dim), lambda_(lambda), mu_(mu) {
+    elements_.reserve(mesh.num_cells());
+    for (size_t e = 0; e < mesh.num_cells(); ++e) {
+        const int* cell = mesh.cell(e);
+        Element element{};
+        std::copy(cell, cell + mesh.nodes_per_cell(), element.nodes.begin());
+        if (mesh.dim == 2) {
+            // dN_a/dx = (y_{a+1} - y_{a+2}) / 2 area, dN_a/dy = (x_{a+2} - x_{a+1}) / 2 area
+            const Simplex<2> s = simplex<2>(mesh, cell);
+            const Point p[3] = {mesh.point(cell[0]), mesh.point(cell[1]), mesh.point(cell[2])};
+            const double area = s.measure;
+            element.grad[0] = {(p[2].y - p[0].y) / (2 * area), (p[0].x - p[2].x) / (2 * area), 0};
+            element.grad[1] = {(p[0].y - p[1].y) / (2 * area), (p[1].x - p[0].x) / (2 * area), 0};
+            element.measure = area;
+        } else {
+            const Simplex<3> s = simplex<3>(mesh, cell);
+            for (int a = 0; a < 3; ++a) element.grad[a] = {s.grad[a + 1][0], s.grad[a + 1][1], s.grad[a + 1][2]};
+            element.measure = s.measure;
+        }
+        elements_.push_back(element);
     }
 }
 
 double StrainEnergy::operator()(const Eigen::VectorXd& u) const {
     double energy = 0;
+    const int D = dim_;
     for (const Element& e : elements_) {
-        const int n0 = e.nodes[0], n1 = e.nodes[1], n2 = e.nodes[2];
-        const double ux1 = u[dof_x(n1)] - u[dof_x(n0)], uy1 = u[dof_y(n1)] - u[dof_y(n0)];
-        const double ux2 = u[dof_x(n2)] - u[dof_x(n0)], uy2 = u[dof_y(n2)] - u[dof_y(n0)];
-        const double exx = e.dx1 * ux1 + e.dx2 * ux2, eyy = e.dy1 * uy1 + e.dy2 * uy2;
-        const double gamma = e.dy1 * ux1 + e.dy2 * ux2 + e.dx1 * uy1 + e.dx2 * uy2;
-        const double trace = exx + eyy, shear = exx - eyy;
-        energy += e.area * (0.5 * (lambda_ + mu_) * trace * trace +
-                            0.5 * mu_ * (shear * shear + gamma * gamma));
+        // The strain from the displacements of nodes 1..D relative to node 0: exact zero for a
+        // translation of any size.
+        double grad_u[3][3] = {};  // du_i/dx_j
+        const int n0 = e.nodes[0];
+        for (int a = 0; a < D; ++a) {
+            const int n = e.nodes[static_cast<size_t>(a + 1)];
+            for (int i = 0; i < D; ++i) {
+                const double du = u[D * n + i] - u[D * n0 + i];
+                for (int j = 0; j < D; ++j) grad_u[i][j] += e.grad[a][j] * du;
+            }
+        }
+        if (D == 2) {
+            // (lambda + mu)/2 (tr e)^2 + mu/2 (e_xx - e_yy)^2 + mu/2 gamma_xy^2
+            const double exx = grad_u[0][0], eyy = grad_u[1][1];
+            // summed in the order the 2D body's bits were made in
+            const int n1 = e.nodes[1], n2 = e.nodes[2];
+            const double gamma = e.grad[0][1] * (u[2 * n1] - u[2 * n0]) + e.grad[1][1] * (u[2 * n2] - u[2 * n0]) +
+                                 e.grad[0][0] * (u[2 * n1 + 1] - u[2 * n0 + 1]) +
+                                 e.grad[1][0] * (u[2 * n2 + 1] - u[2 * n0 + 1]);
+            const double trace = exx + eyy, shear = exx - eyy;
+            energy += e.measure * (0.5 * (lambda_ + mu_) * trace * trace +
+                                   0.5 * mu_ * (shear * shear + gamma * gamma));
+        } else {
+            // (lambda + 2 mu/3)/2 (tr e)^2 + mu/3 sum (e_ii - e_jj)^2 + mu/2 sum gamma_ij^2
+            const double exx = grad_u[0][0], eyy = grad_u[1][1], ezz = grad_u[2][2];
+            const double trace = exx + eyy + ezz;
+            const double normal = (exx - eyy) * (exx - eyy) + (eyy - ezz) * (eyy - ezz) + (ezz - exx) * (ezz - exx);
+            double shear = 0;
+            for (const auto& pair : shear_pair) {
+                const double gamma = grad_u[pair[0]][pair[1]] + grad_u[pair[1]][pair[0]];
+                shear += gamma * gamma;
+            }
+            energy += e.measure * (0.5 * (lambda_ + 2 * mu_ / 3) * trace * trace + mu_ / 3 * normal +
+                                   0.5 * mu_ * shear);
+        }
     }
     return energy;
 }
 
 SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho) {
+    // A P1 simplex's consistent mass: measure / ((D+1)(D+2)) (1 + delta_ab).
+    const int per = mesh.nodes_per_cell();
+    const double denominator = static_cast<double>(per * (per + 1));
     Triplets t;
-    t.reserve(mesh.triangles.size() * 9);
-    for (const auto& tri : mesh.triangles) {
-        const double area =
-            signed_area(mesh.point(tri[0]), mesh.point(tri[1]), mesh.point(tri[2]));
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                t.emplace_back(tri[a], tri[b], rho * area / 12.0 * (a == b ? 2.0 : 1.0));
+    t.reserve(mesh.num_cells() * static_cast<size_t>(per * per));
+    for (size_t e = 0; e < mesh.num_cells(); ++e) {
+        const int* cell = mesh.cell(e);
+        const double measure = mesh.dim == 2 ? simplex<2>(mesh, cell).measure : simplex<3>(mesh, cell).measure;
+        for (int a = 0; a < per; ++a)
+            for (int b = 0; b < per; ++b)
+                t.emplace_back(cell[a], cell[b], rho * measure / denominator * (a == b ? 2.0 : 1.0));
     }
     return from_triplets(mesh.num_nodes(), t);
 }
 
-std::array<double, 6> mass_moments(const Mesh& mesh, const SparseMatrix& m) {
-    Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero();
+template <int D>
+std::vector<double> moments_of(const Mesh& mesh, const SparseMatrix& m) {
+    Moments<D> s = Moments<D>::Zero();
     for (int j = 0; j < m.outerSize(); ++j)
         for (SparseMatrix::InnerIterator it(m, j); it; ++it)
-            s += it.value() * moment_row(mesh.point(it.row()), mesh.point(it.col()));
-    return {s[0], s[1], s[2], s[3], s[4], s[5]};
+            s += it.value() * moment_row<D>(mesh.point(it.row()), mesh.point(it.col()));
+    return std::vector<double>(s.data(), s.data() + s.size());
+}
+
+std::vector<double> mass_moments(const Mesh& mesh, const SparseMatrix& m) {
+    return mesh.dim == 2 ? moments_of<2>(mesh, m) : moments_of<3>(mesh, m);
 }
 
 namespace {
@@ -133,22 +261,23 @@ namespace {
 // the least change in sum (change_e^2 / w_e). w_e = 1 is the least change in the Frobenius
 // norm (KLR's); w_e = m_e the least change relative to each entry, which changes entry e by
 // the fraction c_e . y of itself, whatever its size. `largest_fraction`: max |c_e . y|.
+template <int D>
 Triplets corrected_entries(const Triplets& kept, const std::vector<Point>& p,
-                           const Eigen::Matrix<double, 6, 1>& target, bool relative,
-                           double& largest_fraction) {
-    Eigen::Matrix<double, 6, 6> CWCt = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> Cm = Eigen::Matrix<double, 6, 1>::Zero();
+                           const Moments<D>& target, bool relative, double& largest_fraction) {
+    constexpr int K = moment_count<D>;
+    Eigen::Matrix<double, K, K> CWCt = Eigen::Matrix<double, K, K>::Zero();
+    Moments<D> Cm = Moments<D>::Zero();
     for (const auto& e : kept) {
-        const auto c = moment_row(p[e.row()], p[e.col()]);
+        const auto c = moment_row<D>(p[e.row()], p[e.col()]);
         CWCt += (relative ? e.value() : 1.0) * c * c.transpose();
         Cm += e.value() * c;
     }
-    const Eigen::Matrix<double, 6, 1> y = CWCt.ldlt().solve(Cm - target);
+    const Moments<D> y = CWCt.ldlt().solve(Cm - target);
     Triplets corrected;
     corrected.reserve(kept.size());
     largest_fraction = 0;
     for (const auto& e : kept) {
-        const double cy = moment_row(p[e.row()], p[e.col()]).dot(y);
+        const double cy = moment_row<D>(p[e.row()], p[e.col()]).dot(y);
         corrected.emplace_back(e.row(), e.col(), e.value() - (relative ? e.value() : 1.0) * cy);
         largest_fraction = std::max(largest_fraction, std::abs(relative ? cy : cy / e.value()));
     }
@@ -171,29 +300,34 @@ bool positive_definite_off_contact(const Triplets& entries, const std::vector<ch
 
 }  // namespace
 
-SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
-                                std::vector<std::string>& notes) {
+namespace {
+
+template <int D>
+SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
+                           std::vector<std::string>& notes) {
+    constexpr int K = moment_count<D>;
     const std::vector<Point> p = normalized_points(mesh);
     std::vector<char> is_contact(mesh.num_nodes(), 0);
     for (int n : mesh.contact_nodes) is_contact[n] = 1;
 
     // Target moments (of the consistent mass) and the kept entries.
-    Eigen::Matrix<double, 6, 1> target = Eigen::Matrix<double, 6, 1>::Zero();
+    Moments<D> target = Moments<D>::Zero();
     Triplets kept;
-    Eigen::Matrix<double, 6, 6> CCt = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, K, K> CCt = Eigen::Matrix<double, K, K>::Zero();
     for (int j = 0; j < scalar_mass.outerSize(); ++j)
         for (SparseMatrix::InnerIterator it(scalar_mass, j); it; ++it) {
-            const auto c = moment_row(p[it.row()], p[it.col()]);
+            const auto c = moment_row<D>(p[it.row()], p[it.col()]);
             target += it.value() * c;
             if (!is_contact[it.row()] && !is_contact[it.col()]) {
                 kept.emplace_back(it.row(), it.col(), it.value());
                 CCt += c * c.transpose();
             }
         }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(CCt);
-    if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(5))
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, K, K>> eig(CCt);
+    if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(K - 1))
         throw std::invalid_argument(
-            "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the six moments "
+            "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the " +
+            moment_words<D> + " moments "
             "without its contact nodes (the rectangle needs ny >= 2); use mass_matrix = 0 or 3");
 
     // The least change in the Frobenius norm, where it is positive definite (every rectangle
@@ -204,9 +338,9 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     // is area/12 [2 1 1; 1 2 1; 1 1 2], eigenvalues area/12 {4, 1, 1}), so changes of less than
     // a quarter of every entry keep it positive definite, whatever the grading.
     double fraction = 0;
-    Triplets corrected = corrected_entries(kept, p, target, false, fraction);
+    Triplets corrected = corrected_entries<D>(kept, p, target, false, fraction);
     if (!positive_definite_off_contact(corrected, is_contact)) {
-        corrected = corrected_entries(kept, p, target, true, fraction);
+        corrected = corrected_entries<D>(kept, p, target, true, fraction);
         if (!positive_definite_off_contact(corrected, is_contact) && mesh.is_rectangle())
             throw std::invalid_argument(
                 "mass redistribution: M_r is not positive definite on this mesh (nx = " +
@@ -218,7 +352,7 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
         if (!positive_definite_off_contact(corrected, is_contact)) {
             Text msg;
             msg << "mass redistribution: " << mesh_name(mesh) << " cannot carry M_r. Removing "
-                << "the contact nodes' normal mass and restoring the six moments changes the other "
+                << "the contact nodes' normal mass and restoring the " << moment_words<D> << " moments changes the other "
                 << "entries by up to " << format_number(fraction) << " of themselves here, and the "
                 << "result is not positive definite (changes below 1/4 of every entry would keep it "
                 << "so). Use a mesh with more cells between the contact group and the rest of the "
@@ -234,16 +368,24 @@ SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mas
     return from_triplets(mesh.num_nodes(), corrected);
 }
 
-SparseMatrix vector_mass_matrix(const SparseMatrix& mass_x, const SparseMatrix& mass_y) {
+}  // namespace
+
+SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
+                                std::vector<std::string>& notes) {
+    return mesh.dim == 2 ? redistributed<2>(mesh, scalar_mass, notes)
+                         : redistributed<3>(mesh, scalar_mass, notes);
+}
+
+SparseMatrix vector_mass_matrix(int dim, const SparseMatrix& tangential, const SparseMatrix& normal) {
     Triplets t;
-    t.reserve(mass_x.nonZeros() + mass_y.nonZeros());
-    for (int c = 0; c < 2; ++c) {
-        const SparseMatrix& m = c == 0 ? mass_x : mass_y;
+    t.reserve((dim - 1) * tangential.nonZeros() + normal.nonZeros());
+    for (int c = 0; c < dim; ++c) {
+        const SparseMatrix& m = c == Mesh::normal ? normal : tangential;
         for (int j = 0; j < m.outerSize(); ++j)
             for (SparseMatrix::InnerIterator it(m, j); it; ++it)
-                t.emplace_back(2 * it.row() + c, 2 * it.col() + c, it.value());
+                t.emplace_back(dim * it.row() + c, dim * it.col() + c, it.value());
     }
-    return from_triplets(2 * mass_x.rows(), t);
+    return from_triplets(dim * static_cast<int>(tangential.rows()), t);
 }
 
 }  // namespace contactbody

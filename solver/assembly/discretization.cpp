@@ -129,6 +129,28 @@ void check_parameters(const SceneParameters& p) {
     if (p.modes > 0) check_reduced_edge(p);  // (a full body does not use reduced_edge)
 }
 
+void check_dimension(const Mesh& mesh, const SceneParameters& p) {
+    if (mesh.dim != p.dimension) {
+        Text msg;
+        msg << "mesh " << mesh.source << ", line 0: it holds "
+            << (mesh.dim == 3 ? "tetrahedra, a 3D body" : "triangles, a 2D body") << "; this model's "
+            << "bodies are " << p.dimension << "D"
+            << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh with first-order "
+                                   "triangles in the x-y plane (3D)"
+                                 : " (forces in N) and need a mesh with first-order tetrahedra");
+        throw std::invalid_argument(msg.str());
+    }
+    if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))
+        reject("lambda", "such that lambda + 2 mu / 3 > 0 for a 3D body (a positive bulk modulus)", p.lambda);
+    // Not built yet (issue 55): the isotropic friction of a 3D body, with its two-dimensional
+    // slip, and the reduced 3D body. Refused rather than run as if x were the only direction.
+    if (mesh.dim == 3 && p.friction_coefficient != 0)
+        reject("friction_coefficient", "0 on a 3D body for now (isotropic friction in the "
+               "foundation's plane is not built yet)", p.friction_coefficient);
+    if (mesh.dim == 3 && p.modes != 0)
+        reject("modes", "0 on a 3D body for now (the reduced 3D body is not built yet)", p.modes);
+}
+
 void check_reduced_edge(const SceneParameters& p) {
     if (p.reduced_edge == ReducedEdge::tangential_mass && p.mass_matrix == MassVariant::redistributed_both)
         throw std::invalid_argument(
@@ -141,26 +163,27 @@ Discretization discretize(const SceneParameters& p) {
     Discretization d;
     d.mesh = p.mesh.empty() ? make_structured_mesh(p.width, p.height, p.nx, p.ny)
                             : read_gmsh_mesh(p.mesh, max_nodes, d.mesh_notes);
+    check_dimension(d.mesh, p);
     d.A = stiffness_matrix(d.mesh, p.lambda, p.mu);
     d.strain_energy = StrainEnergy(d.mesh, p.lambda, p.mu);
 
     const SparseMatrix scalar = scalar_mass_matrix(d.mesh, p.density);
     SparseMatrix redistributed;
     if (redistributes_normal(p.mass_matrix)) redistributed = redistributed_mass(d.mesh, scalar, d.mesh_notes);
+    const int dim = d.mesh.dim;
     if (p.mass_matrix == MassVariant::redistributed_both)
-        d.M = vector_mass_matrix(redistributed, redistributed);
+        d.M = vector_mass_matrix(dim, redistributed, redistributed);
     else if (redistributes_normal(p.mass_matrix))
-        d.M = vector_mass_matrix(scalar, redistributed);
+        d.M = vector_mass_matrix(dim, scalar, redistributed);
     else
-        d.M = vector_mass_matrix(scalar, scalar);
+        d.M = vector_mass_matrix(dim, scalar, scalar);
     d.contact_at_end_of_step = contact_at_end_of_step(p.mass_matrix);
 
     const int n = d.mesh.num_dofs();
     std::vector<char> clamped(n, 0), tied(n, 0);
-    for (int node : d.mesh.top_nodes) {
-        clamped[dof_x(node)] = 1;
-        (p.force_control ? tied : clamped)[dof_y(node)] = 1;
-    }
+    for (int node : d.mesh.top_nodes)  // under force control the plate moves along y only
+        for (int c = 0; c < dim; ++c)
+            (p.force_control && c == Mesh::normal ? tied : clamped)[d.mesh.dof(node, c)] = 1;
     d.free_index.assign(n, -1);
     for (int dof = 0; dof < n; ++dof) {
         if (clamped[dof] || tied[dof]) d.top_dofs.push_back(dof);
@@ -180,8 +203,8 @@ Discretization discretize(const SceneParameters& p) {
         d.plate_index = nf - 1;
         d.plate_mass = p.top_mass;
         for (int node : d.mesh.top_nodes) {
-            t.emplace_back(dof_y(node), d.plate_index, 1.0);
-            d.free_index[dof_y(node)] = d.plate_index;
+            t.emplace_back(d.mesh.dof(node, Mesh::normal), d.plate_index, 1.0);
+            d.free_index[d.mesh.dof(node, Mesh::normal)] = d.plate_index;
         }
     }
     d.expand.resize(n, nf);
@@ -203,8 +226,8 @@ Discretization discretize(const SceneParameters& p) {
     d.C_free_clamped = d.C_free_rows * PcT;
     d.C_free = d.C_free_rows * d.expand;
     for (int node : d.mesh.contact_nodes) {
-        d.contact_x.push_back(d.free_index[dof_x(node)]);
-        d.contact_y.push_back(d.free_index[dof_y(node)]);
+        d.contact_x.push_back(d.free_index[d.mesh.dof(node, 0)]);
+        d.contact_y.push_back(d.free_index[d.mesh.dof(node, Mesh::normal)]);
     }
     return d;
 }
@@ -220,12 +243,10 @@ bool same_discretization(const SceneParameters& a, const SceneParameters& b) {
 }
 
 void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
-    const double tx = u[dof_x(0)], ty = u[dof_y(0)];
+    const int dim = mesh.dim;
     out.resize(u.size());
-    for (Eigen::Index dof = 0; dof < u.size(); dof += 2) {
-        out[dof] = u[dof] - tx;
-        out[dof + 1] = u[dof + 1] - ty;
-    }
+    for (Eigen::Index dof = 0; dof < u.size(); dof += dim)
+        for (int c = 0; c < dim; ++c) out[dof + c] = u[dof + c] - u[c];
 }
 
 std::vector<int> Discretization::contact_unknowns() const {

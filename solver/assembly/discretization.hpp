@@ -83,6 +83,9 @@ struct SceneParameters {
     // body"): the contact edge exact and massless, the interior reduced to its m lowest modes.
     int modes = 0;
     ReducedEdge reduced_edge = ReducedEdge::by_variant;
+    // The body dimension its user expects (not a variable: an FMU's units are those of one
+    // dimension, N/m for 2D and N for 3D). A mesh of the other dimension is refused.
+    int dimension = 2;
     bool damped() const { return damping_mass != 0 || damping_stiffness != 0; }
 
     // Every field once: f(name, reuse, the field of each p...) with the FMU variable that sets
@@ -146,6 +149,10 @@ constexpr double max_viscous_friction = 100;
 
 // Throws std::invalid_argument naming the first offending parameter (the FMU's variable names).
 void check_parameters(const SceneParameters& p);
+// What a body of this mesh's dimension cannot take yet (3D: friction and the reduced body);
+// throws std::invalid_argument naming it. friction_coefficient is checked again wherever it
+// changes after the discretization (it does not rebuild it).
+void check_dimension(const Mesh& mesh, const SceneParameters& p);
 
 struct Discretization {
     Mesh mesh;
@@ -175,12 +182,12 @@ struct Discretization {
     SparseMatrix C;
     RowMajorSparseMatrix C_free_rows;
     SparseMatrix C_free_clamped, C_free;
-    // Contact node c: free positions of its x and y dofs.
+    // Contact node c: free positions of its x and y (normal) dofs.
     std::vector<int> contact_x, contact_y;
     // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T).
     std::vector<int> contact_unknowns() const;
     // A top node's y dof: all of them move together (the clamp's value, or the plate's w).
-    int top_y_dof() const { return dof_y(mesh.top_nodes.front()); }
+    int top_y_dof() const { return mesh.dof(mesh.top_nodes.front(), Mesh::normal); }
     // out = u minus the translation of node 0. A annihilates translations, but the product
     // A u rounds |A| |u|: a body far from where it started would feel forces of that size
     // from nowhere. A (u - t) is the same force without them.

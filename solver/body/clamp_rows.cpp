@@ -7,10 +7,10 @@ ClampXRows clamp_x_rows(const Discretization& d) {
     Eigen::VectorXd all_e = Eigen::VectorXd::Zero(d.mesh.num_dofs());
     for (Eigen::Index j = 0; j < ncl; ++j) {
         const int dof = d.clamped_dofs[static_cast<size_t>(j)];
-        all_e[dof] = dof % 2 == 1;
+        all_e[dof] = d.mesh.component(dof) == Mesh::normal;
     }
     Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
-    for (int dof : d.clamped_dofs) all_ex[dof] = dof % 2 == 0;
+    for (int dof : d.clamped_dofs) all_ex[dof] = d.mesh.component(dof) != Mesh::normal;
     const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
     const Eigen::Index nf = static_cast<Eigen::Index>(d.free_dofs.size());
     ClampXRows rows;
@@ -68,8 +68,9 @@ void expand_to_full(const Discretization& d, const Eigen::VectorXd& u, const Eig
         full.v[d.free_dofs[j]] = v[static_cast<Eigen::Index>(j)];
     }
     for (int dof : d.clamped_dofs) {
-        full.u[dof] = dof % 2 == 1 ? s.u[n + 1] : 0.0;
-        full.v[dof] = dof % 2 == 1 ? s.v[n + 1] : 0.0;
+        const bool normal = d.mesh.component(dof) == Mesh::normal;
+        full.u[dof] = normal ? s.u[n + 1] : 0.0;
+        full.v[dof] = normal ? s.v[n + 1] : 0.0;
     }
     full.lambda = s.lambda;
     full.sticking = s.sticking;

@@ -43,7 +43,7 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
 
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
     Eigen::VectorXd e = Eigen::VectorXd::Zero(ncl);
-    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.clamped_dofs[static_cast<size_t>(j)] % 2 == 1;
+    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
     const Eigen::VectorXd Afc_e = d.A_free_clamped * e, Mfc_e = d.M_free_clamped * e;
     lift_ = Pi * Eigen::VectorXd(-fixed.solve(Eigen::MatrixXd(Pi.transpose() * Afc_e)).col(0));
 

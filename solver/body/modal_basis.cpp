@@ -231,7 +231,7 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
 
     // The clamp's static lift, and the held dofs' constraint modes.
     Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(d.clamped_dofs.size()));
-    for (size_t k = 0; k < d.clamped_dofs.size(); ++k) e[static_cast<Eigen::Index>(k)] = d.clamped_dofs[k] % 2 == 1;
+    for (size_t k = 0; k < d.clamped_dofs.size(); ++k) e[static_cast<Eigen::Index>(k)] = d.mesh.component(d.clamped_dofs[k]) == Mesh::normal;
     const Eigen::VectorXd Afc_e = d.A_free_clamped * e;
     if (held.empty()) {
         basis.lift = -solve(Eigen::MatrixXd(Afc_e)).col(0);

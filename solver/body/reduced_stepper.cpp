@@ -66,7 +66,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     // The clamp: e = 1 on the clamped y dofs.
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
     Eigen::VectorXd e = Eigen::VectorXd::Zero(ncl);
-    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.clamped_dofs[static_cast<size_t>(j)] % 2 == 1;
+    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
     Eigen::VectorXd all_e = Eigen::VectorXd::Zero(d.mesh.num_dofs());
     for (Eigen::Index j = 0; j < ncl; ++j) all_e[d.clamped_dofs[static_cast<size_t>(j)]] = e[j];
     const Eigen::VectorXd& S = basis_.lift;

@@ -119,11 +119,12 @@ std::pair<double, double> Stepper::kinetic_and_strain_energy(const State& s) {
 bool Stepper::set_clamp(State& s, double top, double rate) const {
     const std::vector<int>& nodes = disc_.mesh.top_nodes;
     const bool moves = std::any_of(nodes.begin(), nodes.end(), [&](int n) {
-        return s.u[dof_y(n)] != top || s.v[dof_y(n)] != rate;
+        const int y = disc_.mesh.dof(n, Mesh::normal);
+        return s.u[y] != top || s.v[y] != rate;
     });
     for (int node : nodes) {
-        s.u[dof_y(node)] = top;
-        s.v[dof_y(node)] = rate;
+        s.u[disc_.mesh.dof(node, Mesh::normal)] = top;
+        s.v[disc_.mesh.dof(node, Mesh::normal)] = rate;
     }
     return moves;
 }
@@ -145,9 +146,10 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     s.u.setZero(mesh.num_dofs());
     s.v.setZero(mesh.num_dofs());
     for (int n = 0; n < mesh.num_nodes(); ++n)
-        s.u[dof_y(n)] = top_displacement * (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
+        s.u[mesh.dof(n, Mesh::normal)] = top_displacement * (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
     for (int dof : d.moving_dofs)
-        s.v[dof] = dof % 2 == 0 ? p.initial_velocity_x : p.initial_velocity_y;
+        s.v[dof] = mesh.component(dof) == 0 ? p.initial_velocity_x
+                   : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : 0.0;
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
     s.lambda.setZero(p.friction_coefficient > 0 ? 2 * nc : nc);
     s.sticking.setZero(nc);
@@ -370,7 +372,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     bool clamp_moves = false;
     for (Eigen::Index k = 0; k < clamped_half_.size(); ++k) {
         const int dof = d.clamped_dofs[static_cast<size_t>(k)];
-        clamped_half_[k] = (dof % 2 == 1 ? top_half : 0.0) - s.u[dof];
+        clamped_half_[k] = (disc_.mesh.component(dof) == Mesh::normal ? top_half : 0.0) - s.u[dof];
         clamp_moves = clamp_moves || clamped_half_[k] != 0;
     }
 
@@ -386,7 +388,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // an affine map of it) shifted by B u^k.
     const bool implicit = d.contact_at_end_of_step;
     const auto gap_old = [&](int i) {  // g - u_N^k
-        return params_.initial_gap + d.mesh.contact_heights[i] + s.u[dof_y(d.mesh.contact_nodes[i])];
+        return params_.initial_gap + d.mesh.contact_heights[i] + s.u[d.mesh.dof(d.mesh.contact_nodes[i], Mesh::normal)];
     };
     SubstepReport report;
     bool touching = false;
@@ -443,15 +445,16 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         for (RowMajorSparseMatrix::InnerIterator it(d.A_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
             r += it.value() * (relative_[it.col()] + w_[it.col()]);  // u^{k+1/2} - t
         if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
-        (dof % 2 == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
+        const int component = d.mesh.component(dof);
+        if (component < 2) (component == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
         if (d.free_index[dof] < 0) report.work.clamp += r * 2 * w_[dof];
     }
     if (d.plate_index >= 0) report.work.clamp -= load.top_force * 2 * w_free_[d.plate_index];
 
     // The edge: the contact law's quantities on u^{k+1/2} (for tests), then what both
     // steppers report.
-    const auto node_y = [&](int i) { return dof_y(d.mesh.contact_nodes[static_cast<size_t>(i)]); };
-    const auto node_x = [&](int i) { return dof_x(d.mesh.contact_nodes[static_cast<size_t>(i)]); };
+    const auto node_y = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], Mesh::normal); };
+    const auto node_x = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 0); };
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
     snapshot_.slip.setZero(nc);
@@ -473,7 +476,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         s.u[dof] += 2 * w_[dof];
     }
     for (int dof : d.clamped_dofs) {
-        const bool y = dof % 2 == 1;
+        const bool y = d.mesh.component(dof) == Mesh::normal;
         s.u[dof] = y ? load.top_end : 0.0;
         s.v[dof] = y ? load.top_rate : 0.0;
     }

@@ -207,7 +207,7 @@ public:
     double top_position(const State& s) const override { return s.u[disc_.top_y_dof()]; }
     double top_velocity(const State& s) const override { return s.v[disc_.top_y_dof()]; }
     double contact_height(const State& s, int node) const override {
-        return s.u[dof_y(disc_.mesh.contact_nodes[static_cast<size_t>(node)])];
+        return s.u[disc_.mesh.dof(disc_.mesh.contact_nodes[static_cast<size_t>(node)], Mesh::normal)];
     }
     bool set_clamp(State& s, double top, double rate) const override;
     bool fits(const State& s) const override;

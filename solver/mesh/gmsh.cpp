@@ -179,11 +179,11 @@ bool element_type(long type, ElementType& t) {
         {3, {4, "a 4-node quadrangle"}},
         {10, {9, "a 9-node quadrangle"}},
         {16, {8, "an 8-node quadrangle"}},
-        {4, {4, "a tetrahedron (3D)"}},
+        {4, {4, ""}},
         {5, {8, "a hexahedron (3D)"}},
         {6, {6, "a prism (3D)"}},
         {7, {5, "a pyramid (3D)"}},
-        {11, {10, "a 10-node tetrahedron (3D)"}},
+        {11, {10, "a 10-node (second-order) tetrahedron (3D)"}},
         {12, {27, "a 27-node hexahedron (3D)"}},
         {13, {18, "an 18-node prism (3D)"}},
         {14, {14, "a 14-node pyramid (3D)"}},
@@ -341,13 +341,13 @@ void read_nodes_22(Tokens& in, RawMesh& m, long max_nodes) {
 void read_element_nodes(Tokens& in, long type, RawElement& e) {
     ElementType t{};
     if (!element_type(type, t))
-        in.fail("element type " + std::to_string(type) + " is not one Gmsh writes for a 2D mesh: "
-                "ContactBody needs a mesh with first-order triangles", e.line);
+        in.fail("element type " + std::to_string(type) + " is not one Gmsh writes: "
+                "ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D)", e.line);
     if (*t.refused)
         in.fail(std::string("element ") + std::to_string(e.tag) + " is " + t.refused +
-                    ": ContactBody needs a mesh with first-order triangles (Gmsh: Mesh.ElementOrder = 1, "
-                    "no recombination, a 2D mesh)", e.line);
-    e.dim = type == 15 ? 0 : type == 1 ? 1 : 2;
+                    ": ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D) "
+                    "(Gmsh: Mesh.ElementOrder = 1, no recombination)", e.line);
+    e.dim = type == 15 ? 0 : type == 1 ? 1 : type == 2 ? 2 : 3;
     for (int k = 0; k < t.nodes; ++k) e.nodes.push_back(in.integer("an element's node tag"));
 }
 
@@ -448,10 +448,21 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     return m;
 }
 
-std::string node_where(long tag, const RawNode& n) {
+std::string node_where(long tag, const RawNode& n, int dim) {
     Text msg;
-    msg << "node " << tag << " (" << n.x << ", " << n.y << ")";
+    msg << "node " << tag << " (" << n.x << ", " << n.y;
+    if (dim == 3) msg << ", " << n.z;
+    msg << ")";
     return msg.str();
+}
+
+// What a cell and a facet of a body of this dimension are called.
+struct Words {
+    const char *cell, *cells, *facets, *facet_dimension, *extent;
+};
+Words words(int dim) {
+    if (dim == 2) return {"triangle", "triangles", "lines", "lines (dimension 1)", "length"};
+    return {"tetrahedron", "tetrahedra", "surfaces", "surfaces (dimension 2)", "area"};
 }
 
 }  // namespace
@@ -471,6 +482,11 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         msg << "mesh " << path << ", line " << line << ": " << what;
         throw std::invalid_argument(msg.str());
     };
+    // The body's dimension is its highest cells': tetrahedra make a 3D body, else triangles a 2D one.
+    int dim = 2;
+    for (const RawElement& e : raw.elements) dim = std::max(dim, e.dim);
+    const Words w = words(dim);
+    const auto where = [&](long tag, const RawNode& n) { return node_where(tag, n, dim); };
     for (const auto& [tag, n] : raw.nodes) {
         // A body in metres lies within 1000 km of its origin: a coordinate beyond is a damaged
         // file or another unit (and would make areas and stiffnesses overflow).
@@ -485,9 +501,9 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
                          "mesh in other units",
                      n.line);
         }
-        if (n.z != 0)
+        if (dim == 2 && n.z != 0)
             fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) +
-                     ": the mesh must lie in the x-y plane (z = 0)", n.line);
+                     ": a mesh of triangles (a 2D body) must lie in the x-y plane (z = 0)", n.line);
     }
     // The groups' tags by name, per dimension.
     std::map<std::string, std::vector<std::pair<int, long>>> groups;
@@ -502,6 +518,7 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     };
 
     Mesh m;
+    m.dim = dim;
     m.source = path;
     m.file_digest = raw.digest;
     // Points in the order of their tags (a file written from the rectangle numbers its nodes
@@ -510,81 +527,102 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     std::vector<long> tag_of;
     for (const auto& [tag, n] : raw.nodes) {
         index.emplace(tag, static_cast<int>(m.points.size()));
-        m.points.push_back({n.x, n.y});
+        m.points.push_back({n.x, n.y, n.z});
         tag_of.push_back(tag);
     }
-    std::vector<int> triangle_lines;
-    std::vector<long> triangle_tags;
+    std::vector<int> cell_lines;
+    std::vector<long> cell_tags;
     std::vector<char> used(m.points.size(), 0);
     for (const RawElement& e : raw.elements) {
-        if (e.dim != 2) continue;
-        std::array<int, 3> tri{};
-        for (int a = 0; a < 3; ++a) {
-            const long tag = e.nodes[static_cast<size_t>(a)];
+        if (e.dim != dim) continue;
+        for (long tag : e.nodes) {
             const auto it = index.find(tag);
             if (it == index.end())
                 fail("element " + std::to_string(e.tag) + " names node " + std::to_string(tag) +
                          ", which $Nodes does not define", e.line);
-            tri[static_cast<size_t>(a)] = it->second;
+            m.cells.push_back(it->second);
             used[static_cast<size_t>(it->second)] = 1;
         }
-        m.triangles.push_back(tri);
-        triangle_lines.push_back(e.line);
-        triangle_tags.push_back(e.tag);
+        cell_lines.push_back(e.line);
+        cell_tags.push_back(e.tag);
     }
-    if (m.triangles.empty()) fail("the file holds no triangles: ContactBody needs a mesh with first-order triangles", 0);
+    if (m.cells.empty()) fail("the file holds no triangles: ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D)", 0);
     for (size_t n = 0; n < used.size(); ++n)
         if (!used[n]) {
             const RawNode& r = raw.nodes.at(tag_of[n]);
-            fail(node_where(tag_of[n], r) + " belongs to no triangle (Gmsh writes such nodes, "
+            fail(where(tag_of[n], r) + " belongs to no " + w.cell + " (Gmsh writes such nodes, "
                      "for example the centres of arcs, when Mesh.SaveAll = 1: save without it, "
                      "or with the physical groups only)", r.line);
         }
 
-    // Orientation: counter-clockwise, as the assembly expects. A mesh whose triangles all turn
-    // the other way (its surface's normal is -z) is turned over as a whole; one that mixes the
-    // two is folded.
-    double extent = 0;
-    for (const Point& p : m.points) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
-    std::vector<double> areas;
-    size_t clockwise = 0;
-    for (size_t t = 0; t < m.triangles.size(); ++t) {
-        const auto& tri = m.triangles[t];
-        const Point &a = m.point(tri[0]), &b = m.point(tri[1]), &c = m.point(tri[2]);
-        const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
-        const double scale = std::max({std::abs(b.x - a.x), std::abs(c.x - a.x), std::abs(b.y - a.y),
-                                       std::abs(c.y - a.y)});
-        if (!(std::abs(area) > 1e-10 * scale * scale))
-            fail("triangle " + std::to_string(triangle_tags[t]) + " is degenerate (area " +
-                     format_number(area) + " m^2: its three nodes are on one line or coincide)",
-                 triangle_lines[t]);
-        areas.push_back(area);
-        if (area < 0) ++clockwise;
+    // Orientation: counter-clockwise triangles, tetrahedra of positive volume, as the assembly
+    // expects. A mesh whose cells all turn the other way (a surface facing -z, a volume
+    // mirrored) is turned over as a whole; one that mixes the two is folded.
+    const size_t cells = m.num_cells();
+    std::vector<double> measures;
+    size_t negative = 0;
+    for (size_t t = 0; t < cells; ++t) {
+        const int* c = m.cell(t);
+        const Point& o = m.point(c[0]);
+        double edges[3][3] = {};
+        double scale = 0;
+        for (int a = 1; a <= dim; ++a) {
+            const Point& q = m.point(c[a]);
+            const double e[3] = {q.x - o.x, q.y - o.y, q.z - o.z};
+            for (int k = 0; k < 3; ++k) {
+                edges[a - 1][k] = e[k];
+                scale = std::max(scale, std::abs(e[k]));
+            }
+        }
+        double measure;
+        if (dim == 2) {
+            measure = 0.5 * (edges[0][0] * edges[1][1] - edges[1][0] * edges[0][1]);
+        } else {
+            measure = (edges[0][0] * (edges[1][1] * edges[2][2] - edges[1][2] * edges[2][1]) -
+                       edges[0][1] * (edges[1][0] * edges[2][2] - edges[1][2] * edges[2][0]) +
+                       edges[0][2] * (edges[1][0] * edges[2][1] - edges[1][1] * edges[2][0])) / 6;
+        }
+        if (!(std::abs(measure) > 1e-10 * std::pow(scale, dim)))
+            fail(dim == 2 ? "triangle " + std::to_string(cell_tags[t]) + " is degenerate (area " +
+                                format_number(measure) + " m^2: its three nodes are on one line or coincide)"
+                          : "tetrahedron " + std::to_string(cell_tags[t]) + " is flat (volume " +
+                                format_number(measure) + " m^3: its four nodes are on one plane or coincide)",
+                 cell_lines[t]);
+        measures.push_back(measure);
+        if (measure < 0) ++negative;
     }
-    if (clockwise == m.triangles.size()) {
-        for (auto& tri : m.triangles) std::swap(tri[1], tri[2]);
-        notes.push_back("mesh " + path + ": every triangle was clockwise (its surface faces -z); "
-                        "all were turned counter-clockwise");
-    } else if (clockwise > 0) {
-        const bool minority_clockwise = 2 * clockwise <= m.triangles.size();
-        for (size_t t = 0; t < areas.size(); ++t)
-            if ((areas[t] < 0) == minority_clockwise)
-                fail("triangle " + std::to_string(triangle_tags[t]) + " is inverted: it turns " +
-                         (minority_clockwise ? "clockwise" : "counter-clockwise") + " where " +
-                         std::to_string(minority_clockwise ? m.triangles.size() - clockwise : clockwise) +
-                         " others turn the other way (a folded mesh)",
-                     triangle_lines[t]);
+    const char* turn_negative = dim == 2 ? "clockwise" : "of negative volume (left-handed)";
+    const char* turn_positive = dim == 2 ? "counter-clockwise" : "of positive volume";
+    if (negative == cells) {
+        for (size_t t = 0; t < cells; ++t) std::swap(m.cells[t * (dim + 1) + 1], m.cells[t * (dim + 1) + 2]);
+        notes.push_back(dim == 2 ? "mesh " + path + ": every triangle was clockwise (its surface faces -z); "
+                                   "all were turned counter-clockwise"
+                                 : "mesh " + path + ": every tetrahedron had negative volume (a mirrored "
+                                   "mesh); all were turned over");
+    } else if (negative > 0) {
+        const bool minority_negative = 2 * negative <= cells;
+        for (size_t t = 0; t < measures.size(); ++t)
+            if ((measures[t] < 0) == minority_negative)
+                fail(std::string(w.cell) + " " + std::to_string(cell_tags[t]) + " is inverted: it is " +
+                         (minority_negative ? turn_negative : turn_positive) + " where " +
+                         std::to_string(minority_negative ? cells - negative : negative) +
+                         " others are " + (minority_negative ? turn_positive : turn_negative) +
+                         " (a folded mesh)",
+                     cell_lines[t]);
     }
 
     // The boundary groups.
     for (const char* name : {"contact", "clamp"})
         if (!groups.count(name))
-            fail(std::string("no physical group named \"") + name + "\": the mesh needs one of boundary "
-                     "lines named \"contact\" (may touch the foundation) and one named \"clamp\" (driven "
+            fail(std::string("no physical group named \"") + name + "\": the mesh needs one of boundary " +
+                     w.facets + " named \"contact\" (may touch the foundation) and one named \"clamp\" (driven "
                      "as the top edge)", 0);
     std::vector<char> contact(m.points.size(), 0), clamp(m.points.size(), 0);
-    std::vector<std::array<int, 2>> contact_lines;
+    std::vector<int> contact_facets;
     size_t contact_elements = 0, clamp_elements = 0;
+    static const char* const kinds[] = {"point", "line", "triangle", "tetrahedron"};
+    static const char* const kinds_of[] = {"points (dimension 0)", "lines (dimension 1)",
+                                           "surfaces (dimension 2)", "volumes (dimension 3)"};
     for (const RawElement& e : raw.elements) {
         const bool c = in_group(e, "contact"), k = in_group(e, "clamp");
         if (!c && !k) continue;
@@ -593,18 +631,19 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
             const auto it = index.find(tag);
             if (it == index.end())
                 fail("element " + std::to_string(e.tag) + " of the " + (c ? "contact" : "clamp") +
-                         " group names node " + std::to_string(tag) + ", which no triangle has", e.line);
+                         " group names node " + std::to_string(tag) + ", which no " + w.cell + " has", e.line);
             nodes.push_back(it->second);
         }
         for (int n : nodes) {
             if (c) contact[static_cast<size_t>(n)] = 1;
             if (k) clamp[static_cast<size_t>(n)] = 1;
         }
-        if (c && e.dim == 2)
-            fail("the physical group \"contact\" holds triangle " + std::to_string(e.tag) +
-                     ": it must be a group of boundary lines (dimension 1), not of surfaces "
-                     "(dimension 2)", e.line);
-        if (c && e.dim == 1) contact_lines.push_back({nodes[0], nodes[1]});
+        if (c && e.dim != 0 && e.dim != dim - 1)
+            fail("the physical group \"contact\" holds " + std::string(kinds[e.dim]) + " " +
+                     std::to_string(e.tag) + ": it must be a group of boundary " + w.facet_dimension +
+                     ", not of " + kinds_of[e.dim],
+                 e.line);
+        if (c && e.dim == dim - 1) contact_facets.insert(contact_facets.end(), nodes.begin(), nodes.end());
         contact_elements += c;
         clamp_elements += k;
     }
@@ -631,18 +670,20 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         while (parent[static_cast<size_t>(n)] != n) n = parent[static_cast<size_t>(n)] = parent[static_cast<size_t>(parent[static_cast<size_t>(n)])];
         return n;
     };
-    for (const auto& tri : m.triangles)
-        for (int a = 1; a < 3; ++a) parent[static_cast<size_t>(root(tri[static_cast<size_t>(a)]))] = root(tri[0]);
+    for (size_t t = 0; t < cells; ++t) {
+        const int* c = m.cell(t);
+        for (int a = 1; a <= dim; ++a) parent[static_cast<size_t>(root(c[a]))] = root(c[0]);
+    }
     std::vector<char> held(m.points.size(), 0);
     for (int n : m.top_nodes) held[static_cast<size_t>(root(n))] = 1;
     for (int n = 0; n < m.num_nodes(); ++n)
         if (!held[static_cast<size_t>(root(n))]) {
             const RawNode& r = raw.nodes.at(tag_of[static_cast<size_t>(n)]);
-            fail(node_where(tag_of[static_cast<size_t>(n)], r) + " is in a part of the body not "
+            fail(where(tag_of[static_cast<size_t>(n)], r) + " is in a part of the body not "
                      "connected to the clamp (a free part would have no equilibrium)", r.line);
         }
 
-    finish_mesh(m, contact_lines);
+    finish_mesh(m, contact_facets);
     if (!(m.clamp_height() > 0)) {
         Text msg;
         msg << "the clamp group's highest node (y = " << m.clamp_y << " m) is not above the contact "
@@ -654,9 +695,10 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     for (size_t i = 0; i < m.contact_nodes.size(); ++i)
         if (!(m.contact_shares[i] > 0)) {
             const long tag = tag_of[static_cast<size_t>(m.contact_nodes[i])];
-            fail(node_where(tag, raw.nodes.at(tag)) + " of the contact group carries no length of "
-                     "the foundation (its contact lines are vertical, or it is on none): put it in no "
-                     "contact line, or give the contact boundary some extent along x", raw.nodes.at(tag).line);
+            fail(where(tag, raw.nodes.at(tag)) + " of the contact group carries no " + w.extent + " of "
+                     "the foundation (its contact " + w.facets + " stand perpendicular to it, or it is on none): "
+                     "put it in no contact " + (dim == 2 ? "line" : "surface") + ", or give the contact "
+                     "boundary some extent along the foundation", raw.nodes.at(tag).line);
         }
     return m;
 }

@@ -76,14 +76,14 @@ FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string ba
     points.reserve(3 * static_cast<size_t>(mesh.num_nodes()));
     for (int n = 0; n < mesh.num_nodes(); ++n) {
         const Point p = mesh.point(n);
-        points.insert(points.end(), {p.x, p.y, 0.0});
+        points.insert(points.end(), {p.x, p.y, p.z});
     }
     std::vector<int64_t> connectivity, offsets;
-    for (const auto& t : mesh.triangles) {
-        connectivity.insert(connectivity.end(), t.begin(), t.end());
+    for (size_t e = 0; e < mesh.num_cells(); ++e) {
+        connectivity.insert(connectivity.end(), mesh.cell(e), mesh.cell(e) + mesh.nodes_per_cell());
         offsets.push_back(static_cast<int64_t>(connectivity.size()));
     }
-    const std::vector<uint8_t> types(mesh.triangles.size(), 5);  // VTK_TRIANGLE
+    const std::vector<uint8_t> types(mesh.num_cells(), mesh.dim == 2 ? 5 : 10);  // VTK_TRIANGLE, VTK_TETRA
     points_ = data_array("Float64", "Points", 3, encode(points));
     cells_ = data_array("Int64", "connectivity", 1, encode(connectivity)) +
              data_array("Int64", "offsets", 1, encode(offsets)) +
@@ -100,9 +100,9 @@ void FieldWriter::write(const State& s) {
     const size_t nodes = static_cast<size_t>(mesh_.num_nodes());
     std::vector<double> u(3 * nodes, 0.0), v(3 * nodes, 0.0), force(3 * nodes, 0.0), pressure(nodes, 0.0);
     for (size_t n = 0; n < nodes; ++n) {
-        for (int c = 0; c < 2; ++c) {
-            u[3 * n + c] = s.u[static_cast<Eigen::Index>(2 * n + c)];
-            v[3 * n + c] = s.v[static_cast<Eigen::Index>(2 * n + c)];
+        for (int c = 0; c < mesh_.dim; ++c) {
+            u[3 * n + c] = s.u[mesh_.dof(static_cast<int>(n), c)];
+            v[3 * n + c] = s.v[mesh_.dof(static_cast<int>(n), c)];
         }
     }
     // Multipliers of the last substep: the force on the body is (lambda_T, -lambda_N).
@@ -126,7 +126,7 @@ void FieldWriter::write(const State& s) {
                "and friction_force are averages over the communication step -->\n"
                "  <UnstructuredGrid>\n";
     buffer_ += "    <Piece NumberOfPoints=\"" + std::to_string(nodes) + "\" NumberOfCells=\"" +
-               std::to_string(mesh_.triangles.size()) + "\">\n";
+               std::to_string(mesh_.num_cells()) + "\">\n";
     buffer_ += "      <PointData Vectors=\"displacement\">\n";
     buffer_ += data_array("Float64", "displacement", 3, encode(u));
     buffer_ += data_array("Float64", "velocity", 3, encode(v));

@@ -180,7 +180,7 @@ void Simulation::static_initial_state(double top, double force) {
     const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
         double pressing = 0;                             // (A symmetric: col = row)
         for (int dof : d.top_dofs)
-            if (dof % 2 == 1) pressing -= d.A.col(dof).dot(s.u);
+            if (d.mesh.component(dof) == Mesh::normal) pressing -= d.A.col(dof).dot(s.u);
         return pressing;
     };
     double probe = -1e-4 * d.mesh.clamp_height();
@@ -248,7 +248,7 @@ void Simulation::check_static_balance() const {
     product.noalias() = d.A * relative;
     double top = 0;
     for (int dof : d.top_dofs)
-        if (dof % 2 == 1) top += product[dof];
+        if (d.mesh.component(dof) == Mesh::normal) top += product[dof];
     const Eigen::Index nc = body_->num_contact_nodes();
     const double normal = -full.lambda.head(nc).sum();
     // Round-off: relative, or the force of a strain of 1e-12 over the body's width where the
@@ -288,14 +288,14 @@ void Simulation::initial_reactions() {
         const size_t i = static_cast<size_t>(k);
         const int node = d.mesh.contact_nodes[i];
         const double share = d.mesh.edge_share(i);
-        const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[dof_y(node)];
+        const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[d.mesh.dof(node, Mesh::normal)];
         const bool touching = gap <= resolution;
         double normal = 0, friction = 0;
         if (multipliers) {
             normal = -state_.lambda[k];
             if (state_.lambda.size() == 2 * nc) friction = state_.lambda[nc + k];
         } else if (touching) {
-            normal = std::max(0.0, product[dof_y(node)]);
+            normal = std::max(0.0, product[d.mesh.dof(node, Mesh::normal)]);
         }
         edge_.pressure[k] = normal / share;
         edge_.friction[k] = friction / share;
@@ -310,10 +310,19 @@ void Simulation::initial_reactions() {
             o.corner_friction = friction / share;
         }
     }
-    for (int dof : d.top_dofs)
-        (dof % 2 == 0 ? o.top_reaction_x : o.top_reaction_y) += product[dof];
+    for (int dof : d.top_dofs) {
+        const int component = d.mesh.component(dof);
+        if (component < 2) (component == 0 ? o.top_reaction_x : o.top_reaction_y) += product[dof];
+    }
     observables_ = o;
     energies_current_ = false;
+}
+
+void Simulation::set_friction_coefficient(double friction) {
+    SceneParameters p = body_->parameters();
+    p.friction_coefficient = friction;
+    check_dimension(body_->discretization().mesh, p);  // a 3D body has no friction yet
+    body_->set_friction_coefficient(friction);
 }
 
 int Simulation::substeps_for(double h) const {

@@ -152,7 +152,7 @@ public:
     // The full body (modes = 0) or the reduced one.
     Body& body() { return *body_; }
     const Body& body() const { return *body_; }
-    void set_friction_coefficient(double friction) { body_->set_friction_coefficient(friction); }
+    void set_friction_coefficient(double friction);
     // The state on every dof (the reduced body's expanded): what field output writes.
     void full_state(State& out) const { body_->to_full(state_, out); }
     // Substeps per step for a step of size h.

@@ -88,7 +88,8 @@ static State quasi_static_path(Body& path, Body& settle, double top, double star
     State rest;
     path.to_full(path.initial_state(0.0), rest);
     rest.v.setZero();
-    for (Eigen::Index dof = 1; dof < rest.u.size(); dof += 2) rest.u[dof] = start;
+    const Mesh& mesh = path.discretization().mesh;
+    for (int n = 0; n < mesh.num_nodes(); ++n) rest.u[mesh.dof(n, Mesh::normal)] = start;
     State s = path.from_full(rest);
     SubstepLoad load;
     const auto run = [&](Body& body, double from, double to) {
@@ -228,7 +229,7 @@ void Simulation::static_initial_state(double top, double force) {
     const double scale = flat ? force / pressing : 1.0;
     State full;
     full.u = scale * s.u;
-    for (Eigen::Index dof = 1; dof < full.u.size(); dof += 2) full.u[dof] -= p.initial_gap;
+    for (int n = 0; n < d.mesh.num_nodes(); ++n) full.u[d.mesh.dof(n, Mesh::normal)] -= p.initial_gap;
     full.v.setZero(full.u.size());
     full.lambda = scale * s.lambda;
     full.sticking = s.sticking;

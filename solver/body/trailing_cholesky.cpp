@@ -1,5 +1,7 @@
 #include "trailing_cholesky.hpp"
 
+#include <Eigen/SparseLU>
+
 #include <cholmod.h>
 
 #include <algorithm>
@@ -7,6 +9,22 @@
 #include <string>
 
 namespace contactbody {
+
+// The supernodal LU of the prepermuted matrix (both triangles), and for each of its values
+// the position of K's lower-triangle value it is.
+struct TrailingCholesky::Lu {
+    Eigen::SparseLU<SparseMatrix, Eigen::NaturalOrdering<int>> lu;
+    SparseMatrix full;
+    std::vector<int> value_map;
+    Eigen::VectorXd rhs;
+
+    void factorize(const double* lower_values) {
+        for (size_t k = 0; k < value_map.size(); ++k) full.valuePtr()[k] = lower_values[value_map[k]];
+        lu.factorize(full);
+        if (lu.info() != Eigen::Success)
+            throw std::runtime_error("the held stiffness is singular (supernodal LU: " + lu.lastErrorMessage() + ")");
+    }
+};
 
 struct TrailingCholesky::Cholmod {
     cholmod_common common;
@@ -67,7 +85,7 @@ cholmod_factor* analyze_given(cholmod_sparse& a, std::vector<int>& perm, cholmod
 }  // namespace
 
 TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing,
-                                   bool refactorable)
+                                   bool refactorable, Kernel kernel)
     : c_(std::make_unique<Cholmod>()), n_(K.rows()), m_(static_cast<Eigen::Index>(trailing.size())) {
     cholmod_common& c = c_->common;
     // Simplicial L L^T: with one right-hand side its solves are 1.6-2.5x faster than the
@@ -136,6 +154,30 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         c.postorder = 0;
         c_->factor = cholmod_analyze(&upper, &c);
         c_->check("analysis");
+        factor_flops_ = c.fl;
+        if (kernel == Kernel::automatic ? factor_flops_ >= supernodal_flops : kernel == Kernel::supernodal_lu) {
+            // Both triangles of P K P^T in natural order, each value mapped to K's lower one.
+            lu_ = std::make_unique<Lu>();
+            std::vector<Eigen::Triplet<double>> both;
+            both.reserve(2 * entries.size());
+            for (const auto& e : entries) {
+                both.push_back(e);
+                if (e.row() != e.col()) both.emplace_back(e.col(), e.row(), e.value());
+            }
+            lu_->full.resize(n_, n_);
+            lu_->full.setFromTriplets(both.begin(), both.end());
+            lu_->full.makeCompressed();
+            lu_->value_map.resize(static_cast<size_t>(lu_->full.nonZeros()));
+            for (Eigen::Index k = 0; k < lu_->full.nonZeros(); ++k)
+                lu_->value_map[static_cast<size_t>(k)] = static_cast<int>(lu_->full.valuePtr()[k]);
+            lu_->lu.setPivotThreshold(0.0);  // diagonal pivots: K is positive definite
+            lu_->lu.analyzePattern(lu_->full);
+            lu_->factorize(lower.valuePtr());
+            lu_->rhs.resize(n_);
+            inverse_perm_.assign(n, 0);
+            for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
+            return;
+        }
         cholmod_factorize(&upper, c_->factor, &c);
     } else {
         c_->factor = analyze_given(a, *best, c);
@@ -193,6 +235,10 @@ TrailingCholesky::~TrailingCholesky() = default;
 
 void TrailingCholesky::refactor(const SparseMatrix& K2) {
     if (value_map_.empty()) throw std::logic_error("TrailingCholesky::refactor: not refactorable");
+    if (lu_) {
+        lu_->factorize(K2.valuePtr());
+        return;
+    }
     cholmod_common& c = c_->common;
     // K2 holds its lower triangle in K's pattern: its values, permuted as in the factor.
     for (size_t k = 0; k < value_map_.size(); ++k)
@@ -207,11 +253,25 @@ void TrailingCholesky::refactor(const SparseMatrix& K2) {
 }
 
 double TrailingCholesky::factor_nonzeros() const {
+    if (lu_) return static_cast<double>(lu_->lu.nnzL());
     const cholmod_factor& L = *c_->factor;
     return static_cast<double>(L.is_super ? L.xsize : static_cast<size_t>(static_cast<const int*>(L.p)[L.n]));
 }
 
+void TrailingCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if (!lu_) {
+        forward(b);
+        backward(x);
+        return;
+    }
+    for (Eigen::Index k = 0; k < n_; ++k) lu_->rhs[k] = b[perm_[static_cast<size_t>(k)]];
+    lu_->rhs = lu_->lu.solve(lu_->rhs);
+    x.resize(n_);
+    for (Eigen::Index k = 0; k < n_; ++k) x[perm_[static_cast<size_t>(k)]] = lu_->rhs[k];
+}
+
 Eigen::Map<Eigen::VectorXd> TrailingCholesky::forward(const Eigen::VectorXd& b) {
+    if (lu_) throw std::logic_error("TrailingCholesky::forward: the supernodal LU has no L solve");
     Cholmod& c = *c_;
     double* permuted = static_cast<double*>(c.permuted->x);
     for (Eigen::Index k = 0; k < n_; ++k) permuted[k] = b[perm_[static_cast<size_t>(k)]];

@@ -21,8 +21,19 @@ public:
     // unknowns in `trailing` ordered last (fill-reducing order elsewhere, and among them).
     // Throws std::runtime_error naming the cause if K is not positive definite.
     // refactorable (no trailing unknowns): refactor() may be called; the factor is then kept
-    // as CHOLMOD factors a prepermuted matrix, in natural order.
-    TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false);
+    // as CHOLMOD factors a prepermuted matrix, in natural order. Where factoring costs
+    // supernodal_flops or more (tetrahedral bodies, whose separators are surfaces; 2D bodies
+    // from about 200k unknowns), a refactorable factor is instead a supernodal LU of the same
+    // prepermuted matrix with diagonal pivots (Eigen's SparseLU, MPL-2; CHOLMOD's supernodal
+    // module is GPL): the same order and fill, its dense blocks in BLAS-3 kernels. Measured
+    // (benchmarks/results/factor_kernels.md): from 3e9 flops it factors 1.7-3.9x faster and
+    // solves as fast; at 2.5e8-3.2e8 it factors 1-1.8x faster but solves up to 2.6x slower,
+    // and a substep solves many times per factorization. Its solve() and refactor() allocate.
+    // kernel: of a refactorable factor, by the rule above (automatic) or forced (tests,
+    // benchmarks).
+    enum class Kernel { automatic, simplicial, supernodal_lu };
+    TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false,
+                     Kernel kernel = Kernel::automatic);
     ~TrailingCholesky();
     TrailingCholesky(const TrailingCholesky&) = delete;
     TrailingCholesky& operator=(const TrailingCholesky&) = delete;
@@ -35,25 +46,29 @@ public:
     const Eigen::MatrixXd& trailing_block() const { return trailing_block_; }
     // Nonzeros of L (memory of the factor, and what a solve costs).
     double factor_nonzeros() const;
+    // The analysis's flops of one factorization, and whether the factor is the supernodal LU.
+    double factor_flops() const { return factor_flops_; }
+    bool supernodal() const { return lu_ != nullptr; }
+    static constexpr double supernodal_flops = 1e9;
     // Factors K2 in place of K, keeping the ordering and symbolic analysis: K2's nonzeros must
     // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
     // the diagonal). Only for a refactorable factor.
     void refactor(const SparseMatrix& K2);
 
     // y = L^-1 P b; the returned view is valid until the next forward() and may be
-    // modified in place before backward().
+    // modified in place before backward(). Not for the supernodal LU (throws).
     Eigen::Map<Eigen::VectorXd> forward(const Eigen::VectorXd& b);
     // x = P^T L^-T y, with y the (possibly modified) result of the last forward().
     void backward(Eigen::VectorXd& x);
     // x = K^-1 b: one forward and one backward solve (the floor of a substep).
-    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-        forward(b);
-        backward(x);
-    }
+    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
 private:
     struct Cholmod;
+    struct Lu;
     std::unique_ptr<Cholmod> c_;
+    std::unique_ptr<Lu> lu_;
+    double factor_flops_ = 0;
     Eigen::Index n_ = 0, m_ = 0;
     std::vector<int> perm_, inverse_perm_;  // factor position -> unknown, and back
     // Without trailing unknowns: triu(P K P^T), factored in natural order, and for each of its

@@ -4,6 +4,9 @@
 // same body (K in its fill-reducing order, the floor of a substep), the solve's counts and the
 // peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse) [SUBSTEPS] [F]
+//                         [DIMENSION [TOP [GAP]]]
+// DIMENSION 3 takes a tetrahedral mesh (F must be 0: its friction is not built); TOP is the
+// clamp's displacement (-5e-6 m), GAP the initial gap (0; a large one lifts the body).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,7 +34,9 @@ int main(int argc, char** argv) {
     p.damping_stiffness = 4e-6;
     p.internal_step = 1e-6;
     p.static_initial_state = true;
-    const double top = -5e-6, velocity = 20, step = 1e-5;
+    if (argc > 6) p.dimension = std::atoi(argv[6]);
+    const double top = argc > 7 ? std::atof(argv[7]) : -5e-6, velocity = 20, step = 1e-5;
+    if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
     const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0 ? Stepper::ContactPath::sparse

@@ -144,11 +144,15 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
         reject("lambda", "such that lambda + 2 mu / 3 > 0 for a 3D body (a positive bulk modulus)", p.lambda);
     // Not built yet (issue 55): the isotropic friction of a 3D body, with its two-dimensional
     // slip, and the reduced 3D body. Refused rather than run as if x were the only direction.
+    // The reduced body's contact edge holds the y (and x) dofs; variant 2 leaves the contact
+    // nodes' z dofs massless too, and they are not edge dofs yet (measured: all modes then
+    // miss the full body by 1 %).
+    if (mesh.dim == 3 && p.modes != 0 && p.mass_matrix == MassVariant::redistributed_both)
+        reject("modes", "0 on a 3D body with mass_matrix = redistributed_both for now (its contact "
+               "nodes' massless z dofs are not in the reduced body's edge yet)", p.modes);
     if (mesh.dim == 3 && p.friction_coefficient != 0)
         reject("friction_coefficient", "0 on a 3D body for now (isotropic friction in the "
                "foundation's plane is not built yet)", p.friction_coefficient);
-    if (mesh.dim == 3 && p.modes != 0)
-        reject("modes", "0 on a 3D body for now (the reduced 3D body is not built yet)", p.modes);
 }
 
 void check_reduced_edge(const SceneParameters& p) {

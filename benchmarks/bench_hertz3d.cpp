@@ -36,15 +36,23 @@ int main(int argc, char** argv) {
         const Mesh& mesh = sim.body().discretization().mesh;
         const EdgeSnapshot& edge = sim.edge();
         const Observables& o = sim.observables();
-        std::string summary;  // the body's log line, as a JSON string
-        for (char c : sim.body().summary()) {
-            if (c == '"' || c == '\\') summary += '\\';
-            summary += c == '\n' ? ' ' : c;
-        }
+        const auto json_string = [](const std::string& text) {
+            std::string out = "\"";
+            for (char c : text) {
+                if (c == '"' || c == '\\') out += '\\';
+                out += c == '\n' ? ' ' : c;
+            }
+            return out + "\"";
+        };
+        const std::string summary = json_string(sim.body().summary());
+        std::string notes = "[";  // what the discretization did that the log says (M_r's choice)
+        for (const std::string& note : sim.body().discretization().mesh_notes)
+            notes += (notes.size() > 1 ? ", " : "") + json_string(note);
+        notes += "]";
         std::printf("{\"nodes\": %d, \"contact_nodes\": %zu, \"start_seconds\": %.6g, "
-                    "\"peak_mb\": %.1f, \"load\": %.17g, \"top_reaction_y\": %.17g, \"contact_path\": \"%s\"",
+                    "\"peak_mb\": %.1f, \"load\": %.17g, \"top_reaction_y\": %.17g, \"contact_path\": %s, \"notes\": %s",
                     mesh.num_nodes(), mesh.contact_nodes.size(), start, peak_rss_mb(), o.normal_force,
-                    o.top_reaction_y, summary.c_str());
+                    o.top_reaction_y, summary.c_str(), notes.c_str());
         const char* names[] = {"x", "z", "height", "pressure", "share"};
         for (int k = 0; k < 5; ++k) {
             std::printf(", \"%s\": [", names[k]);

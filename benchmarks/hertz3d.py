@@ -81,6 +81,8 @@ def run_level(program, contact_size, folder):
             "sector_radii": radii, "roundness": (max(radii) - min(radii)) / a_h,
             "sector_errors": [s / a_h - 1 for s in radii],
             "start_seconds": d["start_seconds"], "peak_mb": d["peak_mb"], "contact_path": d["contact_path"],
+            "mass_redistribution": ("least relative change" if any("least relative change" in n for n in d["notes"])
+                                    else "least change in the Frobenius norm"), "notes": d["notes"],
             "r": r.tolist(), "x": x.tolist(), "z": z.tolist(), "pressure": p.tolist()}
 
 
@@ -113,14 +115,14 @@ def report(r):
              f"Hertz's from the measured P; the radius fitted in each of {SECTORS} sectors of 45 degrees "
              "(roundness: their spread over Hertz's a).", "",
              "| element size at the contact [mm] | a / h | nodes | active nodes | P [N] | a [mm] (Hertz) "
-             "| p0 [MPa] (Hertz) | a error | p0 error | sector radii: spread / a | static start [s] | peak memory [MB] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| p0 [MPa] (Hertz) | a error | p0 error | sector radii: spread / a | static start [s] | peak memory [MB] | M_r |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for x in r["levels"]:
         lines.append(f"| {1e3 * x['contact_size']:.3g} | {x['a_over_h']:.1f} | {x['nodes']} | {x['active_nodes']} | "
                      f"{x['P']:.1f} | {1e3 * x['a_fit']:.4f} ({1e3 * x['a_hertz']:.4f}) | "
                      f"{x['p0_fit'] / 1e6:.3f} ({x['p0_hertz'] / 1e6:.3f}) | {100 * x['a_error']:+.2f} % | "
                      f"{100 * x['p0_error']:+.2f} % | {100 * x['roundness']:.2f} % | {x['start_seconds']:.1f} | "
-                     f"{x['peak_mb']:.0f} |")
+                     f"{x['peak_mb']:.0f} | {x['mass_redistribution']} |")
     f = r["finest"]
     lines += ["", f"Finest mesh: a {100 * f['a_error']:+.2f} %, p0 {100 * f['p0_error']:+.2f} %, "
                   f"every sector's radius within {100 * f['max_sector_error']:.2f} % of Hertz's a."]

@@ -257,10 +257,141 @@ TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndA3DBodyRefusesWhatIsN
     EXPECT_NE(thrown([&] { discretize(p); }).find("it holds tetrahedra, a 3D body"), std::string::npos);
     p.dimension = 3;
     p.friction_coefficient = 0.3;
-    EXPECT_NE(thrown([&] { discretize(p); }).find("friction_coefficient must be 0 on a 3D body"), std::string::npos);
+    p.stribeck_velocity = 1;
+    p.static_friction_ratio = 1.5;
+    EXPECT_NE(thrown([&] { discretize(p); }).find("stribeck_velocity must be 0 on a 3D body"), std::string::npos);
+    p.stribeck_velocity = 0;
+    p.modes = 10;
+    EXPECT_NE(thrown([&] { discretize(p); }).find("friction_coefficient must be 0 on a reduced 3D body"), std::string::npos);
     p.friction_coefficient = 0;
     Simulation sim(p, -1e-5);
     EXPECT_NE(thrown([&] { sim.set_friction_coefficient(0.2); }).find("friction_coefficient"), std::string::npos);
+}
+
+// Isotropic friction (Remark 4.4): a box pressed on a foundation sliding in the direction
+// `heading` (radians from x towards z) at 20 m/s, the box itself turned about y by `turn`.
+struct Sliding {
+    double normal = 0, friction_x = 0, friction_z = 0, energy = 0, dissipation = 0, balance = 0;
+    int slipping = 0, sticking = 0;
+    double worst_cone = 0, worst_direction = 0;  // |lambda_T| / F lambda_N - 1 at slipping nodes, etc.
+};
+
+Sliding slide(MassVariant variant, double heading, double turn, double F, int substeps,
+              double static_ratio = 1, double damping = 0, double speed = 20, double heading_rate = 0) {
+    const double dt = 2e-6;
+    Box b;
+    b.angle = turn;
+    SceneParameters p = box_scene(b, "box_sliding.msh", variant);
+    p.friction_coefficient = F;
+    p.static_friction_ratio = static_ratio;
+    p.damping_stiffness = damping;
+    Stepper body(p);
+    const Discretization& d = body.discretization();
+    const Mesh& mesh = d.mesh;
+    const auto energy = [&](const State& state) {
+        const auto [kinetic, strain] = body.kinetic_and_strain_energy(state);
+        return kinetic + strain;
+    };
+    State s = body.initial_state(-2e-5);
+    const double E0 = energy(s);
+    Works works;
+    Sliding out;
+    SubstepLoad load;
+    load.top_start = load.top_end = -2e-5;
+    load.foundation_velocity = speed * std::cos(heading);
+    load.foundation_velocity_z = speed * std::sin(heading);
+    const int nc = static_cast<int>(mesh.contact_nodes.size());
+    double scale = E0;
+    for (int k = 0; k < substeps; ++k) {
+        const State before = s;
+        const double angle = heading + heading_rate * k * dt;  // the foundation's path turns
+        load.foundation_velocity = speed * std::cos(angle);
+        load.foundation_velocity_z = speed * std::sin(angle);
+        const SubstepReport r = body.substep(s, dt, load);
+        works += r.work;
+        scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction), std::abs(works.foundation)});
+        out.normal += r.normal_force;
+        out.friction_x += r.friction_force;
+        out.friction_z += r.friction_force_z;
+        // The law at every node: |lambda_T| <= F p, and a slipping node's friction is F p
+        // against its slip (the substep's mean slip rate relative to the foundation).
+        const auto& status = body.contact_solver().status();
+        for (int i = 0; i < nc; ++i) {
+            const double pressure = -s.lambda[i], tx = s.lambda[nc + i], tz = s.lambda[2 * nc + i];
+            const double size = std::hypot(tx, tz);
+            if (pressure <= 0) continue;
+            // A node that stuck in the substep before holds with the static coefficient.
+            const double Fi = F * (before.sticking[i] != 0 ? static_ratio : 1.0);
+            out.worst_cone = std::max(out.worst_cone, size / (Fi * pressure) - 1);
+            if (status[i] != NodeStatus::slip) {
+                ++out.sticking;
+                continue;
+            }
+            ++out.slipping;
+            const int node = mesh.contact_nodes[static_cast<size_t>(i)];
+            const double sx = s.u[mesh.dof(node, 0)] - before.u[mesh.dof(node, 0)] - load.foundation_velocity * dt;
+            const double sz = s.u[mesh.dof(node, 2)] - before.u[mesh.dof(node, 2)] - load.foundation_velocity_z * dt;
+            const double slip = std::hypot(sx, sz);
+            out.worst_cone = std::max(out.worst_cone, std::abs(size / (Fi * pressure) - 1));
+            // friction along -slip: cos of the angle between lambda_T and -slip is 1
+            out.worst_direction = std::max(out.worst_direction, 1 + (tx * sx + tz * sz) / (size * slip));
+        }
+    }
+    out.energy = energy(s);
+    out.dissipation = works.friction_dissipation;
+    out.balance = std::abs(out.energy - E0 - (works.clamp + works.normal_contact + works.friction - works.damping)) / scale;
+    return out;
+}
+
+// E - E(0) = the works with isotropic friction, in every variant, static friction and damping
+// included; friction dissipates; every node obeys the law on the disc.
+TEST(Body3D, IsotropicFrictionClosesTheEnergyBalanceAndObeysTheLawInEveryVariant) {
+    for (int v = 0; v < num_mass_variants; ++v) {
+        SCOPED_TRACE(v);
+        const Sliding r = slide(static_cast<MassVariant>(v), 0.6, 0, 0.5, 200, v == 1 ? 1.5 : 1.0,
+                                v == 2 ? 1e-7 : 0);
+        EXPECT_LT(r.balance, 1e-9);
+        EXPECT_GT(r.slipping, 100);
+        EXPECT_GT(r.dissipation, 0);
+        EXPECT_LT(r.worst_cone, 1e-8);
+        EXPECT_LT(r.worst_direction, 1e-8);
+    }
+}
+
+// Stick and slip under a foundation that creeps and turns its heading by a right angle over
+// the run: nodes stick, break loose with the static coefficient, slip in a turning direction;
+// the balance and the law hold throughout.
+TEST(Body3D, IsotropicFrictionSticksSlipsAndFollowsATurningFoundation) {
+    for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact}) {
+        SCOPED_TRACE(static_cast<int>(v));
+        const int substeps = 400;
+        const double rate = (M_PI / 2) / (substeps * 2e-6);
+        const Sliding r = slide(v, 0, 0, 0.4, substeps, 1.3, 0, 0.05, rate);
+        EXPECT_LT(r.balance, 1e-9);
+        EXPECT_GT(r.sticking, 100);
+        EXPECT_GT(r.slipping, 100);
+        EXPECT_GE(r.dissipation, 0);
+        EXPECT_LT(r.worst_cone, 1e-8);
+        EXPECT_LT(r.worst_direction, 1e-8);
+        EXPECT_GT(std::abs(r.friction_z), 0.1 * std::abs(r.friction_x));  // it turned
+    }
+}
+
+// Nothing depends on x as a direction: the box turned about y by 0.9 rad, the foundation's
+// velocity turned with it, gives the same normal force and energy, and the friction force
+// turned by the same angle.
+TEST(Body3D, IsotropicFrictionDoesNotDependOnTheDirection) {
+    const double heading = 0.3, turn = 0.9;
+    const Sliding a = slide(MassVariant::redistributed_normal, heading, 0, 0.5, 150);
+    // The turned box: x' = c x + s z, z' = -s x + c z; its foundation's heading turns by -turn.
+    const Sliding b = slide(MassVariant::redistributed_normal, heading - turn, turn, 0.5, 150);
+    EXPECT_GT(a.slipping, 100);
+    EXPECT_NEAR(b.normal, a.normal, 1e-9 * a.normal);
+    EXPECT_NEAR(b.energy, a.energy, 1e-9 * a.energy);
+    const double c = std::cos(turn), s = std::sin(turn);
+    const double size = std::hypot(a.friction_x, a.friction_z);
+    EXPECT_NEAR(b.friction_x, c * a.friction_x + s * a.friction_z, 1e-9 * size);
+    EXPECT_NEAR(b.friction_z, -s * a.friction_x + c * a.friction_z, 1e-9 * size);
 }
 
 // E - E(0) = the works, in every variant, on a box pressed down at its top and moving down.

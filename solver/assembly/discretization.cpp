@@ -142,17 +142,22 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
     }
     if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))
         reject("lambda", "such that lambda + 2 mu / 3 > 0 for a 3D body (a positive bulk modulus)", p.lambda);
-    // Not built yet (issue 55): the isotropic friction of a 3D body, with its two-dimensional
-    // slip, and the reduced 3D body. Refused rather than run as if x were the only direction.
+    // Not built yet (issue 55): the slip-rate law and the reduced body of a 3D body with
+    // friction (their contact solves have one tangential direction). Refused rather than run
+    // as if x were the only direction.
     // The reduced body's contact edge holds the y (and x) dofs; variant 2 leaves the contact
     // nodes' z dofs massless too, and they are not edge dofs yet (measured: all modes then
     // miss the full body by 1 %).
     if (mesh.dim == 3 && p.modes != 0 && p.mass_matrix == MassVariant::redistributed_both)
         reject("modes", "0 on a 3D body with mass_matrix = redistributed_both for now (its contact "
                "nodes' massless z dofs are not in the reduced body's edge yet)", p.modes);
-    if (mesh.dim == 3 && p.friction_coefficient != 0)
-        reject("friction_coefficient", "0 on a 3D body for now (isotropic friction in the "
-               "foundation's plane is not built yet)", p.friction_coefficient);
+    if (mesh.dim == 3 && p.friction_coefficient != 0 && p.modes != 0)
+        reject("friction_coefficient", "0 on a reduced 3D body (modes > 0) for now (its isotropic "
+               "friction is not built yet)", p.friction_coefficient);
+    if (mesh.dim == 3 && rate_law(p).active())
+        reject(p.stribeck_velocity > 0 ? "stribeck_velocity" : "viscous_friction",
+               "0 on a 3D body for now (the slip-rate law with isotropic friction is not built yet)",
+               p.stribeck_velocity > 0 ? p.stribeck_velocity : p.viscous_friction);
 }
 
 void check_reduced_edge(const SceneParameters& p) {
@@ -232,6 +237,7 @@ Discretization discretize(const SceneParameters& p) {
     for (int node : d.mesh.contact_nodes) {
         d.contact_x.push_back(d.free_index[d.mesh.dof(node, 0)]);
         d.contact_y.push_back(d.free_index[d.mesh.dof(node, Mesh::normal)]);
+        if (d.mesh.dim == 3) d.contact_z.push_back(d.free_index[d.mesh.dof(node, 2)]);
     }
     return d;
 }
@@ -256,6 +262,7 @@ void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorX
 std::vector<int> Discretization::contact_unknowns() const {
     std::vector<int> dofs(contact_y);
     dofs.insert(dofs.end(), contact_x.begin(), contact_x.end());
+    dofs.insert(dofs.end(), contact_z.begin(), contact_z.end());
     return dofs;
 }
 

@@ -182,9 +182,11 @@ struct Discretization {
     SparseMatrix C;
     RowMajorSparseMatrix C_free_rows;
     SparseMatrix C_free_clamped, C_free;
-    // Contact node c: free positions of its x and y (normal) dofs.
-    std::vector<int> contact_x, contact_y;
-    // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T).
+    // Contact node c: free positions of its x, y (normal) and, in 3D, z dofs (contact_z is
+    // empty in 2D).
+    std::vector<int> contact_x, contact_y, contact_z;
+    // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T),
+    // then in 3D z (the second tangential direction).
     std::vector<int> contact_unknowns() const;
     // A top node's y dof: all of them move together (the clamp's value, or the plate's w).
     int top_y_dof() const { return mesh.dof(mesh.top_nodes.front(), Mesh::normal); }

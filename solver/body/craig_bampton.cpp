@@ -234,7 +234,7 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     bw_ = Bhat_ * w_ + Blift_ * w_t;
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
-        problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
+        problem_, params_, disc_.contact_at_end_of_step, dt, load, s.sticking,
         [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();

@@ -456,7 +456,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
 
     problem_.a = bw_.head(problem_.a.size());
     const bool touching = set_contact_conditions(
-        problem_, params_, disc_.contact_at_end_of_step, dt, load.foundation_velocity, s.sticking,
+        problem_, params_, disc_.contact_at_end_of_step, dt, load, s.sticking,
         [&](int i) { return params_.initial_gap + disc_.mesh.contact_heights[i] - contact_u_[i]; });
     SubstepReport report;
     const Eigen::Index unknowns = problem_.W.rows();

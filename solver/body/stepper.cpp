@@ -89,9 +89,10 @@ void Stepper::start_run() {
     rhs_.resize(nf);
     w_free_.resize(nf);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
-    problem_.a.resize(2 * nc);
+    problem_.tangents = disc_.mesh.dim - 1;
+    problem_.a.resize(disc_.mesh.dim * nc);
     problem_.gap_limit.resize(nc);
-    problem_.slip_origin.resize(nc);
+    problem_.slip_origin.resize(problem_.tangents * nc);
 }
 
 void Stepper::restart(const SceneParameters& params) {
@@ -132,7 +133,7 @@ bool Stepper::set_clamp(State& s, double top, double rate) const {
 bool Stepper::fits(const State& s) const {
     const Eigen::Index dofs = disc_.mesh.num_dofs(), nc = num_contact_nodes();
     return s.u.size() == dofs && s.v.size() == dofs &&
-           (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
+           (s.lambda.size() == nc || s.lambda.size() == disc_.mesh.dim * nc) && s.sticking.size() == nc;
 }
 
 State Stepper::initial_state(double top_displacement) const {
@@ -151,12 +152,18 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
         s.v[dof] = mesh.component(dof) == 0 ? p.initial_velocity_x
                    : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : 0.0;
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
-    s.lambda.setZero(p.friction_coefficient > 0 ? 2 * nc : nc);
+    s.lambda.setZero(p.friction_coefficient > 0 ? mesh.dim * nc : nc);  // N, then x (and z)
     s.sticking.setZero(nc);
     return s;
 }
 
 void Stepper::set_friction_coefficient(double friction) {
+    // A 3D body with friction takes the condensed solve, without the cost model's: a factor
+    // made for the other is dropped.
+    if (disc_.mesh.dim == 3 && (friction > 0) != (params_.friction_coefficient > 0)) {
+        for (auto& f : cache_) f.reset();
+        spare_.clear();
+    }
     params_.friction_coefficient = friction;
     problem_factor_ = 0;  // the problem's size may change: rebuild W on next use
 }
@@ -283,7 +290,9 @@ long Stepper::sparse_refactorizations() const {
 
 bool Stepper::wants_sparse() const {
     if (contact_path_ != ContactPath::automatic) return contact_path_ == ContactPath::sparse;
-    return !rate_law(params_).active() &&
+    // A 3D body's isotropic friction is solved on W (its slip direction turns): condensed.
+    const bool isotropic_friction = disc_.mesh.dim == 3 && params_.friction_coefficient > 0;
+    return !rate_law(params_).active() && !isotropic_friction &&
            sparse_contact_pays(num_contact_nodes(), disc_.expand.cols(), params_.friction_coefficient);
 }
 
@@ -306,8 +315,9 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     }
     auto f = std::make_unique<Factor>();
     f->dt = dt;
-    const int nc = num_contact_nodes(), m = 2 * nc;
-    const std::vector<int> contact_dofs = disc_.contact_unknowns();
+    const int nc = num_contact_nodes();
+    std::vector<int> contact_dofs = disc_.contact_unknowns();
+    const int m = static_cast<int>(contact_dofs.size());
     SparseMatrix K = (4.0 / (dt * dt)) * disc_.M_free + disc_.A_free;
     f->K_free_clamped = (4.0 / (dt * dt)) * disc_.M_free_clamped + disc_.A_free_clamped;
     if (params_.damped()) {  // undamped, K is computed exactly as without the term
@@ -316,7 +326,8 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     }
     ++factorizations_;
     f->id = ++factor_ids_;
-    if (sparse) {
+    if (sparse) {  // y and x: the sparse solve's friction is along x (2D) or absent (3D)
+        contact_dofs.resize(static_cast<size_t>(2 * nc));
         f->held = std::make_unique<HeldOperator>(K, contact_dofs);
         return f;
     }
@@ -394,7 +405,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     bool touching = false;
     if (f.held) {  // the sparse system (sparse_contact.hpp): w_free_ and lambda at once
         problem_.a.setZero();  // unknown here: every substep solves, and says who touched
-        set_contact_conditions(problem_, params_, implicit, dt, load.foundation_velocity,
+        set_contact_conditions(problem_, params_, implicit, dt, load,
                                s.sticking, gap_old);
         const ContactSolveInfo info = sparse_solver_.solve(*f.held, problem_, options_, rhs_, s.sticking,
                                                            s.lambda, w_free_, f.id != current_factor_);
@@ -410,8 +421,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const auto G = f.G.leftCols(unknowns);
         auto y_contact = y.tail(f.G.rows());
         problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
-        touching = set_contact_conditions(problem_, params_, implicit, dt,
-                                          load.foundation_velocity, s.sticking, gap_old);
+        touching = set_contact_conditions(problem_, params_, implicit, dt, load, s.sticking, gap_old);
         if (touching) {
             const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
             report.contact_iterations = info.iterations;
@@ -468,6 +478,17 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
         [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
+    if (friction && problem_.tangents == 2) {  // a 3D body: the z share of the friction's works
+        const double foundation_step = load.foundation_velocity_z * dt;
+        for (int i = 0; i < nc; ++i) {
+            const double lz = s.lambda[2 * nc + i];
+            const double dz = 2 * w_[d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 2)];
+            report.friction_force_z += lz;
+            report.work.friction += lz * dz;
+            report.work.foundation += lz * foundation_step;
+            report.work.friction_dissipation += lz * (foundation_step - dz);
+        }
+    }
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.

@@ -33,6 +33,7 @@ struct State {
 struct SubstepLoad {
     double top_start = 0, top_end = 0, top_rate = 0;
     double foundation_velocity = 0;
+    double foundation_velocity_z = 0;  // a 3D body's foundation slides in x and z
     double top_force = 0;  // force control: N/m pressing the plate down, over the substep
 };
 
@@ -67,7 +68,8 @@ struct Works {
 // What one substep contributes to the observables (forces on the body, N/m).
 struct SubstepReport {
     double normal_force = 0;       // -sum lambda_N
-    double friction_force = 0;     // sum lambda_T
+    double friction_force = 0;     // sum lambda_T (x)
+    double friction_force_z = 0;   // sum lambda_T (z; a 3D body)
     double corner_lambda_N = 0, corner_lambda_T = 0;
     double top_reaction_x = 0, top_reaction_y = 0;
     Works work;
@@ -104,7 +106,7 @@ struct SubstepTimings {
 // memory's coefficients. Returns whether any node can touch.
 template <class GapOld>
 bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, bool implicit,
-                            double dt, double foundation_velocity, const Eigen::VectorXd& sticking,
+                            double dt, const SubstepLoad& load, const Eigen::VectorXd& sticking,
                             GapOld&& gap_old) {
     const int nc = static_cast<int>(problem.gap_limit.size());
     const bool friction = problem.has_friction();
@@ -113,7 +115,8 @@ bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, b
         const double g = gap_old(i);
         problem.gap_limit[i] = implicit ? 0.5 * g : g;
         touching = touching || problem.a[i] > problem.gap_limit[i];
-        if (friction) problem.slip_origin[i] = 0.5 * dt * foundation_velocity;
+        if (friction) problem.slip_origin[i] = 0.5 * dt * load.foundation_velocity;
+        if (friction && problem.tangents == 2) problem.slip_origin[nc + i] = 0.5 * dt * load.foundation_velocity_z;
     }
     // The slip rate the law sees is the one the friction works on, in every variant: the
     // substep's mean (u_T^{k+1} - u_T^k) / dt - V = slip / (dt/2). Then lambda_T opposes the
@@ -154,12 +157,12 @@ void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::Vec
                     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
                     NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& dux) {
     const Eigen::Index nc = sticking.size();
-    const bool friction = lambda.size() == 2 * nc;
+    const bool friction = lambda.size() > nc;
     snapshot.slip_velocity.resize(nc);
     snapshot.state.resize(nc);
     snapshot.lambda_N = lambda.head(nc);
     snapshot.lambda_T.resize(nc);
-    if (friction) snapshot.lambda_T = lambda.tail(nc);
+    if (friction) snapshot.lambda_T = lambda.segment(nc, nc);  // x (a 3D body's z follows)
     else snapshot.lambda_T.setZero();
     const double foundation_step = foundation_velocity * dt;
     for (int i = 0; i < static_cast<int>(nc); ++i) {

@@ -16,10 +16,10 @@ std::uint64_t ContactProblem::next_revision() {
 }
 
 void ContactProblem::set_operator(const Eigen::MatrixXd& delassus, double friction_coefficient) {
-    const Eigen::Index n = delassus.rows() / 2;
+    const Eigen::Index n = delassus.rows() / (1 + tangents);
     const bool friction = friction_coefficient > 0;
     W = friction ? delassus : Eigen::MatrixXd(delassus.topLeftCorner(n, n));
-    a.resize(friction ? 2 * n : n);
+    a.resize(friction ? (1 + tangents) * n : n);
     this->friction.setConstant(friction ? n : 0, friction_coefficient);
     revision = next_revision();
 }
@@ -27,7 +27,7 @@ void ContactProblem::set_operator(const Eigen::MatrixXd& delassus, double fricti
 void ContactProblem::set_conditions(Eigen::Index n, double friction_coefficient) {
     const bool with_friction = friction_coefficient > 0;
     W.resize(0, 0);
-    a.setZero(with_friction ? 2 * n : n);
+    a.setZero(with_friction ? (1 + tangents) * n : n);
     friction.setConstant(with_friction ? n : 0, friction_coefficient);
     revision = next_revision();
 }
@@ -401,6 +401,7 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         r_ = diagonal_.cwiseInverse();
         diagonal_revision_ = p.revision;
     }
+    if (p.has_friction() && p.tangents == 2) return solve_disc(p, options, lambda);
     projects_slip_ = options.project_slip && p.has_friction() && !p.rate_dependent();
     compact_products_ = projects_slip_ && p.revision != 0;
     start_ = lambda;

@@ -59,10 +59,14 @@ signed char alart_curnier_node(double lN, double lT, double uN, double uT, doubl
 }
 
 struct ContactProblem {
-    Eigen::MatrixXd W;           // 2n x 2n (or n x n without friction)
+    // Tangential components per node: 1 (a 2D body, slip along x) or 2 (a 3D body, x and z:
+    // isotropic friction |lambda_T| <= F lambda_N). With friction the unknowns are
+    // (N[0..n), T_x[0..n), T_z[0..n)); slip_origin holds the x origins, then the z ones.
+    int tangents = 1;
+    Eigen::MatrixXd W;           // (1 + tangents) n square (or n x n without friction)
     Eigen::VectorXd a;           // u_hat at lambda = 0
     Eigen::VectorXd gap_limit;   // n: u_N must not exceed it
-    Eigen::VectorXd slip_origin; // n: slip is u_T - slip_origin (unused without friction)
+    Eigen::VectorXd slip_origin; // tangents n: slip is u_T - slip_origin (unused without friction)
     Eigen::VectorXd friction;    // n: F_i, the node's friction coefficient (with friction)
     // The slip-rate dependence of F_i (off while stribeck_velocity and viscous are 0).
     struct RateLaw {
@@ -91,15 +95,15 @@ struct ContactProblem {
     // reuse. next_revision() gives process-wide unique values.
     std::uint64_t revision = 0;
     static std::uint64_t next_revision();
-    // W from a body's Delassus operator on the normal and tangential unknowns (2n square): all
-    // of it with friction, its normal block without (friction_coefficient 0); a and friction
-    // sized to match, and a new revision.
+    // W from a body's Delassus operator on the normal and tangential unknowns ((1 + tangents)
+    // n square): all of it with friction, its normal block without (friction_coefficient 0);
+    // a and friction sized to match, and a new revision.
     void set_operator(const Eigen::MatrixXd& delassus, double friction_coefficient);
     // The conditions of n nodes without W (the sparse contact solve's): a (zero) and friction
     // sized as set_operator sizes them, W empty.
     void set_conditions(Eigen::Index n, double friction_coefficient);
     // a holds the N and T unknowns with friction, the N ones without.
-    bool has_friction() const { return a.size() == 2 * gap_limit.size(); }
+    bool has_friction() const { return a.size() > gap_limit.size(); }
 };
 
 struct ContactSolverOptions {
@@ -164,6 +168,13 @@ public:
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda, bool stop_on_stagnation);
+    // Isotropic friction (tangents == 2; contact_solver_disc.cpp): semi-smooth Newton on the
+    // full generalized Jacobian, no Gauss-Seidel fallback (a failure halves the substep).
+    ContactSolveInfo solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
+                                Eigen::VectorXd& lambda);
+    double residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
+    void disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda);
+    Eigen::VectorXd disc_rT_, disc_direction_, disc_ratio_;
     // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
     // the tolerance within options.max_sweeps.
     bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,

@@ -107,12 +107,13 @@ void FieldWriter::write(const State& s) {
     }
     // Multipliers of the last substep: the force on the body is (lambda_T, -lambda_N).
     const Eigen::Index nc = static_cast<Eigen::Index>(mesh_.contact_nodes.size());
-    const bool friction = s.lambda.size() == 2 * nc;
+    const bool friction = s.lambda.size() > nc;
     if (s.lambda.size() >= nc) {
         for (Eigen::Index i = 0; i < nc; ++i) {
             const size_t n = static_cast<size_t>(mesh_.contact_nodes[static_cast<size_t>(i)]);
             const double share = mesh_.edge_share(static_cast<size_t>(i));
             force[3 * n] = friction ? s.lambda[nc + i] : 0.0;
+            if (friction && s.lambda.size() == 3 * nc) force[3 * n + 2] = s.lambda[2 * nc + i];
             force[3 * n + 1] = -s.lambda[i];
             pressure[n] = -s.lambda[i] / share;
         }

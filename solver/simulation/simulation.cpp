@@ -110,7 +110,7 @@ static State quasi_static_path(Body& path, Body& settle, double top, double star
     s.u = 0.5 * (before + s.u);  // u^{k+1/2}
     s.v.setZero();
     const Eigen::Index nc = s.sticking.size();
-    const bool friction = s.lambda.size() == 2 * nc;
+    const bool friction = s.lambda.size() > nc;
     for (Eigen::Index i = 0; i < nc; ++i) s.sticking[i] = friction && s.lambda[i] < 0 ? 1.0 : 0.0;
     return s;
 }
@@ -294,7 +294,7 @@ void Simulation::initial_reactions() {
         double normal = 0, friction = 0;
         if (multipliers) {
             normal = -state_.lambda[k];
-            if (state_.lambda.size() == 2 * nc) friction = state_.lambda[nc + k];
+            if (state_.lambda.size() > nc) friction = state_.lambda[nc + k];
         } else if (touching) {
             normal = std::max(0.0, product[d.mesh.dof(node, Mesh::normal)]);
         }
@@ -519,6 +519,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     load.top_end = in.top_displacement + in.top_velocity * s1;
     load.top_rate = in.top_velocity;
     load.foundation_velocity = in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
+    load.foundation_velocity_z = in.foundation_velocity_z;
     load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
     SubstepReport r;

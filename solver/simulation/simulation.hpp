@@ -80,6 +80,7 @@ struct EdgeSnapshot {
 // (zero derivatives hold the inputs constant, as FMI 2.0 does without input derivatives).
 struct StepInputs {
     double foundation_velocity = 0, top_displacement = 0;
+    double foundation_velocity_z = 0;  // a 3D body's foundation: held over the step
     double foundation_acceleration = 0, top_velocity = 0;
     double top_force = 0, top_force_rate = 0;  // force control
 };

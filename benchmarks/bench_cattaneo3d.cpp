@@ -2,7 +2,9 @@
 // friction), then the foundation creeping along x. Prints one JSON object: per communication
 // step, the time, the normal and friction forces, and the contact nodes' states (0 open,
 // 1 stick, 2 slip); once, the contact nodes' x, z and shares.
-//   bench_cattaneo3d MESH TOP F SPEED STOP INTERVAL SUBSTEP BETA LAMBDA MU
+//   bench_cattaneo3d MESH TOP F SPEED STOP INTERVAL SUBSTEP BETA LAMBDA MU [FRICTIONLESS_LOAD]
+// FRICTIONLESS_LOAD 1: the static start at F = 0, then F before the first step (as the 2D
+// benchmark's frictionless normal load).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -32,9 +34,13 @@ int main(int argc, char** argv) {
     // the 2D benchmark takes them (benchmarks/cattaneo_mindlin.py).
     p.mass_matrix = MassVariant::redistributed_implicit_contact;
     p.static_initial_state = true;
+    const bool frictionless_load = argc > 11 && std::atoi(argv[11]) != 0;
+    const double F = p.friction_coefficient;
+    if (frictionless_load) p.friction_coefficient = 0;
     try {
         const auto t0 = Clock::now();
         Simulation sim(p, top);
+        if (frictionless_load) sim.set_friction_coefficient(F);
         const Mesh& mesh = sim.body().discretization().mesh;
         const size_t nc = mesh.contact_nodes.size();
         std::printf("{\"contact_nodes\": %zu, \"start_seconds\": %.4g", nc, seconds_since(t0));

@@ -33,8 +33,8 @@ struct State {
 struct SubstepLoad {
     double top_start = 0, top_end = 0, top_rate = 0;
     double foundation_velocity = 0;
-    double foundation_velocity_z = 0;  // a 3D body's foundation slides in x and z
     double top_force = 0;  // force control: N/m pressing the plate down, over the substep
+    double foundation_velocity_z = 0;  // a 3D body's foundation slides in x and z
 };
 
 // Exact discrete work of each force on the body (J/m), so that over any run

@@ -20,7 +20,7 @@ node states are those of u^{k+1}.
 
 Writes benchmarks/results/cattaneo3d.json, .md and .png.
 
-    .venv/bin/python benchmarks/cattaneo3d.py [--build build]
+    .venv/bin/python benchmarks/cattaneo3d.py [--build build] [--analyze-only]
 """
 import argparse
 import json
@@ -75,10 +75,31 @@ def run(program, mesh, name, nu, size, frictionless_load):
             "max_abs_difference": float(np.max(np.abs(difference))) if difference else math.nan}
 
 
+def hertz_radius(load, nu):
+    """Hertz's contact radius against a rigid flat for the load, E* = 2 MU (1 + nu) / (1 - nu^2)."""
+    e_star = 2 * MU * (1 + nu) / (1 - nu ** 2)
+    return (3 * load * RADIUS / (4 * e_star)) ** (1 / 3)
+
+
+def analyze(result):
+    """Each case's pressed radius against Hertz's for its load, at the first record (the
+    normal load alone): where P1 tetrahedra stiffen (near incompressibility) it falls short."""
+    for case in result["cases"].values():
+        first = case["records"][0]
+        case["a_hertz"] = hertz_radius(first["P"], case["nu"])
+        case["a_over_hertz"] = first["a"] / case["a_hertz"]
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--analyze-only", action="store_true", help="again from cattaneo3d.json")
     args = parser.parse_args()
+    if args.analyze_only:
+        result = json.loads((OUT / "cattaneo3d.json").read_text())
+        analyze(result)
+        write(result)
+        return
     program = pathlib.Path(args.build) / "bench_cattaneo3d"
     cases = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -91,6 +112,11 @@ def main():
             cases[name] = case
     result = {"radius": RADIUS, "top_displacement": TOP, "friction": FRICTION, "speed": SPEED,
               "substep": SUBSTEP, "beta": BETA, "cases": cases}
+    analyze(result)
+    write(result)
+
+
+def write(result):
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "cattaneo3d.json").write_text(json.dumps(result, indent=1) + "\n")
     (OUT / "cattaneo3d.md").write_text(report(result))
@@ -107,7 +133,8 @@ def report(r):
     for case in r["cases"].values():
         lines += [f"## nu = {case['nu']:.3g} (Dundurs' beta = {case['dundurs_beta']:.3g}), normal load "
                   f"{case['normal_load']}, h = {1e3 * case['contact_size']:.2g} mm", "",
-                  f"{case['nodes']} nodes, {case['contact_nodes']} contact nodes; static start {case['start_seconds']:.1f} s, "
+                  f"{case['nodes']} nodes, {case['contact_nodes']} contact nodes; under the normal load alone the "
+                  f"pressed radius is {case['a_over_hertz']:.3f} of Hertz's for its load; static start {case['start_seconds']:.1f} s, "
                   f"the run {case['run_seconds']:.0f} s. Over the {case['partial_records']} records with "
                   f"0.1 <= Q/(F P) <= 0.8, c/a minus the uncoupled c/a: mean {case['mean_difference']:+.3f}, "
                   f"largest {case['max_abs_difference']:.3f}.", "",

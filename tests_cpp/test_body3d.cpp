@@ -7,12 +7,15 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "discretization.hpp"
+#include "field_output.hpp"
 #include "mesh/gmsh.hpp"
 #include "simulation.hpp"
 #include "modal_basis.hpp"
@@ -532,6 +535,24 @@ TEST(Body3D, ReducedBodyWithEveryModeIsTheFullBody) {
             EXPECT_LT((back.u - s.u).cwiseAbs().maxCoeff() / s.u.cwiseAbs().maxCoeff(), 1e-10);
         }
     }
+}
+
+// Field output of a 3D body: the tetrahedra as VTK_TETRA cells, every node's point.
+TEST(Body3D, FieldOutputWritesTetrahedra) {
+    Box b;
+    SceneParameters p = box_scene(b, "box_field.msh", MassVariant::redistributed_normal);
+    Stepper body(p);
+    const Mesh& mesh = body.discretization().mesh;
+    const std::string folder = ::testing::TempDir() + "field3d";
+    FieldWriter writer(mesh, folder);
+    writer.write(body.initial_state(-2e-5));
+    std::ifstream in(folder + "/" + writer.file_name(0));
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_NE(text.str().find("NumberOfPoints=\"" + std::to_string(mesh.num_nodes()) + "\" NumberOfCells=\"" +
+                              std::to_string(mesh.num_cells()) + "\""),
+              std::string::npos);
+    EXPECT_EQ(mesh.num_cells(), 120u);
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 #include "assembly.hpp"
 
+#include "build_features.hpp"
 #include "text.hpp"
 
 #include <algorithm>
+#include <type_traits>
 #include <cmath>
 #include <string>
 
@@ -106,6 +108,18 @@ SparseMatrix stiffness(const Mesh& mesh, double lambda, double mu) {
     return m;
 }
 
+// f(std::integral_constant<int, D>) for the mesh's dimension D: the kernels are templates on
+// D, and a build without solid bodies (build_features.hpp) instantiates only D = 2.
+template <class F>
+auto by_dimension(const Mesh& mesh, F&& f) {
+    if constexpr (solid_bodies_built) {
+        if (mesh.dim == 3) return f(std::integral_constant<int, 3>{});
+    } else if (mesh.dim != 2) {
+        throw std::logic_error("this build assembles 2D bodies only (CONTACTBODY_SOLID_BODIES=0)");
+    }
+    return f(std::integral_constant<int, 2>{});
+}
+
 SparseMatrix from_triplets(int n, const Triplets& t) {
     SparseMatrix m(n, n);
     m.setFromTriplets(t.begin(), t.end());
@@ -156,7 +170,7 @@ Moments<D> moment_row(const Point& pi, const Point& pj) {
 }  // namespace
 
 SparseMatrix stiffness_matrix(const Mesh& mesh, double lambda, double mu) {
-    return mesh.dim == 2 ? stiffness<2>(mesh, lambda, mu) : stiffness<3>(mesh, lambda, mu);
+    return by_dimension(mesh, [&](auto D) { return stiffness<D()>(mesh, lambda, mu); });
 }
 
 StrainEnergy::StrainEnergy(const Mesh& mesh, double lambda, double mu)
@@ -175,9 +189,13 @@ StrainEnergy::StrainEnergy(const Mesh& mesh, double lambda, double mu)
             element.grad[1] = {(p[0].y - p[1].y) / (2 * area), (p[1].x - p[0].x) / (2 * area), 0};
             element.measure = area;
         } else {
-            const Simplex<3> s = simplex<3>(mesh, cell);
-            for (int a = 0; a < 3; ++a) element.grad[a] = {s.grad[a + 1][0], s.grad[a + 1][1], s.grad[a + 1][2]};
-            element.measure = s.measure;
+            by_dimension(mesh, [&](auto D) {
+                const auto s = simplex<D()>(mesh, cell);
+                for (int a = 0; a < D(); ++a)
+                    for (int j = 0; j < D(); ++j) element.grad[a][j] = s.grad[a + 1][j];
+                element.measure = s.measure;
+                return 0;
+            });
         }
         elements_.push_back(element);
     }
@@ -234,7 +252,7 @@ SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho) {
     t.reserve(mesh.num_cells() * static_cast<size_t>(per * per));
     for (size_t e = 0; e < mesh.num_cells(); ++e) {
         const int* cell = mesh.cell(e);
-        const double measure = mesh.dim == 2 ? simplex<2>(mesh, cell).measure : simplex<3>(mesh, cell).measure;
+        const double measure = by_dimension(mesh, [&](auto D) { return simplex<D()>(mesh, cell).measure; });
         for (int a = 0; a < per; ++a)
             for (int b = 0; b < per; ++b)
                 t.emplace_back(cell[a], cell[b], rho * measure / denominator * (a == b ? 2.0 : 1.0));
@@ -252,7 +270,7 @@ std::vector<double> moments_of(const Mesh& mesh, const SparseMatrix& m) {
 }
 
 std::vector<double> mass_moments(const Mesh& mesh, const SparseMatrix& m) {
-    return mesh.dim == 2 ? moments_of<2>(mesh, m) : moments_of<3>(mesh, m);
+    return by_dimension(mesh, [&](auto D) { return moments_of<D()>(mesh, m); });
 }
 
 namespace {
@@ -372,8 +390,7 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
 
 SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
                                 std::vector<std::string>& notes) {
-    return mesh.dim == 2 ? redistributed<2>(mesh, scalar_mass, notes)
-                         : redistributed<3>(mesh, scalar_mass, notes);
+    return by_dimension(mesh, [&](auto D) { return redistributed<D()>(mesh, scalar_mass, notes); });
 }
 
 SparseMatrix vector_mass_matrix(int dim, const SparseMatrix& tangential, const SparseMatrix& normal) {

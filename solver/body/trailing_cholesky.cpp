@@ -1,6 +1,10 @@
 #include "trailing_cholesky.hpp"
 
+#include "build_features.hpp"
+
+#if CONTACTBODY_SOLID_BODIES
 #include <Eigen/SparseLU>
+#endif
 
 #include <cholmod.h>
 
@@ -10,6 +14,7 @@
 
 namespace contactbody {
 
+#if CONTACTBODY_SOLID_BODIES
 // The supernodal LU of the prepermuted matrix (both triangles), and for each of its values
 // the position of K's lower-triangle value it is.
 struct TrailingCholesky::Lu {
@@ -18,6 +23,29 @@ struct TrailingCholesky::Lu {
     std::vector<int> value_map;
     Eigen::VectorXd rhs;
 
+    // entries: triu(P K P^T), each value the position of K's lower-triangle value it is.
+    void build(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index n, const double* lower_values) {
+        // Both triangles in natural order, each value mapped to K's lower one.
+        std::vector<Eigen::Triplet<double>> both;
+        both.reserve(2 * entries.size());
+        for (const auto& e : entries) {
+            both.push_back(e);
+            if (e.row() != e.col()) both.emplace_back(e.col(), e.row(), e.value());
+        }
+        full.resize(n, n);
+        full.setFromTriplets(both.begin(), both.end());
+        full.makeCompressed();
+        value_map.resize(static_cast<size_t>(full.nonZeros()));
+        for (Eigen::Index k = 0; k < full.nonZeros(); ++k)
+            value_map[static_cast<size_t>(k)] = static_cast<int>(full.valuePtr()[k]);
+        lu.setPivotThreshold(0.0);  // diagonal pivots: K is positive definite
+        lu.analyzePattern(full);
+        factorize(lower_values);
+        rhs.resize(n);
+    }
+    double nonzeros() const { return static_cast<double>(lu.nnzL()); }
+    void solve_in_place() { rhs = lu.solve(rhs); }
+
     void factorize(const double* lower_values) {
         for (size_t k = 0; k < value_map.size(); ++k) full.valuePtr()[k] = lower_values[value_map[k]];
         lu.factorize(full);
@@ -25,6 +53,18 @@ struct TrailingCholesky::Lu {
             throw std::runtime_error("the held stiffness is singular (supernodal LU: " + lu.lastErrorMessage() + ")");
     }
 };
+#else
+// Without solid bodies (build_features.hpp) there is no supernodal LU: its Eigen::SparseLU
+// reports through an ostringstream, which would link the C++ library's locale machinery.
+struct TrailingCholesky::Lu {
+    Eigen::VectorXd rhs;
+    [[noreturn]] static void missing() { throw std::logic_error("this build has no supernodal LU (CONTACTBODY_SOLID_BODIES=0)"); }
+    void build(const std::vector<Eigen::Triplet<double>>&, Eigen::Index, const double*) { missing(); }
+    void factorize(const double*) { missing(); }
+    double nonzeros() const { return 0; }
+    void solve_in_place() { missing(); }
+};
+#endif
 
 struct TrailingCholesky::Cholmod {
     cholmod_common common;
@@ -155,25 +195,11 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         c_->factor = cholmod_analyze(&upper, &c);
         c_->check("analysis");
         factor_flops_ = c.fl;
-        if (kernel == Kernel::automatic ? factor_flops_ >= supernodal_flops : kernel == Kernel::supernodal_lu) {
-            // Both triangles of P K P^T in natural order, each value mapped to K's lower one.
+        const bool lu = kernel == Kernel::automatic ? solid_bodies_built && factor_flops_ >= supernodal_flops
+                                                    : kernel == Kernel::supernodal_lu;
+        if (lu) {
             lu_ = std::make_unique<Lu>();
-            std::vector<Eigen::Triplet<double>> both;
-            both.reserve(2 * entries.size());
-            for (const auto& e : entries) {
-                both.push_back(e);
-                if (e.row() != e.col()) both.emplace_back(e.col(), e.row(), e.value());
-            }
-            lu_->full.resize(n_, n_);
-            lu_->full.setFromTriplets(both.begin(), both.end());
-            lu_->full.makeCompressed();
-            lu_->value_map.resize(static_cast<size_t>(lu_->full.nonZeros()));
-            for (Eigen::Index k = 0; k < lu_->full.nonZeros(); ++k)
-                lu_->value_map[static_cast<size_t>(k)] = static_cast<int>(lu_->full.valuePtr()[k]);
-            lu_->lu.setPivotThreshold(0.0);  // diagonal pivots: K is positive definite
-            lu_->lu.analyzePattern(lu_->full);
-            lu_->factorize(lower.valuePtr());
-            lu_->rhs.resize(n_);
+            lu_->build(entries, n_, lower.valuePtr());
             inverse_perm_.assign(n, 0);
             for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
             return;
@@ -253,7 +279,7 @@ void TrailingCholesky::refactor(const SparseMatrix& K2) {
 }
 
 double TrailingCholesky::factor_nonzeros() const {
-    if (lu_) return static_cast<double>(lu_->lu.nnzL());
+    if (lu_) return lu_->nonzeros();
     const cholmod_factor& L = *c_->factor;
     return static_cast<double>(L.is_super ? L.xsize : static_cast<size_t>(static_cast<const int*>(L.p)[L.n]));
 }
@@ -265,7 +291,7 @@ void TrailingCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
         return;
     }
     for (Eigen::Index k = 0; k < n_; ++k) lu_->rhs[k] = b[perm_[static_cast<size_t>(k)]];
-    lu_->rhs = lu_->lu.solve(lu_->rhs);
+    lu_->solve_in_place();
     x.resize(n_);
     for (Eigen::Index k = 0; k < n_; ++k) x[perm_[static_cast<size_t>(k)]] = lu_->rhs[k];
 }

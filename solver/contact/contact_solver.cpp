@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "build_features.hpp"
 #include "text.hpp"
 
 
@@ -401,7 +402,11 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         r_ = diagonal_.cwiseInverse();
         diagonal_revision_ = p.revision;
     }
-    if (p.has_friction() && p.tangents == 2) return solve_disc(p, options, lambda);
+    if constexpr (solid_bodies_built) {
+        if (p.has_friction() && p.tangents == 2) return solve_disc(p, options, lambda);
+    } else if (p.tangents != 1) {
+        throw std::logic_error("ContactSolver: this build has no isotropic friction (CONTACTBODY_SOLID_BODIES=0)");
+    }
     projects_slip_ = options.project_slip && p.has_friction() && !p.rate_dependent();
     compact_products_ = projects_slip_ && p.revision != 0;
     start_ = lambda;

@@ -1,0 +1,15 @@
+// What a build of the solver carries. Every build assembles 2D bodies; solid (3D) bodies, with
+// their tetrahedral kernels, their isotropic friction and the supernodal LU that factors them,
+// are left out of the 2D FMU's binaries (CMakeLists.txt: CONTACTBODY_SOLID_BODIES=0 where the
+// platform builds make them), whose model refuses a tetrahedral mesh anyway: they would take
+// ContactBody.fmu past issue 41's 5 MB (Eigen's SparseLU reports through an ostringstream,
+// which links the C++ library's locale machinery into each binary; docs/building.md).
+#pragma once
+
+#ifndef CONTACTBODY_SOLID_BODIES
+#define CONTACTBODY_SOLID_BODIES 1
+#endif
+
+namespace contactbody {
+inline constexpr bool solid_bodies_built = CONTACTBODY_SOLID_BODIES != 0;
+}  // namespace contactbody

@@ -38,7 +38,7 @@ DiscNode disc_node(const double l[3], const double u[3], double rN, double rT, d
     d.phi[0] = pressure - trial;
     const double bound = F * trial;
     const double z[2] = {l[1] - rT * (u[1] - origin[0]), l[2] - rT * (u[2] - origin[1])};
-    const double size = std::hypot(z[0], z[1]);
+    const double size = std::sqrt(z[0] * z[0] + z[1] * z[1]);  // not hypot: no libm in the FMUs
     if (size <= bound) {
         d.phi[1] = l[1] - z[0];
         d.phi[2] = l[2] - z[1];

@@ -582,7 +582,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
                        edges[0][1] * (edges[1][0] * edges[2][2] - edges[1][2] * edges[2][0]) +
                        edges[0][2] * (edges[1][0] * edges[2][1] - edges[1][1] * edges[2][0])) / 6;
         }
-        if (!(std::abs(measure) > 1e-10 * std::pow(scale, dim)))
+        // (no std::pow: the FMU's binaries take no math from the host's libm)
+        if (!(std::abs(measure) > 1e-10 * (dim == 2 ? scale * scale : scale * scale * scale)))
             fail(dim == 2 ? "triangle " + std::to_string(cell_tags[t]) + " is degenerate (area " +
                                 format_number(measure) + " m^2: its three nodes are on one line or coincide)"
                           : "tetrahedron " + std::to_string(cell_tags[t]) + " is flat (volume " +

@@ -1,4 +1,4 @@
-# The FMU binaries: ContactBody (the FMI 2.0 layer over the solver) and the companion FMUs of
+# The FMU binaries: ContactBody and ContactBody3D (the FMI layers over the solver) and the companion FMUs of
 # examples/system (BeltDrive, Press), each one shared library with nothing inside it that the
 # platform's C library does not provide, exporting only the FMI functions.
 
@@ -35,14 +35,25 @@ function(make_self_contained target)
   endif()
 endfunction()
 
-# One binary, both standards: ContactBody.fmu (FMI 2.0) and ContactBody_fmi3.fmu (FMI 3.0)
-# carry the same library, which exports the fmi2 and the fmi3 functions.
-add_library(ContactBody SHARED fmu_src/fmi2_functions.cpp fmu_src/fmi3_functions.cpp
-            fmu_src/shim.cpp fmu_src/instance.cpp fmu_src/model.cpp fmu_src/variables.cpp
-            fmu_src/fmu_state.cpp fmu_src/resource_start_values.cpp)
-target_include_directories(ContactBody PRIVATE fmu_src ${FMI_HEADERS_DIR})
-target_link_libraries(ContactBody PRIVATE contactbody_solver)
-make_self_contained(ContactBody)
+# One binary per model, both standards: ContactBody.fmu (FMI 2.0) and ContactBody_fmi3.fmu
+# (FMI 3.0) carry the same library, which exports the fmi2 and the fmi3 functions; so do
+# ContactBody3D.fmu and ContactBody3D_fmi3.fmu. The two models are fmu_src/ compiled with
+# their dimension (fmu_src/variables.hpp: CONTACTBODY_MODEL_DIMENSION). The platform builds
+# give the 2D model the solver without the solid-body code (CMakeLists.txt).
+set(model_sources fmu_src/fmi2_functions.cpp fmu_src/fmi3_functions.cpp fmu_src/shim.cpp
+    fmu_src/instance.cpp fmu_src/model.cpp fmu_src/variables.cpp fmu_src/fmu_state.cpp
+    fmu_src/resource_start_values.cpp)
+foreach(model dimension IN ZIP_LISTS MODELS MODEL_DIMENSIONS)
+  add_library(${model} SHARED ${model_sources})
+  target_include_directories(${model} PRIVATE fmu_src ${FMI_HEADERS_DIR})
+  target_compile_definitions(${model} PRIVATE CONTACTBODY_MODEL_DIMENSION=${dimension})
+  if(CONTACTBODY_FMU_BINARIES_ONLY AND dimension EQUAL 2)
+    target_link_libraries(${model} PRIVATE contactbody_solver_planar)
+  else()
+    target_link_libraries(${model} PRIVATE contactbody_solver)
+  endif()
+  make_self_contained(${model})
+endforeach()
 
 foreach(companion IN LISTS COMPANIONS)
   add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model}

@@ -1,19 +1,23 @@
-# Packages ContactBody.fmu (FMI 2.0), ContactBody_fmi3.fmu (FMI 3.0), BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
+# Packages ContactBody.fmu (FMI 2.0), ContactBody_fmi3.fmu (FMI 3.0), their 3D model's
+# ContactBody3D.fmu and ContactBody3D_fmi3.fmu, BeltDrive.fmu and Press.fmu. With CONTACTBODY_PORTABLE (the
 # default: what users get) their binaries come from this project built again for each platform
 # with a toolchain from cmake/: linux64 and aarch64-linux by zig (glibc 2.17), macOS x86_64 and
 # arm64 by zig (macOS 11), win64 by MinGW-w64. Without it
 # (the sanitizer job) the FMU holds the native build's linux64 binary only.
 # The modelDescriptions are written by native tools from the variable tables.
 
-add_executable(generate_model_description fmu_src/generate_model_description.cpp fmu_src/variables.cpp)
-target_include_directories(generate_model_description PRIVATE fmu_src)
-target_link_libraries(generate_model_description PRIVATE contactbody_solver)
+foreach(model dimension IN ZIP_LISTS MODELS MODEL_DIMENSIONS)
+  add_executable(${model}_model_description fmu_src/generate_model_description.cpp fmu_src/variables.cpp)
+  target_include_directories(${model}_model_description PRIVATE fmu_src)
+  target_compile_definitions(${model}_model_description PRIVATE CONTACTBODY_MODEL_DIMENSION=${dimension})
+  target_link_libraries(${model}_model_description PRIVATE contactbody_solver)
+endforeach()
 foreach(companion IN LISTS COMPANIONS)
   add_executable(${companion}_model_description system_fmus/generate_model_description.cpp
                  ${${companion}_model})
 endforeach()
 
-set(fmus ContactBody ${COMPANIONS})
+set(fmus ${MODELS} ${COMPANIONS})
 set(licenses ${PROJECT_SOURCE_DIR}/LICENSE)
 # The platform table (platforms.json): name, FMI 2.0 folder, FMI 3.0 tuple, toolchain file,
 # library suffix, the hosts built for it, the licences of the runtime linked in. Each row's
@@ -118,7 +122,7 @@ endif()
 # which fmpy's compile step (C only) cannot build, and FMI 3.0 ties sources/ to a buildDescription.xml; the sources are this repository
 # (docs/building.md).
 function(add_fmu name)
-  cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;LICENSES;LICENSE_NAMES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(FMU "" "GENERATOR" "GENERATOR_ARGS;BINARIES;LICENSES;LICENSE_NAMES;DEPENDS;RESOURCES" ${ARGN})
   set(dir ${CMAKE_BINARY_DIR}/fmu/${name})
   set(file ${CMAKE_BINARY_DIR}/${name}.fmu)
   set(commands)
@@ -129,6 +133,10 @@ function(add_fmu name)
     list(APPEND commands COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/binaries/${platform}
                          COMMAND ${CMAKE_COMMAND} -E copy ${binary} ${dir}/binaries/${platform}/)
   endwhile()
+  foreach(resource IN LISTS FMU_RESOURCES)
+    list(APPEND commands COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/resources
+                         COMMAND ${CMAKE_COMMAND} -E copy ${resource} ${dir}/resources/)
+  endforeach()
   foreach(license IN ZIP_LISTS FMU_LICENSES FMU_LICENSE_NAMES)
     list(APPEND commands COMMAND ${CMAKE_COMMAND} -E copy ${license_0}
                          ${dir}/documentation/licenses/${license_1})
@@ -139,7 +147,7 @@ function(add_fmu name)
     COMMAND ${FMU_GENERATOR} ${FMU_GENERATOR_ARGS} ${dir}/modelDescription.xml
     ${commands}
     COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${dir} ${file}
-    DEPENDS ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${FMU_GENERATOR} ${FMU_DEPENDS} ${binary_files} ${FMU_LICENSES}
+    DEPENDS ${PROJECT_SOURCE_DIR}/cmake/pack_fmu.py ${FMU_GENERATOR} ${FMU_DEPENDS} ${binary_files} ${FMU_LICENSES} ${FMU_RESOURCES}
     COMMENT "Packaging ${name}.fmu")
   add_custom_target(${name}_fmu ALL DEPENDS ${file})
 endfunction()
@@ -158,13 +166,19 @@ set(contactbody_license_names ${license_names}
     CHOLMOD-License.txt CHOLMOD-LGPL-2.1.txt AMD-License.txt CAMD-License.txt COLAMD-License.txt
     CCOLAMD-License.txt SuiteSparse-LICENSE.txt METIS-LICENSE.txt
     Eigen-MPL-2.0.txt Spectra-MPL-2.0.txt Spectra-COPYRIGHT.txt README.md)
-add_fmu(ContactBody GENERATOR generate_model_description BINARIES ${ContactBody_binaries}
-        LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}
-        DEPENDS ${binary_targets})
-# The FMI 3.0 FMU: the same binaries under FMI 3.0's platform tuples.
-add_fmu(ContactBody_fmi3 GENERATOR generate_model_description GENERATOR_ARGS --fmi3
-        BINARIES ${ContactBody_fmi3_binaries} LICENSES ${contactbody_licenses}
-        LICENSE_NAMES ${contactbody_license_names} DEPENDS ${binary_targets})
+# Each model's FMI 2.0 FMU, and its FMI 3.0 FMU: the same binaries under FMI 3.0's platform
+# tuples. The 3D model carries its default body (the rectangle is 2D).
+set(ContactBody_resources)
+set(ContactBody3D_resources ${PROJECT_SOURCE_DIR}/fmu_src/resources3d/block.msh)
+foreach(model IN LISTS MODELS)
+  add_fmu(${model} GENERATOR ${model}_model_description BINARIES ${${model}_binaries}
+          LICENSES ${contactbody_licenses} LICENSE_NAMES ${contactbody_license_names}
+          RESOURCES ${${model}_resources} DEPENDS ${binary_targets})
+  add_fmu(${model}_fmi3 GENERATOR ${model}_model_description GENERATOR_ARGS --fmi3
+          BINARIES ${${model}_fmi3_binaries} LICENSES ${contactbody_licenses}
+          LICENSE_NAMES ${contactbody_license_names} RESOURCES ${${model}_resources}
+          DEPENDS ${binary_targets})
+endforeach()
 foreach(companion IN LISTS COMPANIONS)
   add_fmu(${companion} GENERATOR ${companion}_model_description BINARIES ${${companion}_binaries}
           LICENSES ${licenses} LICENSE_NAMES ${license_names} DEPENDS ${binary_targets})

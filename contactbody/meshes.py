@@ -123,6 +123,55 @@ def half_disk(path, radius=0.05, contact_size=5e-4, far_size=5e-3, refine_distan
         return write(gmsh, path, version)
 
 
+def block(path, size=0.1, cells=6, version="4.1"):
+    """A 3D cube of edge `size`, [0, size]^3, each of its cells^3 cubes split into Kuhn's six
+    tetrahedra (conforming across faces), written by Gmsh: bottom face (y = 0) "contact", top
+    face (y = size) "clamp". ContactBody3D's default body (resources/block.msh) is block() with
+    the defaults."""
+    n = cells
+    node = lambda i, j, k: 1 + i + (n + 1) * (j + (n + 1) * k)  # Gmsh tags from 1
+    h = size / n
+    coords = []
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                coords += [i * h, j * h, k * h]
+    point = lambda t: coords[3 * (t - 1): 3 * t]
+    tets = []
+    paths = [(0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)]
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                for axes in paths:  # the six paths from corner 000 to 111, one axis at a time
+                    at = [i, j, k]
+                    tet = [node(*at)]
+                    for axis in axes:
+                        at[axis] += 1
+                        tet.append(node(*at))
+                    p0, p1, p2, p3 = (point(t) for t in tet)
+                    a, b, c = ([q[d] - p0[d] for d in range(3)] for q in (p1, p2, p3))
+                    det = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                           + a[2] * (b[0] * c[1] - b[1] * c[0]))
+                    if det < 0:
+                        tet[1], tet[2] = tet[2], tet[1]
+                    tets += tet
+    # A face's triangles split it along the diagonal from its least to its greatest corner, as
+    # the tetrahedra do.
+    face = lambda j: [t for i in range(n) for k in range(n) for t in (
+        node(i, j, k), node(i + 1, j, k), node(i + 1, j, k + 1),
+        node(i, j, k), node(i + 1, j, k + 1), node(i, j, k + 1))]
+    with session("block") as gmsh:
+        volume = gmsh.model.addDiscreteEntity(3)
+        gmsh.model.mesh.addNodes(3, volume, list(range(1, len(coords) // 3 + 1)), coords)
+        gmsh.model.mesh.addElementsByType(volume, 4, [], tets)
+        gmsh.model.addPhysicalGroup(3, [volume], name="body")
+        for name, j in (("contact", 0), ("clamp", n)):
+            surface = gmsh.model.addDiscreteEntity(2)
+            gmsh.model.mesh.addElementsByType(surface, 2, [], face(j))
+            gmsh.model.addPhysicalGroup(2, [surface], name=name)
+        return write(gmsh, path, version)
+
+
 def hemisphere(path, radius=0.05, contact_size=1e-3, far_size=1e-2, refine_distance=None,
                fine_distance=None, contact_angle=60.0, version="4.1"):
     """A 3D body of tetrahedra: the lower half of a ball of `radius` centred at (0, radius, 0),

@@ -13,7 +13,8 @@ namespace contactbody::fmu {
 
 namespace {
 
-constexpr char magic[8] = {'C', 'B', 'F', 'M', 'U', 'S', 'T', '\0'};
+// Each model's own: a ContactBody state is refused by ContactBody3D, and the reverse.
+constexpr char magic[8] = {'C', 'B', solid_model ? '3' : 'F', solid_model ? 'D' : 'M', 'U', 'S', 'T', '\0'};
 constexpr size_t header_size = sizeof(magic) + 4 + 8 + 8;  // magic, version, size, checksum
 constexpr unsigned restorable_states =
     Instantiated | InitializationMode | StepComplete | StepFailed | Terminated;
@@ -178,6 +179,10 @@ std::vector<char> serialize(const FmuState& s) {
         for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction,
                                          &sim.edge.slip_velocity, &sim.edge.gap})
             w.vector(*x);
+        if (solid_model) {
+            w.vector(sim.edge.friction_z);
+            w.vector(sim.edge.slip_velocity_z);
+        }
         w.value<uint64_t>(static_cast<uint64_t>(sim.edge.state.size()));
         for (Eigen::Index i = 0; i < sim.edge.state.size(); ++i) w.value<int8_t>(sim.edge.state[i]);
         w.value(sim.contact_factorization.substep);
@@ -202,7 +207,8 @@ FmuState deserialize(const char* bytes, size_t size) {
         throw ModelError("FMU state bytes rejected: " + std::to_string(size) +
                          " bytes, shorter than the header");
     if (std::memcmp(bytes, magic, sizeof(magic)) != 0)
-        throw ModelError("FMU state bytes rejected: not a ContactBody state (wrong magic)");
+        throw ModelError(std::string("FMU state bytes rejected: not a ") + model_identifier +
+                         " state (wrong magic)");
     uint32_t version;
     uint64_t payload_size, checksum;
     std::memcpy(&version, bytes + 8, 4);
@@ -252,7 +258,8 @@ FmuState deserialize(const char* bytes, size_t size) {
             r.fail(e.what());
         }
     }
-    if (values.mesh.empty() && values.edge_nodes != values.nx + 1) r.fail("edge_nodes is not nx + 1");
+    if (!solid_model && values.mesh.empty() && values.edge_nodes != values.nx + 1)
+        r.fail("edge_nodes is not nx + 1");
     s.model.start_time = r.finite("start time");
     for (double& x : s.model.input_rates) x = r.finite("input derivative");
     for (double& x : s.model.previous_inputs) x = r.finite("input at the last communication point");
@@ -277,7 +284,7 @@ FmuState deserialize(const char* bytes, size_t size) {
         // restore). Its contact nodes are edge_nodes, checked at initialization.
         const Eigen::Index dofs = values.mesh.empty()
                                       ? 2 * static_cast<Eigen::Index>(values.nx + 1) * (values.ny + 1)
-                                      : 2 * static_cast<Eigen::Index>(max_nodes);
+                                      : model_dimension * static_cast<Eigen::Index>(max_nodes);
         const Eigen::Index nc = values.edge_nodes;
         SimulationSnapshot& sim = s.model.simulation;
         sim.state.time = r.finite("time");
@@ -292,7 +299,7 @@ FmuState deserialize(const char* bytes, size_t size) {
             sim.state.u = r.vector_up_to("reduced coordinates", dofs);
             sim.state.v = r.vector("reduced rates", sim.state.u.size());
         }
-        sim.state.lambda = r.vector("multipliers", nc, 2 * nc);  // 2 n_c with friction
+        sim.state.lambda = r.vector("multipliers", nc, model_dimension * nc);  // dim n_c with friction
         sim.state.sticking = r.vector("sticking nodes", nc);
         Works::for_each(sim.works, sim.works, [&](double& x, double) { x = r.finite("work"); });
         sim.initial_energy = r.finite("initial energy");
@@ -312,6 +319,10 @@ FmuState deserialize(const char* bytes, size_t size) {
         edge.friction = r.vector("edge friction", nc);
         edge.slip_velocity = r.vector("edge slip velocity", nc);
         edge.gap = r.vector("edge gap", nc);
+        if (solid_model) {
+            edge.friction_z = r.vector("edge friction z", nc);
+            edge.slip_velocity_z = r.vector("edge slip velocity z", nc);
+        }
         if (r.value<uint64_t>("edge states") != static_cast<uint64_t>(nc))
             r.fail("edge states do not fit the mesh");
         edge.state.resize(nc);

@@ -69,16 +69,26 @@ const std::map<std::string, std::string> units = {
     {"Pa", R"(kg="1" m="-1" s="-2")"},
     {"N/m", R"(kg="1" s="-2")"},
     {"J/m", R"(kg="1" m="1" s="-2")"},
+    {"kg", R"(kg="1")"},
+    {"N", R"(kg="1" m="1" s="-2")"},
+    {"J", R"(kg="1" m="2" s="-2")"},
 };
 
-constexpr const char* description =
+constexpr const char* description = per_body(
     "Plane-strain elastic body in frictional contact with a moving rigid foundation: Ligursky "
-    "and Renard mass redistribution on the normal component, midpoint time stepping";
+    "and Renard mass redistribution on the normal component, midpoint time stepping",
+    "3D elastic body (a tetrahedral mesh) in isotropic frictional contact with a rigid plane "
+    "sliding in x and z: Ligursky and Renard mass redistribution on the normal component, "
+    "midpoint time stepping");
 
+// The units this model's variables use (each declared once: an importer checks them).
 void write_units(std::ostream& x) {
     x << "  <UnitDefinitions>\n";
-    for (const auto& [unit, exponents] : units)
-        x << "    <Unit name=\"" << unit << "\"><BaseUnit " << exponents << "/></Unit>\n";
+    for (const auto& [unit, exponents] : units) {
+        bool used = false;
+        for (const Variable& v : variables()) used = used || unit == v.unit;
+        if (used) x << "    <Unit name=\"" << unit << "\"><BaseUnit " << exponents << "/></Unit>\n";
+    }
     x << "  </UnitDefinitions>\n";
 }
 
@@ -163,7 +173,7 @@ std::string fmi2(void) {
         }
         if (*v.unit) x << " unit=\"" << v.unit << "\"";
         write_limits(x, v);
-        if (v.type == Type::String) x << " start=\"\"";
+        if (v.type == Type::String) x << " start=\"" << escaped(v.string_start) << "\"";
         else if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
         x << "/>\n    </ScalarVariable>\n";
     }
@@ -233,7 +243,7 @@ std::string fmi3(void) {
         if (v.causality != Causality::output && v.type != Type::String)
             x << " start=\"" << number(v.start) << "\"";
         if (v.type == Type::String)
-            x << ">\n      <Start value=\"\"/>\n    </String>\n";
+            x << ">\n      <Start value=\"" << escaped(v.string_start) << "\"/>\n    </String>\n";
         else if (v.is_array())
             x << ">\n      <Dimension valueReference=\"" << edge_nodes_reference << "\"/>\n    </"
               << element << ">\n";

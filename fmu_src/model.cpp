@@ -162,17 +162,20 @@ void ContactBodyModel::build_simulation(const Values& values) {
     fields_.reset();  // it refers to the old simulation's mesh
     SceneParameters scene = values.scene();
     scene.mesh = mesh_path(scene.mesh, resources_);
+    // The foundation's initial speed in its plane (the warnings' sliding speed).
+    const double sliding_speed = solid_model ? std::sqrt(values.foundation_velocity * values.foundation_velocity +
+                                                         values.foundation_velocity_z * values.foundation_velocity_z)
+                                             : values.foundation_velocity;
     try {
         // The same parameters, and a mesh file as it was when the body was built from it.
         if (sim_ && same_discretization(sim_->body().parameters(), scene) &&
             (scene.mesh.empty() ||
              gmsh_file_digest(scene.mesh, max_nodes) == sim_->body().discretization().mesh.file_digest)) {
-            sim_->restart(scene, values.top_displacement, start_time_, values.top_force,
-                          values.foundation_velocity);
+            sim_->restart(scene, values.top_displacement, start_time_, values.top_force, sliding_speed);
         } else {
             sim_.reset();  // before the new one: never two discretizations in memory
             sim_ = std::make_unique<Simulation>(scene, values.top_displacement, start_time_,
-                                                values.top_force, values.foundation_velocity);
+                                                values.top_force, sliding_speed);
         }
     } catch (const std::invalid_argument& e) {
         sim_.reset();
@@ -242,15 +245,25 @@ void ContactBodyModel::set_resources(std::string folder, bool edge_arrays) {
 }
 
 void ContactBodyModel::check_structure() const {
-    if (values_.mesh.empty() && values_.edge_nodes != values_.nx + 1)
+    if (!solid_model && values_.mesh.empty() && values_.edge_nodes != values_.nx + 1)
         throw ModelError(concat("edge_nodes = ", values_.edge_nodes, " but nx + 1 = ", values_.nx + 1,
                                 ": the edge arrays hold one value per bottom node (setting nx "
                                 "sets edge_nodes; set edge_nodes only to nx + 1)"));
 }
 
+std::array<double, num_inputs> ContactBodyModel::current_inputs() const {
+    return {values_.foundation_velocity, values_.top_displacement, values_.top_force,
+            values_.foundation_velocity_z};
+}
+
 void ContactBodyModel::initialize() {
     if (!rebuild_ && sim_) return;
     check_structure();
+    // The reduced 3D body's contact rows hold y and x: its edge arrays' z slip velocities
+    // (and friction, which it refuses too) would have nothing to come from.
+    if (solid_model && values_.modes > 0)
+        throw ModelError(concat("modes = ", values_.modes, ": the reduced body is not in ", model_identifier,
+                                " yet (its contact edge has no z rows); set modes = 0 (the full body)"));
     build_simulation(values_);
     if (!values_.mesh.empty()) {
         const int contact_nodes = static_cast<int>(sim_->body().num_contact_nodes());
@@ -265,7 +278,7 @@ void ContactBodyModel::initialize() {
     }
     open_field_output();
     values_.out = Observables{};
-    previous_inputs_ = {values_.foundation_velocity, values_.top_displacement, values_.top_force};
+    previous_inputs_ = current_inputs();
     rebuild_ = false;
     next_field_output_ = 0;
     next_edge_output_ = 0;
@@ -365,8 +378,8 @@ void ContactBodyModel::do_step(double current_time, double h) {
     // Each input's value at the step's start and its rate across the step: the derivative the
     // master set, or with input_interpolation = ramp and no derivative, the line from the
     // value at the previous communication point to the one set now.
-    const std::array<double*, num_inputs> value = {
-        &values_.foundation_velocity, &values_.top_displacement, &values_.top_force};
+    const std::array<double*, num_inputs> value = {&values_.foundation_velocity, &values_.top_displacement,
+                                                   &values_.top_force, &values_.foundation_velocity_z};
     std::array<double, num_inputs> start{}, rate{};
     const bool ramp = values_.input_interpolation == static_cast<int>(InputInterpolation::ramp);
     for (int i = 0; i < num_inputs; ++i) {
@@ -381,12 +394,13 @@ void ContactBodyModel::do_step(double current_time, double h) {
     in.top_velocity = rate[1];
     in.top_force = start[2];
     in.top_force_rate = rate[2];
+    in.foundation_velocity_z = start[3];
+    in.foundation_acceleration_z = rate[3];
     try {
         sim_->do_step(h, in);
         // Interpolated inputs go on along their line until the master sets them again.
         for (int i = 0; i < num_inputs; ++i) *value[i] += input_rates_[i] * h;
-        previous_inputs_ = {values_.foundation_velocity, values_.top_displacement,
-                            values_.top_force};
+        previous_inputs_ = current_inputs();
         if (fields_) write_due_fields();
         if (edge_) write_due_edge();
     } catch (const NumericalFailure& e) {

@@ -82,6 +82,7 @@ private:
     void check_writable(const Variable& v, bool initialized) const;
     void check_settable(const Variable& v, double value, bool initialized) const;
     void refresh_outputs();
+    std::array<double, num_inputs> current_inputs() const;
     void build_simulation(const Values& values);
     void open_field_output();
     void write_due_fields();

@@ -156,11 +156,24 @@ void check_variable_table(const std::vector<Variable>& rows) {
             if (name == v.name) return &v;
         return nullptr;
     };
-    std::unordered_map<unsigned, const char*> references;
-    for (const Variable& v : rows)
-        if (!references.emplace(v.value_reference, v.name).second)
-            fail(std::string(v.name) + " repeats the value reference of " +
-                 references[v.value_reference]);
+    // Within each model a reference and a name are one variable's; a row of one model may
+    // share them with the other's (the 3D model's mesh has its own description).
+    for (int model : {2, 3}) {
+        std::unordered_map<unsigned, const char*> references;
+        std::unordered_map<std::string, unsigned> names;
+        for (const Variable& v : rows) {
+            if (v.dimension != 0 && v.dimension != model) continue;
+            if (!references.emplace(v.value_reference, v.name).second)
+                fail(std::string(v.name) + " repeats the value reference of " +
+                     references[v.value_reference]);
+            if (!names.emplace(v.name, v.value_reference).second)
+                fail(std::string(v.name) + " is declared twice for the " + std::to_string(model) + "D model");
+        }
+    }
+    for (const Variable& a : rows)  // the same name is the same reference in both models
+        for (const Variable& b : rows)
+            if (std::string(a.name) == b.name && a.value_reference != b.value_reference)
+                fail(std::string(a.name) + " has two value references");
     SceneParameters scene;
     std::vector<std::string> scene_names;
     SceneParameters::for_each(
@@ -214,20 +227,30 @@ Variable& Variable::then(void (*follow)(Values&, const std::string& resources)) 
     after_set = follow;
     return *this;
 }
+Variable& Variable::only_in(int model) {
+    dimension = model;
+    return *this;
+}
+Variable& Variable::starting_at(const char* text) {
+    string_start = text;
+    return *this;
+}
 
 namespace {
 
 // The rows. FMI limits are inclusive: where a value must be > 0, min is the smallest meaningful
 // positive value. Enumerations take their range from their type.
-const std::vector<Variable>& table() {
+const std::vector<Variable>& all_rows() {
     static const std::vector<Variable> rows = checked({
-        // Parameters (docs/variables.md lists them)
-        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused; setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh),
-        real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"),
-        real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"),
-        integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx),
-        integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both),
-        integer("edge_nodes", 31, &Values::edge_nodes, 21, 2, max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (setting mesh sets it; another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
+        // Parameters (docs/variables.md lists them). A row marked only_in(2) or only_in(3)
+        // belongs to one model (variables.hpp's model_dimension).
+        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused; setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh).only_in(2),
+        string("mesh", 35, &Values::mesh, "The body's mesh: a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order tetrahedra, in metres, with physical groups of boundary surfaces named contact (may touch the foundation, the plane y = const under its lowest node by initial_gap, which slides in x and z) and clamp (driven as the top: u_x = u_z = 0, u_y = top_displacement); its path absolute or relative to the FMU's resources folder. The default block.msh (in resources/) is a 0.1 m cube of 6 x 6 x 6 Kuhn-split cells, its bottom face in contact and its top face clamped. Setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh).only_in(3).starting_at(solid_default_mesh),
+        real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body").only_in(2),
+        real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body").only_in(2),
+        integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx).only_in(2),
+        integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both).only_in(2),
+        integer("edge_nodes", 31, &Values::edge_nodes, solid_model ? solid_default_mesh_contact_nodes : 21, solid_model ? 3 : 2, solid_model ? static_cast<double>(max_nodes) : max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (setting mesh sets it; another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
         real("density", 5, &Values::density, "kg/m3", 1000, 1e-3, inf, "Density rho"),
         real("lambda", 6, &Values::lambda, "Pa", 300e6, none, none, "First Lame coefficient (lambda + mu > 0)"),
         real("mu", 7, &Values::mu, "Pa", 150e6, 1, inf, "Shear modulus"),
@@ -243,12 +266,13 @@ const std::vector<Variable>& table() {
         real("damping_stiffness", 16, &Values::damping_stiffness, "s", 0, 0, inf, "Rayleigh damping: beta of C = alpha M + beta A"),
         real("min_internal_step", 17, &Values::min_internal_step, "s", 1e-9, 1e-15, inf, "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, down to this size (at most 20 halvings)"),
         enumeration("input_interpolation", 18, &Values::input_interpolation, "InputInterpolation", 0, "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)").as_fmu_only(),
-        enumeration("top_control", 19, &Values::top_control, "TopControl", 0, "Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)"),
-        real("top_mass", 23, &Values::top_mass, "kg/m", 1.0, 1e-9, inf, "Mass of the top plate (top_control = force)"),
+        enumeration("top_control", 19, &Values::top_control, "TopControl", 0, per_body("Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)", "Clamp group: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = u_z = 0, pushed down by the input top_force; top_displacement then only sets the initial position)")),
+        real("top_mass", 23, &Values::top_mass, per_body("kg/m", "kg"), 1.0, 1e-9, inf, "Mass of the top plate (top_control = force)"),
         real("initial_velocity_x", 24, &Values::initial_velocity_x, "m/s", 0, none, none, "Uniform initial velocity of the body, x (the clamped dofs excepted)"),
         real("initial_velocity_y", 25, &Values::initial_velocity_y, "m/s", 0, none, none, "Uniform initial velocity of the body, y (with the plate under force control)"),
+        real("initial_velocity_z", 37, &Values::initial_velocity_z, "m/s", 0, none, none, "Uniform initial velocity of the body, z (the clamped dofs excepted)").only_in(3),
         enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0, "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)"),
-        real("max_energy", 29, &Values::max_energy, "J/m", 0, 0, inf, "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit"),
+        real("max_energy", 29, &Values::max_energy, per_body("J/m", "J"), 0, 0, inf, "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit"),
         real("max_energy_ratio", 30, &Values::max_energy_ratio, "", 1e6, 0, inf, "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with an error status, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is above the growth of every run of the paper's Figs. 7-8 but variant 0 at internal_step 1e-6 s, whose growth is chaotic and crosses it in some draws (the examples that measure growth set 0)"),
         real("static_friction_ratio", 27, &Values::static_friction_ratio, "", 1, 1, max_static_friction_ratio, "Static over kinetic friction: a node that stuck in the last substep breaks loose only at static_friction_ratio x F x pressure; a slipping node feels F (1 = Coulomb's law; above 1 the friction drops at the onset of slip, which gives stick-slip; at most 10)"),
         real("stribeck_velocity", 32, &Values::stribeck_velocity, "m/s", 0, 0, inf, "Slip-rate law: F(v) = F_d + (F_s - F_d) exp(-|v| / stribeck_velocity) + viscous_friction |v| with F_d = friction_coefficient, F_s = static_friction_ratio x F_d and v the scheme's slip rate, taken implicitly in the step; 0 = no Stribeck term (F_s is then the stick memory of static_friction_ratio)"),
@@ -256,55 +280,77 @@ const std::vector<Variable>& table() {
         integer("modes", 34, &Values::modes, 0, 0, max_reduced_modes, "The body: 0 = the full mesh; m > 0 = the reduced body: the contact edge kept exact, the interior reduced to its m lowest modes plus the edge's residual attachment modes (massless boundary component mode synthesis; reduced_edge chooses whether the edge's x dofs keep their mass); under top_control = force the plate's translation is one more coordinate. At most the body's finite modes (free dofs less massless ones), and of a body above 2000 free dofs at most 500 and at most a quarter of them. The basis is built at initialization and kept over a reset"),
         enumeration("reduced_edge", 36, &Values::reduced_edge, "ReducedEdge", 0, "The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose x dofs have no mass); by_variant takes the default measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2"),
         // Inputs
-        real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, "Horizontal velocity V of the rigid foundation").as_input(Input::foundation_velocity),
-        real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, "Prescribed vertical displacement of the top edge").as_input(Input::top_displacement),
-        real("top_force", 22, &Values::top_force, "N/m", 0, none, none, "Force pressing the top plate down (top_control = force), positive downwards").as_input(Input::top_force),
+        real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, per_body("Horizontal velocity V of the rigid foundation", "Velocity of the rigid foundation in its plane, x component")).as_input(Input::foundation_velocity),
+        real("foundation_velocity_z", 38, &Values::foundation_velocity_z, "m/s", 0, none, none, "Velocity of the rigid foundation in its plane, z component").as_input(Input::foundation_velocity_z).only_in(3),
+        real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, per_body("Prescribed vertical displacement of the top edge", "Prescribed vertical (y) displacement of the clamp group")).as_input(Input::top_displacement),
+        real("top_force", 22, &Values::top_force, per_body("N/m", "N"), 0, none, none, "Force pressing the top plate down (top_control = force), positive downwards").as_input(Input::top_force),
         // Outputs
-        output("energy", 100, "J/m", "Total energy E = kinetic + strain (paper eq. 19, with the variant's mass matrix; the plate's kinetic energy under force control), per metre of thickness, at the end of the step"),
-        output("kinetic_energy", 101, "J/m", "Kinetic part of E"),
-        output("strain_energy", 102, "J/m", "Strain part of E"),
-        output("friction_work", 103, "J/m", "Work xi of friction on the body since the start"),
-        output("energy_minus_friction_work", 104, "J/m", "E - xi (paper Fig. 8)"),
-        output("normal_force", 105, "N/m", "Total normal contact force on the body, a magnitude (>= 0): the average over the last communication step of its substeps' forces"),
-        output("friction_force", 106, "N/m", "Total friction force on the body, signed x component (> 0: the foundation drags the body towards +x): the average over the last communication step"),
-        output("corner_pressure", 107, "Pa", "Contact pressure at node (0,0), averaged over the last step"),
-        output("corner_friction", 108, "Pa", "Friction force density at node (0,0), averaged over the last step"),
-        output("top_reaction_x", 109, "N/m", "Force of the clamp (or plate) on the body, signed x component, averaged over the last communication step"),
-        output("top_reaction_y", 110, "N/m", "Force of the clamp (or plate) on the body, signed y component (< 0 while it presses the body down), averaged over the last communication step"),
+        output("energy", 100, per_body("J/m", "J"), per_body("Total energy E = kinetic + strain (paper eq. 19, with the variant's mass matrix; the plate's kinetic energy under force control), per metre of thickness, at the end of the step", "Total energy E = kinetic + strain (paper eq. 19, with the variant's mass matrix; the plate's kinetic energy under force control) at the end of the step")),
+        output("kinetic_energy", 101, per_body("J/m", "J"), "Kinetic part of E"),
+        output("strain_energy", 102, per_body("J/m", "J"), "Strain part of E"),
+        output("friction_work", 103, per_body("J/m", "J"), "Work xi of friction on the body since the start"),
+        output("energy_minus_friction_work", 104, per_body("J/m", "J"), "E - xi (paper Fig. 8)"),
+        output("normal_force", 105, per_body("N/m", "N"), "Total normal contact force on the body, a magnitude (>= 0): the average over the last communication step of its substeps' forces"),
+        output("friction_force", 106, per_body("N/m", "N"), "Total friction force on the body, signed x component (> 0: the foundation drags the body towards +x): the average over the last communication step"),
+        output("friction_force_z", 125, "N", "Total friction force on the body, signed z component: the average over the last communication step").only_in(3),
+        output("corner_pressure", 107, "Pa", per_body("Contact pressure at node (0,0), averaged over the last step", "Contact pressure at the first contact node (least x, then least z), averaged over the last step")),
+        output("corner_friction", 108, "Pa", per_body("Friction force density at node (0,0), averaged over the last step", "Friction force density at the first contact node, x component, averaged over the last step")),
+        output("top_reaction_x", 109, per_body("N/m", "N"), "Force of the clamp (or plate) on the body, signed x component, averaged over the last communication step"),
+        output("top_reaction_y", 110, per_body("N/m", "N"), "Force of the clamp (or plate) on the body, signed y component (< 0 while it presses the body down), averaged over the last communication step"),
+        output("top_reaction_z", 126, "N", "Force of the clamp (or plate) on the body, signed z component, averaged over the last communication step").only_in(3),
         output("active_contact_nodes", 111, "", "Contact nodes in contact at the last substep"),
         output("slipping_contact_nodes", 112, "", "Contact nodes slipping at the last substep"),
         output("max_penetration", 113, "m", "Largest penetration of the bottom nodes at the ends u^{k+1} of the last step's substeps. Contact is imposed at the midpoints u^{k+1/2}, so this is the scheme's overshoot between midpoints (about dt/2 x the normal velocity), not a violated contact condition"),
-        output("damping_work", 114, "J/m", "Energy dissipated by the Rayleigh damping since the start (>= 0)"),
-        output("clamp_work", 115, "J/m", "Work of the clamp's reaction on the body since the start, jumps of a held top_displacement included"),
-        output("normal_contact_work", 116, "J/m", "Work of the normal contact forces on the body since the start"),
-        output("friction_dissipation", 117, "J/m", "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)"),
-        output("foundation_work", 118, "J/m", "Work of the foundation's motion against friction since the start (what its drive pays)"),
-        output("top_position", 119, "m", "Vertical displacement u_y of the top edge (the plate under force control)"),
-        output("top_velocity", 120, "m/s", "Vertical velocity of the top edge"),
+        output("damping_work", 114, per_body("J/m", "J"), "Energy dissipated by the Rayleigh damping since the start (>= 0)"),
+        output("clamp_work", 115, per_body("J/m", "J"), "Work of the clamp's reaction on the body since the start, jumps of a held top_displacement included"),
+        output("normal_contact_work", 116, per_body("J/m", "J"), "Work of the normal contact forces on the body since the start"),
+        output("friction_dissipation", 117, per_body("J/m", "J"), "Energy dissipated by friction at the interface since the start (foundation_work - friction_work)"),
+        output("foundation_work", 118, per_body("J/m", "J"), "Work of the foundation's motion against friction since the start (what its drive pays)"),
+        output("top_position", 119, "m", per_body("Vertical displacement u_y of the top edge (the plate under force control)", "Vertical displacement u_y of the clamp group (the plate under force control)")),
+        output("top_velocity", 120, "m/s", per_body("Vertical velocity of the top edge", "Vertical velocity of the clamp group")),
         output("substeps", 121, "", "Midpoint substeps taken in the last communication step (ceil(step / internal_step), plus one per refinement)"),
         output("substep_refinements", 122, "", "Substeps of the last communication step redone as two halves after a failed contact solve"),
         output("contact_iterations", 123, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed"),
         output("gauss_seidel_sweeps", 124, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)"),
         // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
         edge_output("edge_x", 130, "m", &EdgeSnapshot::x, "Position x of each bottom node (reference configuration)").as_discrete(),
+        edge_output("edge_z", 136, "m", &EdgeSnapshot::z, "Position z of each contact node (reference configuration)").as_discrete().only_in(3),
         edge_output("edge_pressure", 131, "Pa", &EdgeSnapshot::pressure, "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)"),
         edge_output("edge_friction", 132, "Pa", &EdgeSnapshot::friction, "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)"),
+        edge_output("edge_friction_z", 137, "Pa", &EdgeSnapshot::friction_z, "Friction force density at each contact node, signed z component, averaged like friction_force_z (node shares x densities sum to friction_force_z)").only_in(3),
         edge_output("edge_slip_velocity", 133, "m/s", &EdgeSnapshot::slip_velocity, "Velocity x of each bottom node relative to the foundation over the last substep"),
+        edge_output("edge_slip_velocity_z", 138, "m/s", &EdgeSnapshot::slip_velocity_z, "Velocity z of each contact node relative to the foundation over the last substep").only_in(3),
         edge_output("edge_gap", 134, "m", &EdgeSnapshot::gap, "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)"),
         edge_state_output("edge_state", 135, "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)"),
     });
     return rows;
 }
 
+// This model's rows.
+const std::vector<Variable>& table() {
+    static const std::vector<Variable> rows = [] {
+        std::vector<Variable> mine;
+        for (const Variable& v : all_rows())
+            if (v.dimension == 0 || v.dimension == model_dimension) mine.push_back(v);
+        return mine;
+    }();
+    return rows;
+}
+
 }  // namespace
 
-// Each SceneParameters field from the parameter of its name (checked: every field has one).
+// Each SceneParameters field from this model's parameter of its name (checked: every field
+// has one in some model; one the model has not keeps its default: the 3D model has no
+// rectangle), and the model's dimension.
 SceneParameters Values::scene() const {
     Values values = *this;  // the accessors take Values&
     SceneParameters p;
+    p.dimension = model_dimension;
     SceneParameters::for_each(
         [&](const char* name, Reuse, auto& field) {
-            const Variable& v = *find_variable(name);
+            const Variable* found = find_variable(name);
+            if (!found) return;
+            const Variable& v = *found;
             using Field = std::decay_t<decltype(field)>;
             if constexpr (std::is_same_v<Field, std::string>)
                 field = v.string(values);
@@ -317,6 +363,7 @@ SceneParameters Values::scene() const {
     return p;
 }
 
+const std::vector<Variable>& all_model_variables() { return all_rows(); }
 const std::vector<Variable>& variables() { return table(); }
 
 void check_string(const Variable& v, const char* value) {
@@ -377,6 +424,7 @@ Values start_values() {
         if (v.causality == Causality::output) continue;
         if (v.real) v.real(values) = v.start;
         else if (v.integer) v.integer(values) = static_cast<int>(v.start);
+        else if (v.string) v.string(values) = v.string_start;
     }
     return values;
 }

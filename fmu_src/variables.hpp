@@ -10,8 +10,23 @@
 
 namespace contactbody::fmu {
 
-constexpr const char* model_identifier = "ContactBody";
-constexpr const char* guid = "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
+// The body dimension of this binary's model: 2 for ContactBody (plane strain: forces in N/m,
+// energies in J/m), 3 for ContactBody3D (N, J). fmu_src/ is compiled once per model
+// (cmake/fmu_binaries.cmake); both read this one table, whose rows and units follow it.
+#ifndef CONTACTBODY_MODEL_DIMENSION
+#define CONTACTBODY_MODEL_DIMENSION 2
+#endif
+constexpr int model_dimension = CONTACTBODY_MODEL_DIMENSION;
+static_assert(model_dimension == 2 || model_dimension == 3, "CONTACTBODY_MODEL_DIMENSION is 2 or 3");
+constexpr bool solid_model = model_dimension == 3;
+constexpr const char* model_identifier = solid_model ? "ContactBody3D" : "ContactBody";
+constexpr const char* guid = solid_model ? "{b1d7e3a4-6c2f-4e9a-8b05-3f7a9c1d2e68}"
+                                         : "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
+// What a value of the 2D model's body, per metre of thickness, is for the 3D model's.
+constexpr const char* per_body(const char* planar, const char* solid) { return solid_model ? solid : planar; }
+// The 3D model's default body, in its FMU's resources folder (the rectangle is 2D).
+constexpr const char* solid_default_mesh = "block.msh";
+constexpr int solid_default_mesh_contact_nodes = 49;
 
 // Everything the variables read and write, as plain data.
 struct Values {
@@ -24,7 +39,7 @@ struct Values {
     int input_interpolation;  // InputInterpolation
     int top_control;          // TopControl
     int initial_state;        // InitialState
-    double top_mass, initial_velocity_x, initial_velocity_y;
+    double top_mass, initial_velocity_x, initial_velocity_y, initial_velocity_z;
     double static_friction_ratio;
     double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
@@ -33,7 +48,7 @@ struct Values {
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;  // 0: no edge history
-    double foundation_velocity, top_displacement, top_force;
+    double foundation_velocity, top_displacement, top_force, foundation_velocity_z;
     Observables out;
 
     SceneParameters scene() const;
@@ -47,8 +62,10 @@ enum class Variability { fixed, tunable, continuous, discrete };
 enum class Standard : unsigned { fmi2 = 1, fmi3 = 2, both = 3 };
 
 // The inputs, in the order of StepInputs' values (Variable::input).
-enum class Input : int { none = -1, foundation_velocity = 0, top_displacement = 1, top_force = 2 };
-constexpr int num_inputs = 3;
+// (foundation_velocity_z: the 3D model's only; the 2D model's stays 0.)
+enum class Input : int { none = -1, foundation_velocity = 0, top_displacement = 1, top_force = 2,
+                         foundation_velocity_z = 3 };
+constexpr int num_inputs = 4;
 
 // One variable, declared once in variables.cpp's table with the builders there (real,
 // integer, enumeration, string, output, edge_output and the as_... modifiers). Everything else
@@ -63,7 +80,7 @@ struct Variable {
     Variability variability;
     const char* unit;  // "" for none
     const char* description;
-    double start;      // for parameters and inputs (String variables start empty)
+    double start;      // for parameters and inputs (String variables: string_start)
     double min, max;   // inclusive limits written to the XML; NaN for none
     // Exactly one of real / integer / string is set, by type (none for the arrays).
     std::function<double&(Values&)> real;
@@ -73,6 +90,9 @@ struct Variable {
     // FMI 3.0: causality structuralParameter, type UInt64 (FMI 2.0: an Integer parameter).
     bool structural = false;
     Standard standard = Standard::both;
+    const char* string_start = "";
+    // The model that declares it: 0 both, 2 ContactBody only, 3 ContactBody3D only.
+    int dimension = 0;
     // FMI 3.0 arrays along the contact edge, edge_nodes values each: a field of the edge
     // snapshot (Float64), or its contact states (edge_state: an Enumeration array).
     const Eigen::VectorXd EdgeSnapshot::*edge_real = nullptr;
@@ -101,9 +121,14 @@ struct Variable {
     Variable& as_fmu_only();
     Variable& as_discrete();
     Variable& then(void (*follow)(Values&, const std::string& resources));
+    Variable& only_in(int model_dimension);
+    Variable& starting_at(const char* text);
 };
 
+// This model's variables (rows of its dimension), in table order.
 const std::vector<Variable>& variables();
+// Every row of both models (the table's checks run on them).
+const std::vector<Variable>& all_model_variables();
 // The file `mesh` names: as it is where absolute (/..., \\server\..., C:/... or C:\...), else
 // in the FMU's resources folder; "" (the rectangle) stays "".
 std::string mesh_path(const std::string& mesh, const std::string& resources);

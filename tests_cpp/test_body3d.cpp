@@ -95,7 +95,9 @@ std::string box_file(const Box& b, const std::string& name) {
     text += std::string(b.contact_as_lines ? "1" : "2") + " 1 \"contact\"\n2 2 \"clamp\"\n3 3 \"body\"\n$EndPhysicalNames\n";
     text += "$Nodes\n" + std::to_string(count) + "\n" + nodes + "$EndNodes\n";
     text += "$Elements\n" + std::to_string(tag) + "\n" + elements + "$EndElements\n";
-    const std::string path = ::testing::TempDir() + name;
+    // Each test its own file: ctest runs the tests in parallel processes.
+    const std::string path = ::testing::TempDir() +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
     FILE* f = std::fopen(path.c_str(), "wb");
     std::fputs(text.c_str(), f);
     std::fclose(f);

@@ -70,6 +70,10 @@ bool reduced_edge_has_tangential_mass(const SceneParameters& p) {
 }
 
 void check_parameters(const SceneParameters& p) {
+    if (p.dimension != 2 && p.dimension != 3) reject("dimension", "2 or 3", p.dimension);
+    if (p.dimension == 3 && p.mesh.empty())
+        throw std::invalid_argument("mesh is empty: a 3D body comes from a Gmsh file of first-order "
+                                    "tetrahedra (the built-in rectangle is 2D)");
     require_positive("width", p.width);
     require_positive("height", p.height);
     if (p.mesh.empty()) {  // the rectangle's cells (a mesh file is checked as it is read)
@@ -109,11 +113,15 @@ void check_parameters(const SceneParameters& p) {
     if (p.force_control) require_positive("top_mass", p.top_mass);
     if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
     if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
-    if (p.static_initial_state && (p.initial_velocity_x != 0 || p.initial_velocity_y != 0)) {
+    if (!std::isfinite(p.initial_velocity_z)) reject("initial_velocity_z", "finite", p.initial_velocity_z);
+    if (p.dimension == 2 && p.initial_velocity_z != 0)
+        reject("initial_velocity_z", "0 for a 2D body (plane strain in x-y has no z)", p.initial_velocity_z);
+    if (p.static_initial_state &&
+        (p.initial_velocity_x != 0 || p.initial_velocity_y != 0 || p.initial_velocity_z != 0)) {
         Text msg;
-        msg << "initial_state = static starts the body at rest, so initial_velocity_x and "
-               "initial_velocity_y must be 0 (got " << p.initial_velocity_x << ", "
-            << p.initial_velocity_y << " m/s): set them to 0, or use initial_state = paper";
+        msg << "initial_state = static starts the body at rest, so the initial velocities "
+               "must be 0 (got " << p.initial_velocity_x << ", " << p.initial_velocity_y << ", "
+            << p.initial_velocity_z << " m/s): set them to 0, or use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
@@ -135,9 +143,9 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
         msg << "mesh " << mesh.source << ", line 0: it holds "
             << (mesh.dim == 3 ? "tetrahedra, a 3D body" : "triangles, a 2D body") << "; this model's "
             << "bodies are " << p.dimension << "D"
-            << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh with first-order "
-                                   "triangles in the x-y plane (3D)"
-                                 : " (forces in N) and need a mesh with first-order tetrahedra");
+            << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh of first-order "
+                                   "triangles in the x-y plane"
+                                 : " (forces in N) and need a mesh of first-order tetrahedra");
         throw std::invalid_argument(msg.str());
     }
     if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))

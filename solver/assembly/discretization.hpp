@@ -74,6 +74,7 @@ struct SceneParameters {
     double top_mass = 1.0;
     // Uniform initial velocity of the body (and of the plate), m/s.
     double initial_velocity_x = 0, initial_velocity_y = 0;
+    double initial_velocity_z = 0;  // a 3D body's
     // Initial displacement: the paper's linear profile, or the static equilibrium under the
     // initial top displacement with the foundation at rest (displacement control only).
     bool static_initial_state = false;
@@ -119,6 +120,7 @@ struct SceneParameters {
         f("top_mass", rebuild, p.top_mass...);
         f("initial_velocity_x", keep, p.initial_velocity_x...);
         f("initial_velocity_y", keep, p.initial_velocity_y...);
+        f("initial_velocity_z", keep, p.initial_velocity_z...);
         f("initial_state", keep, p.static_initial_state...);
         f("max_energy", keep, p.max_energy...);
         f("max_energy_ratio", keep, p.max_energy_ratio...);

@@ -2,7 +2,7 @@
 
 namespace contactbody {
 
-ClampXRows clamp_x_rows(const Discretization& d) {
+ClampXRows clamp_x_rows(const Discretization& d, int component) {
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
     Eigen::VectorXd all_e = Eigen::VectorXd::Zero(d.mesh.num_dofs());
     for (Eigen::Index j = 0; j < ncl; ++j) {
@@ -10,7 +10,7 @@ ClampXRows clamp_x_rows(const Discretization& d) {
         all_e[dof] = d.mesh.component(dof) == Mesh::normal;
     }
     Eigen::VectorXd all_ex = Eigen::VectorXd::Zero(d.mesh.num_dofs());
-    for (int dof : d.clamped_dofs) all_ex[dof] = d.mesh.component(dof) != Mesh::normal;
+    for (int dof : d.clamped_dofs) all_ex[dof] = d.mesh.component(dof) == component;
     const Eigen::VectorXd M_ex = d.M * all_ex, A_ex = d.A * all_ex;
     const Eigen::Index nf = static_cast<Eigen::Index>(d.free_dofs.size());
     ClampXRows rows;

@@ -11,13 +11,14 @@
 
 namespace contactbody {
 
-// The clamped x dofs' rows (summed: their reaction) of M and A: on the free dofs, and against
-// the clamp's y motion (e^T M_cx, e^T A_cx).
+// The clamped dofs' rows of one tangential component (x = 0, or a 3D body's z = 2), summed
+// (their reaction), of M and A: on the free dofs, and against the clamp's y motion (e^T M_cx,
+// e^T A_cx).
 struct ClampXRows {
     Eigen::VectorXd mass_free, stiffness_free;
     double mass_top = 0, stiffness_top = 0;
 };
-ClampXRows clamp_x_rows(const Discretization& d);
+ClampXRows clamp_x_rows(const Discretization& d, int component = 0);
 
 // Those rows against a reduced body's coordinates, its lift S and the clamp.
 struct ClampRows {

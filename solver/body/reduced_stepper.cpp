@@ -88,19 +88,26 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     e_cc_ = all_e.dot(d.A * all_e);
     stiffness_tt_ = e_cc_ - s_ss_;
 
-    // The clamped x dofs' rows against the basis, the lift and the clamp (residual massless).
-    const ClampXRows x_rows = clamp_x_rows(d);
-    const Eigen::VectorXd &M_fx = x_rows.mass_free, &A_fx = x_rows.stiffness_free;
-    clamp_x_.mass = Eigen::VectorXd::Zero(n);
-    clamp_x_.mass.head(m) = basis_.modes.transpose() * M_fx;
-    clamp_x_.mass.tail(nx_) = TC.transpose() * M_fx;
-    clamp_x_.stiffness.resize(n);
-    clamp_x_.stiffness << basis_.modes.transpose() * A_fx, basis_.residual.transpose() * A_fx,
-        TC.transpose() * A_fx;
-    clamp_x_.mass_lift = S.dot(M_fx);
-    clamp_x_.stiffness_lift = S.dot(A_fx);
-    clamp_x_.mass_top = x_rows.mass_top;
-    clamp_x_.stiffness_top = x_rows.stiffness_top;
+    // The clamped x (and a 3D body's z) dofs' rows against the basis, the lift and the clamp
+    // (residual massless).
+    const auto clamp_rows = [&](int component) {
+        const ClampXRows rows = clamp_x_rows(d, component);
+        const Eigen::VectorXd &M_fx = rows.mass_free, &A_fx = rows.stiffness_free;
+        ClampRows c;
+        c.mass = Eigen::VectorXd::Zero(n);
+        c.mass.head(m) = basis_.modes.transpose() * M_fx;
+        c.mass.tail(nx_) = TC.transpose() * M_fx;
+        c.stiffness.resize(n);
+        c.stiffness << basis_.modes.transpose() * A_fx, basis_.residual.transpose() * A_fx,
+            TC.transpose() * A_fx;
+        c.mass_lift = S.dot(M_fx);
+        c.stiffness_lift = S.dot(A_fx);
+        c.mass_top = rows.mass_top;
+        c.stiffness_top = rows.stiffness_top;
+        return c;
+    };
+    clamp_x_ = clamp_rows(0);
+    if (d.mesh.dim == 3) clamp_z_ = clamp_rows(2);
 
     start_run();
     problem_.a.resize(2 * nc);
@@ -510,8 +517,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // is in E).
     report.work.clamp = plate ? -load.top_force * du_t : r * du_t;
     // The clamped x rows' residual, recovered from the basis as the full body's.
-    report.top_reaction_x = clamp_x_.residual(
-        {c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()}, z, zdot, w_, du_);
+    const ClampRows::Substep clamp_substep{c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()};
+    report.top_reaction_x = clamp_x_.residual(clamp_substep, z, zdot, w_, du_);
+    if (clamp_z_.mass.size()) report.top_reaction_z = clamp_z_.residual(clamp_substep, z, zdot, w_, du_);
 
     record_contact(
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,

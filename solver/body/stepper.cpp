@@ -150,7 +150,7 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
         s.u[mesh.dof(n, Mesh::normal)] = top_displacement * (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
     for (int dof : d.moving_dofs)
         s.v[dof] = mesh.component(dof) == 0 ? p.initial_velocity_x
-                   : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : 0.0;
+                   : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : p.initial_velocity_z;
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
     s.lambda.setZero(p.friction_coefficient > 0 ? mesh.dim * nc : nc);  // N, then x (and z)
     s.sticking.setZero(nc);
@@ -456,7 +456,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
             r += it.value() * (relative_[it.col()] + w_[it.col()]);  // u^{k+1/2} - t
         if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
         const int component = d.mesh.component(dof);
-        if (component < 2) (component == 0 ? report.top_reaction_x : report.top_reaction_y) += r;
+        (component == 0 ? report.top_reaction_x : component == 1 ? report.top_reaction_y : report.top_reaction_z) += r;
         if (d.free_index[dof] < 0) report.work.clamp += r * 2 * w_[dof];
     }
     if (d.plate_index >= 0) report.work.clamp -= load.top_force * 2 * w_free_[d.plate_index];
@@ -478,11 +478,15 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
         [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
-    if (friction && problem_.tangents == 2) {  // a 3D body: the z share of the friction's works
+    if (d.mesh.dim == 3) {  // the z share of the friction's works, forces and slip
         const double foundation_step = load.foundation_velocity_z * dt;
+        snapshot_.lambda_T_z.resize(nc);
+        snapshot_.slip_velocity_z.resize(nc);
         for (int i = 0; i < nc; ++i) {
-            const double lz = s.lambda[2 * nc + i];
+            const double lz = friction ? s.lambda[2 * nc + i] : 0.0;
             const double dz = 2 * w_[d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 2)];
+            snapshot_.lambda_T_z[i] = lz;
+            snapshot_.slip_velocity_z[i] = (dz - foundation_step) / dt;
             report.friction_force_z += lz;
             report.work.friction += lz * dz;
             report.work.foundation += lz * foundation_step;

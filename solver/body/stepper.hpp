@@ -71,7 +71,7 @@ struct SubstepReport {
     double friction_force = 0;     // sum lambda_T (x)
     double friction_force_z = 0;   // sum lambda_T (z; a 3D body)
     double corner_lambda_N = 0, corner_lambda_T = 0;
-    double top_reaction_x = 0, top_reaction_y = 0;
+    double top_reaction_x = 0, top_reaction_y = 0, top_reaction_z = 0;
     Works work;
     double max_penetration = 0;    // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
@@ -90,6 +90,8 @@ struct ContactSnapshot {
     Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
     Eigen::VectorXd slip_velocity;        // (u_x^{k+1} - u_x^k) / dt - V: relative to the foundation
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // 0 open, 1 stick, 2 slip
+    // A 3D body's z friction and slip velocity relative to the foundation (empty in 2D).
+    Eigen::VectorXd lambda_T_z, slip_velocity_z;
 };
 
 // Where a substep's time goes, accumulated when timing is enabled (benchmarks).

@@ -8,7 +8,9 @@ namespace contactbody {
 
 namespace {
 
-constexpr size_t header_size = 320;  // a multiple of 64, as NPY asks  // fixed: the row count changes, the header's size does not
+// A multiple of 64, as NPY asks, and fixed: the row count changes, the header's size does not.
+// A 3D body's records name three more fields.
+size_t header_size_for(bool solid) { return solid ? 448 : 320; }
 
 void check(bool ok, const std::string& path, const char* what) {
     if (!ok) throw std::runtime_error(std::string(what) + " " + path + " failed: " + std::strerror(errno));
@@ -21,8 +23,8 @@ void append(std::string& out, const T* data, size_t count) {
 
 }  // namespace
 
-EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes)
-    : path_(std::move(path)), nodes_(nodes) {
+EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes, bool solid)
+    : path_(std::move(path)), nodes_(nodes), solid_(solid), header_size_(header_size_for(solid)) {
     file_ = open_file(path_, "w+b");
     check(file_ != nullptr, path_, "creating the edge history");
     write_header();
@@ -32,14 +34,15 @@ EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes)
 // spaces to header_size bytes in all, ending in a newline.
 void EdgeWriter::write_header() {
     const std::string n = std::to_string(nodes_);
-    std::string dict = "{'descr': [('time', '<f8'), ('x', '<f8', (" + n + ",)), ('pressure', '<f8', (" +
-                       n + ",)), ('friction', '<f8', (" + n + ",)), ('slip_velocity', '<f8', (" + n +
-                       ",)), ('gap', '<f8', (" + n + ",)), ('state', 'i1', (" + n +
-                       ",))], 'fortran_order': False, 'shape': (" + std::to_string(rows_) + ",), }";
+    std::string dict = "{'descr': [('time', '<f8')";
+    for (const char* field : fields())
+        dict += std::string(", ('") + field + "', '<f8', (" + n + ",))";
+    dict += ", ('state', 'i1', (" + n + ",))], 'fortran_order': False, 'shape': (" +
+            std::to_string(rows_) + ",), }";
     const size_t prefix = 10;  // magic (6), version (2), header length (2)
-    if (prefix + dict.size() + 1 > header_size)
+    if (prefix + dict.size() + 1 > header_size_)
         throw std::runtime_error("edge history: too many contact nodes for the header");
-    dict.append(header_size - prefix - dict.size() - 1, ' ');
+    dict.append(header_size_ - prefix - dict.size() - 1, ' ');
     dict += '\n';
     std::string header("\x93NUMPY\x01\x00", 8);
     const uint16_t length = static_cast<uint16_t>(dict.size());
@@ -51,13 +54,24 @@ void EdgeWriter::write_header() {
           path_, "writing the edge history");
 }
 
+std::vector<const char*> EdgeWriter::fields() const {
+    if (solid_) return {"x", "z", "pressure", "friction", "friction_z", "slip_velocity", "slip_velocity_z", "gap"};
+    return {"x", "pressure", "friction", "slip_velocity", "gap"};
+}
+
 void EdgeWriter::write(double time, const EdgeSnapshot& e) {
     record_.clear();
     append(record_, &time, 1);
-    for (const Eigen::VectorXd* v : {&e.x, &e.pressure, &e.friction, &e.slip_velocity, &e.gap})
-        append(record_, v->data(), static_cast<size_t>(nodes_));
+    const auto add = [&](const Eigen::VectorXd& v) { append(record_, v.data(), static_cast<size_t>(nodes_)); };
+    if (solid_) {  // in fields()' order
+        for (const Eigen::VectorXd* v : {&e.x, &e.z, &e.pressure, &e.friction, &e.friction_z,
+                                         &e.slip_velocity, &e.slip_velocity_z, &e.gap})
+            add(*v);
+    } else {
+        for (const Eigen::VectorXd* v : {&e.x, &e.pressure, &e.friction, &e.slip_velocity, &e.gap}) add(*v);
+    }
     append(record_, e.state.data(), static_cast<size_t>(nodes_));
-    check(seek_file(file_.get(), header_size + rows_ * record_.size()) &&
+    check(seek_file(file_.get(), header_size_ + rows_ * record_.size()) &&
               std::fwrite(record_.data(), 1, record_.size(), file_.get()) == record_.size(),
           path_, "writing the edge history");
     ++rows_;
@@ -67,8 +81,8 @@ void EdgeWriter::write(double time, const EdgeSnapshot& e) {
 void EdgeWriter::truncate(uint64_t rows) {
     if (rows >= rows_) return;
     rows_ = rows;
-    const size_t record = 8 + static_cast<size_t>(nodes_) * (5 * 8 + 1);
-    check(resize_file(file_.get(), header_size + rows_ * record), path_, "truncating the edge history");
+    const size_t record = 8 + static_cast<size_t>(nodes_) * (fields().size() * 8 + 1);
+    check(resize_file(file_.get(), header_size_ + rows_ * record), path_, "truncating the edge history");
     write_header();
 }
 

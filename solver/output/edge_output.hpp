@@ -1,11 +1,13 @@
 // The bottom edge over time in one NumPy file (.npy, a structured array, one record per
 // output time): time, and per contact node x, pressure, friction (Pa, step averages),
-// slip_velocity (m/s), gap (m) and state (0 open, 1 stick, 2 slip). np.load reads it; the
+// slip_velocity (m/s), gap (m) and state (0 open, 1 stick, 2 slip); a 3D body's records add
+// z, friction_z and slip_velocity_z. np.load reads it; the
 // header's row count is rewritten with every record, so the file is valid at all times.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "c_file.hpp"
 #include "simulation.hpp"
@@ -15,7 +17,7 @@ namespace contactbody {
 class EdgeWriter {
 public:
     // Creates (or empties) the file; throws std::runtime_error naming the path and the cause.
-    EdgeWriter(std::string path, Eigen::Index nodes);
+    EdgeWriter(std::string path, Eigen::Index nodes, bool solid = false);
     void write(double time, const EdgeSnapshot& edge);
     // Keeps the first `rows` records (after a rollback).
     void truncate(uint64_t rows);
@@ -24,8 +26,12 @@ public:
 
 private:
     void write_header();
+    // The Float64 fields of a record, in the file's order (the state follows them).
+    std::vector<const char*> fields() const;
     std::string path_;
     Eigen::Index nodes_;
+    bool solid_;
+    size_t header_size_;
     uint64_t rows_ = 0;
     File file_;
     std::string record_;  // one record's bytes, reused

@@ -297,6 +297,11 @@ std::string massless_edge_warning(const SceneParameters& p) {
 
 std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
     if (!p.mesh.empty()) {  // the maps place a body by the rectangle's cells: none for a mesh
+        if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped() && p.dimension == 3)
+            return "settings not covered: the stability maps behind these warnings were measured "
+                   "on 2D bodies, and no map covers a 3D body (the mesh " + p.mesh + "); on every "
+                   "2D body measured, undamped steady sliding with friction was unstable for "
+                   "every F > 0: consider damping_stiffness";
         if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped())
             return "settings not covered: the stability maps behind these warnings were measured "
                    "on the rectangle, and say nothing of the mesh " + p.mesh + "; there, undamped "

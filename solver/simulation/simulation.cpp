@@ -53,6 +53,13 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
     edge_.slip_velocity.setZero(nc);
     edge_.gap.setZero(nc);
     edge_.state.setZero(nc);
+    if (mesh.dim == 3) {
+        edge_sum_Tz_.setZero(nc);
+        edge_.z.resize(nc);
+        for (Eigen::Index i = 0; i < nc; ++i) edge_.z[i] = mesh.point(mesh.contact_nodes[i]).z;
+        edge_.friction_z.setZero(nc);
+        edge_.slip_velocity_z.setZero(nc);
+    }
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
     initial_energy_ = energy(state_);
@@ -291,20 +298,23 @@ void Simulation::initial_reactions() {
         const double share = d.mesh.edge_share(i);
         const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[d.mesh.dof(node, Mesh::normal)];
         const bool touching = gap <= resolution;
-        double normal = 0, friction = 0;
+        double normal = 0, friction = 0, friction_z = 0;
         if (multipliers) {
             normal = -state_.lambda[k];
             if (state_.lambda.size() > nc) friction = state_.lambda[nc + k];
+            if (state_.lambda.size() > 2 * nc) friction_z = state_.lambda[2 * nc + k];
         } else if (touching) {
             normal = std::max(0.0, product[d.mesh.dof(node, Mesh::normal)]);
         }
         edge_.pressure[k] = normal / share;
         edge_.friction[k] = friction / share;
+        if (d.mesh.dim == 3) edge_.friction_z[k] = friction_z / share;
         edge_.gap[k] = gap;
         edge_.state[k] = normal > 0 ? 1 : 0;  // pressed at rest: sticking
         o.max_penetration = std::max(o.max_penetration, -gap);
         o.normal_force += normal;
         o.friction_force += friction;
+        o.friction_force_z += friction_z;
         if (normal > 0) ++o.active_contact_nodes;
         if (k == 0) {
             o.corner_pressure = normal / share;
@@ -313,7 +323,7 @@ void Simulation::initial_reactions() {
     }
     for (int dof : d.top_dofs) {
         const int component = d.mesh.component(dof);
-        if (component < 2) (component == 0 ? o.top_reaction_x : o.top_reaction_y) += product[dof];
+        (component == 0 ? o.top_reaction_x : component == 1 ? o.top_reaction_y : o.top_reaction_z) += product[dof];
     }
     observables_ = o;
     energies_current_ = false;
@@ -346,6 +356,13 @@ struct Simulation::StepSums {
 
 void Simulation::do_step(double h, const StepInputs& in) {
     if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("step size must be > 0");
+    if (body_->discretization().mesh.dim == 2 &&
+        (in.foundation_velocity_z != 0 || in.foundation_acceleration_z != 0)) {
+        Text msg;
+        msg << "foundation_velocity_z = " << in.foundation_velocity_z
+            << " m/s: a 2D body (plane strain in x-y) has no z direction";
+        throw std::invalid_argument(msg.str());
+    }
     const int n = substeps_for(h);
     const double dt = h / n, t0 = state_.time;
     saved_ = state_;
@@ -362,6 +379,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const Observables saved_observables = observables_;
     edge_sum_N_.setZero();
     edge_sum_T_.setZero();
+    edge_sum_Tz_.setZero();
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
         if (!body_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
@@ -371,10 +389,12 @@ void Simulation::do_step(double h, const StepInputs& in) {
         const double share = mesh.edge_share(0);  // boundary length carried by the corner node
         avg.normal_force /= n;
         avg.friction_force /= n;
+        avg.friction_force_z /= n;
         avg.corner_pressure /= n * share;
         avg.corner_friction /= n * share;
         avg.top_reaction_x /= n;
         avg.top_reaction_y /= n;
+        avg.top_reaction_z /= n;
         observables_ = avg;
         observables_.substeps = n + stats.refinements;  // each halving adds one substep
         observables_.substep_refinements = stats.refinements;
@@ -406,9 +426,11 @@ void Simulation::update_edge(int substeps) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
         edge_.friction[i] = edge_sum_T_[i] / share;
+        if (mesh.dim == 3) edge_.friction_z[i] = edge_sum_Tz_[i] / share;
         edge_.gap[i] += body_->parameters().initial_gap + mesh.contact_heights[i];
     }
     edge_.slip_velocity = c.slip_velocity;
+    if (mesh.dim == 3) edge_.slip_velocity_z = c.slip_velocity_z;
     edge_.state = c.state;
 }
 
@@ -519,7 +541,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     load.top_end = in.top_displacement + in.top_velocity * s1;
     load.top_rate = in.top_velocity;
     load.foundation_velocity = in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
-    load.foundation_velocity_z = in.foundation_velocity_z;
+    load.foundation_velocity_z = in.foundation_velocity_z + in.foundation_acceleration_z * 0.5 * (s0 + s1);
     load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
     SubstepReport r;
@@ -542,13 +564,16 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     const ContactSnapshot& c = body_->last_contact();
     edge_sum_N_ += weight * c.lambda_N;
     edge_sum_T_ += weight * c.lambda_T;
+    if (edge_sum_Tz_.size()) edge_sum_Tz_ += weight * c.lambda_T_z;
     Observables& avg = sums.avg;
     avg.normal_force += weight * r.normal_force;
     avg.friction_force += weight * r.friction_force;
+    avg.friction_force_z += weight * r.friction_force_z;
     avg.corner_pressure -= weight * r.corner_lambda_N;
     avg.corner_friction += weight * r.corner_lambda_T;
     avg.top_reaction_x += weight * r.top_reaction_x;
     avg.top_reaction_y += weight * r.top_reaction_y;
+    avg.top_reaction_z += weight * r.top_reaction_z;
     avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
     avg.active_contact_nodes = r.active_nodes;
     avg.slipping_contact_nodes = r.slipping_nodes;
@@ -644,7 +669,8 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     if (!body_->fits(s)) throw std::invalid_argument("state does not fit this body");
     const EdgeSnapshot& e = snapshot.edge;
     if (e.pressure.size() != nc || e.friction.size() != nc || e.slip_velocity.size() != nc ||
-        e.gap.size() != nc || e.state.size() != nc)
+        e.gap.size() != nc || e.state.size() != nc ||
+        e.friction_z.size() != edge_.z.size() || e.slip_velocity_z.size() != edge_.z.size())
         throw std::invalid_argument("edge does not fit this mesh");
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
@@ -668,6 +694,8 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     edge_.slip_velocity = e.slip_velocity;
     edge_.gap = e.gap;
     edge_.state = e.state;
+    edge_.friction_z = e.friction_z;  // (z, like x, stays the mesh's)
+    edge_.slip_velocity_z = e.slip_velocity_z;
     energies_current_ = false;
 }
 

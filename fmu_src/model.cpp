@@ -201,7 +201,7 @@ void ContactBodyModel::open_field_output() {
         if (values_.edge_output_interval > 0)
             edge_ = std::make_unique<EdgeWriter>(
                 join_path(values_.result_directory, "contactbody_edge.npy"),
-                sim_->body().num_contact_nodes());
+                sim_->body().num_contact_nodes(), sim_->body().discretization().mesh.dim == 3);
     } catch (const std::exception& e) {
         throw ModelError(e.what());
     }

@@ -1,0 +1,316 @@
+"""ContactBody3D.fmu and ContactBody3D_fmi3.fmu: the 3D model, from the same variable table as
+ContactBody (fmu_src/variables.cpp), driven through fmpy. Its units are a solid body's (N, J),
+its foundation slides in x and z, and everything that exists for the 2D model runs on it: the
+five variants with the energy balance, the static start, force control, the initial gap, state
+save and restore, reset, refused calls, field output and the edge history."""
+import base64
+import pathlib
+import re
+import tempfile
+import zipfile
+
+import fmpy
+from fmpy.fmi1 import FMICallException
+import numpy as np
+import pytest
+
+from conftest import FMU, ROOT, Instance
+
+FMU3D = FMU.with_name("ContactBody3D.fmu")
+FMU3D_FMI3 = FMU.with_name("ContactBody3D_fmi3.fmu")
+DATA = pathlib.Path(__file__).parent / "data"
+# Short runs: the default block (343 nodes, 49 contact nodes) at the default 4e-6 s substeps.
+STOP, H = 1e-3, 1e-4
+WORK_TERMS = ["clamp_work", "normal_contact_work", "friction_work", "damping_work", "energy",
+              "friction_dissipation", "foundation_work"]
+
+
+@pytest.fixture(scope="module")
+def unzipped3d():
+    directory = tempfile.mkdtemp(prefix="ContactBody3D_")
+    fmpy.extract(str(FMU3D), directory)
+    return directory
+
+
+@pytest.fixture(scope="module")
+def md3d():
+    return fmpy.read_model_description(str(FMU3D))
+
+
+def simulate(stop=STOP, output=None, **start):
+    return fmpy.simulate_fmu(str(FMU3D), stop_time=stop, output_interval=H,
+                             start_values=start, output=output)
+
+
+def balance_residual(r):
+    """max |E - E(0) - (clamp + normal contact + friction - damping)| over max(E(0), |works|)."""
+    lhs = r["energy"] - r["energy"][0]
+    rhs = r["clamp_work"] + r["normal_contact_work"] + r["friction_work"] - r["damping_work"]
+    scale = max(r["energy"][0], *(np.abs(r[w]).max() for w in WORK_TERMS))
+    return np.abs(lhs - rhs).max() / scale
+
+
+# ---- the modelDescription: one table, the 3D model's rows and units ----
+
+@pytest.mark.parametrize("fmu, committed", [
+    (FMU3D, "modelDescription3D.xml"), (FMU3D_FMI3, "modelDescription3D_fmi3.xml")])
+def test_committed_model_description_is_the_builds(fmu, committed):
+    with zipfile.ZipFile(fmu) as z:
+        generated = z.read("modelDescription.xml").decode()
+    assert generated == (ROOT / "modelDescription" / committed).read_text(), (
+        f"modelDescription/{committed} is stale: copy it from build/fmu/{fmu.stem}/")
+
+
+def test_units_are_a_solid_bodys_and_the_2d_models_stay_per_metre(md3d):
+    solid = {v.name: v for v in md3d.modelVariables}
+    planar = {v.name: v for v in fmpy.read_model_description(str(FMU)).modelVariables}
+    for name in ["normal_force", "friction_force", "top_reaction_x", "top_reaction_y", "top_force"]:
+        assert (solid[name].unit, planar[name].unit) == ("N", "N/m"), name
+    for name in ["energy", "friction_work", "clamp_work", "max_energy"]:
+        assert (solid[name].unit, planar[name].unit) == ("J", "J/m"), name
+    assert (solid["top_mass"].unit, planar["top_mass"].unit) == ("kg", "kg/m")
+    assert not [v.name for v in md3d.modelVariables if v.unit and v.unit.endswith("/m") and
+                v.unit not in ("s/m",)]  # no per-metre label on a 3D quantity
+    z_names = {"foundation_velocity_z", "initial_velocity_z", "friction_force_z", "top_reaction_z"}
+    assert z_names <= set(solid) and not z_names & set(planar)
+    assert solid["foundation_velocity_z"].causality == "input"
+    assert not {"width", "height", "nx", "ny"} & set(solid)
+    assert solid["mesh"].start == "block.msh"
+    assert md3d.coSimulation.modelIdentifier == "ContactBody3D"
+    with zipfile.ZipFile(FMU3D) as z:
+        assert "resources/block.msh" in z.namelist()
+
+
+def test_fmi3_edge_arrays_hold_x_z_pressure_friction_slip_gap_state():
+    md = fmpy.read_model_description(str(FMU3D_FMI3))
+    arrays = {v.name for v in md.modelVariables if v.dimensions}
+    assert arrays == {"edge_x", "edge_z", "edge_pressure", "edge_friction", "edge_friction_z",
+                      "edge_slip_velocity", "edge_slip_velocity_z", "edge_gap", "edge_state"}
+    edge_nodes = next(v for v in md.modelVariables if v.name == "edge_nodes")
+    assert int(edge_nodes.start) == 49  # the default block's 7 x 7 contact nodes
+
+
+# ---- physics through the FMU ----
+
+@pytest.mark.parametrize("variant", range(5))
+def test_energy_balance_closes_in_every_variant_sliding_in_x_and_z(variant):
+    """Sliding at (12, 16) m/s with F = 0.5, damped (so that static friction and damping both
+    work), and static_friction_ratio 1.5: the balance closes to 1e-9 of max(E(0), |works|)."""
+    r = simulate(mass_matrix=variant, friction_coefficient=0.5, static_friction_ratio=1.5,
+                 foundation_velocity=12.0, foundation_velocity_z=16.0, damping_stiffness=2e-6,
+                 output=WORK_TERMS + ["friction_force", "friction_force_z", "normal_force"])
+    assert r["normal_force"][-1] > 0 and r["friction_dissipation"][-1] > 0
+    assert balance_residual(r) < 1e-9
+
+
+def test_friction_is_isotropic_opposite_the_slip_and_within_the_cone():
+    """The foundation at 20 m/s along 0.6 rad in the x-z plane drags every slipping node along
+    its motion: the total friction force points along the foundation's velocity to 1e-3 rad
+    (the nodes' own velocities are small beside 20 m/s), and at every contact node of the FMI
+    3.0 arrays |friction| <= F pressure (step averages of vectors)."""
+    angle, speed, F = 0.6, 20.0, 0.4
+    names = ["friction_force", "friction_force_z", "normal_force", "edge_pressure",
+             "edge_friction", "edge_friction_z", "edge_slip_velocity", "edge_slip_velocity_z",
+             "edge_state"]
+    r = fmpy.simulate_fmu(str(FMU3D_FMI3), stop_time=STOP, output_interval=H, output=names,
+                          start_values={"friction_coefficient": F,
+                                        "foundation_velocity": speed * np.cos(angle),
+                                        "foundation_velocity_z": speed * np.sin(angle),
+                                        "damping_stiffness": 2e-6})
+    fx, fz = r["friction_force"][-1], r["friction_force_z"][-1]
+    assert abs(np.arctan2(fz, fx) - angle) < 1e-3
+    assert np.hypot(fx, fz) == pytest.approx(F * r["normal_force"][-1], rel=1e-3)
+    for row in r:
+        magnitude = np.hypot(row["edge_friction"], row["edge_friction_z"])
+        assert np.all(magnitude <= F * row["edge_pressure"] * (1 + 1e-8) + 1e-9)
+    last = r[-1]
+    slipping = last["edge_state"] == 2
+    assert slipping.sum() > 0
+    slip_angle = np.arctan2(-last["edge_slip_velocity_z"], -last["edge_slip_velocity"])[slipping]
+    assert np.all(np.abs(slip_angle - angle) < 1e-2)
+
+
+def test_a_foundation_turning_from_x_to_z_turns_the_friction_with_it():
+    """foundation_velocity ramps from 20 to 0 and foundation_velocity_z from 0 to 20 (input
+    derivatives through input_interpolation = ramp): the friction force turns from x to z. What
+    stays across the new direction 0.2 ms after the turn (measured 1.1 %) is the body's own x
+    motion relaxing, which the slip velocity carries."""
+    md = fmpy.read_model_description(str(FMU3D))
+    from fmpy.simulation import Input  # noqa: F401  (fmpy takes the structured array)
+    times = np.array([0.0, 2e-4, 8e-4, 1e-3])
+    signals = np.array(list(zip(times, [20, 20, 0, 0], [0, 0, 20, 20])),
+                       dtype=[("time", float), ("foundation_velocity", float),
+                              ("foundation_velocity_z", float)])
+    r = fmpy.simulate_fmu(str(FMU3D), stop_time=1e-3, output_interval=5e-5, input=signals,
+                          start_values={"friction_coefficient": 0.3, "damping_stiffness": 2e-6,
+                                        "input_interpolation": 1},
+                          output=["friction_force", "friction_force_z", "normal_force"])
+    assert md.coSimulation.canInterpolateInputs
+    early, late = r[r["time"] <= 2e-4][-1], r[-1]
+    assert abs(early["friction_force_z"]) < 1e-2 * abs(early["friction_force"])
+    assert abs(late["friction_force"]) < 5e-2 * abs(late["friction_force_z"])
+    assert early["friction_force"] > 0 and late["friction_force_z"] > 0
+
+
+def test_static_start_is_at_rest_and_in_balance():
+    """initial_state = static: no kinetic energy, the clamp's push equals the contact's, and a
+    step without a foundation motion keeps it (the normal force moves by < 1e-6)."""
+    r = simulate(initial_state=1, foundation_velocity=0.0, friction_coefficient=0.5,
+                 output=["kinetic_energy", "normal_force", "top_reaction_y", "top_reaction_x",
+                         "top_reaction_z", "friction_force", "friction_force_z"])
+    assert r["kinetic_energy"][0] == 0
+    assert r["normal_force"][0] > 0
+    assert r["normal_force"][0] == pytest.approx(-r["top_reaction_y"][0], rel=1e-9)
+    assert r["friction_force"][0] == pytest.approx(-r["top_reaction_x"][0], abs=1e-9 * r["normal_force"][0])
+    assert r["friction_force_z"][0] == pytest.approx(-r["top_reaction_z"][0], abs=1e-9 * r["normal_force"][0])
+    assert np.abs(r["normal_force"] / r["normal_force"][0] - 1).max() < 1e-6
+    assert r["kinetic_energy"].max() < 1e-12 * r["normal_force"][0] * 2.5e-5
+
+
+def test_force_control_settles_on_the_pressing_force():
+    """top_control = force, 2000 N, the static start: the contact carries the force, and the
+    plate's u_x = u_z = 0 leaves no x or z reaction without friction."""
+    r = simulate(top_control=1, top_force=2000.0, initial_state=1, friction_coefficient=0.0,
+                 foundation_velocity=0.0, output=["normal_force", "top_position", "top_reaction_z",
+                                                  "kinetic_energy"])
+    assert r["normal_force"][0] == pytest.approx(2000.0, rel=1e-8)
+    assert r["normal_force"][-1] == pytest.approx(2000.0, rel=1e-6)
+    assert r["top_position"][0] < 0
+
+
+def test_an_initial_gap_keeps_the_body_off_the_foundation():
+    r = simulate(initial_gap=1e-4, output=["normal_force", "active_contact_nodes", "max_penetration",
+                                            "energy", "friction_work"])
+    assert np.all(r["normal_force"] == 0) and np.all(r["active_contact_nodes"] == 0)
+    assert np.all(r["max_penetration"] == 0) and np.all(r["friction_work"] == 0)
+
+
+def test_initial_velocity_z_is_kinetic_energy_of_the_moving_dofs():
+    """A body at rest but for initial_velocity_z = 1 m/s, off the foundation: E(0) is the
+    kinetic energy of the free dofs' mass, below the block's whole ½ m v² = ½ 1 kg (1 m/s)²."""
+    r = simulate(initial_gap=1e-3, initial_velocity_z=1.0, top_displacement=0.0,
+                 output=["kinetic_energy", "strain_energy"])
+    assert 0.4 < r["kinetic_energy"][0] < 0.5
+    assert r["strain_energy"][0] == 0
+
+
+# ---- the FMU around the model ----
+
+def test_refused_settings_name_what_is_wrong(unzipped3d, md3d):
+    vr = {v.name: v.valueReference for v in md3d.modelVariables}
+    cases = [({"mesh": ""}, "a 3D body comes from a Gmsh file"),
+             ({"modes": 10}, "the reduced body is not in ContactBody3D"),
+             ({"viscous_friction": 0.1}, "slip-rate law"),
+             ({"mesh": str(DATA / "outside" / "missing.msh")}, "missing.msh")]
+    for values, expected in cases:
+        inst = Instance(md3d, unzipped3d)
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        for name, value in values.items():
+            if isinstance(value, str):
+                inst.setString([vr[name]], [value])
+            elif isinstance(value, int):
+                inst.setInteger([vr[name]], [value])
+            else:
+                inst.setReal([vr[name]], [value])
+        with pytest.raises(FMICallException):
+            inst.exitInitializationMode()
+        assert expected in inst.text(), (values, inst.text())
+        inst.close()
+
+
+def test_a_2d_mesh_is_refused_and_the_2d_model_refuses_tetrahedra(unzipped3d, md3d, tmp_path):
+    from contactbody import meshes
+    triangles = meshes.rectangle(tmp_path / "rect.msh", nx=4, ny=4)
+    inst = Instance(md3d, unzipped3d)
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setString([next(v.valueReference for v in md3d.modelVariables if v.name == "mesh")],
+                   [str(triangles)])
+    with pytest.raises(FMICallException):
+        inst.exitInitializationMode()
+    assert "holds triangles, a 2D body" in inst.text()
+    inst.close()
+    with zipfile.ZipFile(FMU3D) as z:
+        (tmp_path / "block.msh").write_bytes(z.read("resources/block.msh"))
+    md2 = fmpy.read_model_description(str(FMU))
+    two = Instance(md2, fmpy.extract(str(FMU)))
+    two.setupExperiment(startTime=0)
+    two.enterInitializationMode()
+    two.setString([next(v.valueReference for v in md2.modelVariables if v.name == "mesh")],
+                  [str(tmp_path / "block.msh")])
+    with pytest.raises(FMICallException):
+        two.exitInitializationMode()
+    assert "holds tetrahedra, a 3D body" in two.text()
+    two.close()
+
+
+def steps(inst, vr, t0, count, names):
+    rows = []
+    for k in range(count):
+        inst.doStep(t0 + k * H, H)
+        rows.append([x.hex() for x in inst.getReal([vr[n] for n in names])])
+    return rows
+
+
+def test_state_save_restore_serialize_and_reset(unzipped3d, md3d):
+    """A state taken mid-run, restored (also from its serialized bytes), gives the same outputs
+    bit for bit; a reset run repeats the first; the 2D model's bytes are refused."""
+    vr = {v.name: v.valueReference for v in md3d.modelVariables}
+    names = ["energy", "friction_force", "friction_force_z", "top_reaction_z", "friction_work"]
+    inst = Instance(md3d, unzipped3d)
+
+    def start():
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        inst.setReal([vr["foundation_velocity_z"], vr["friction_coefficient"]], [8.0, 0.6])
+        inst.exitInitializationMode()
+
+    start()
+    first = steps(inst, vr, 0, 4, names)
+    state = inst.getFMUstate()
+    blob = inst.serializeFMUstate(state)
+    later = steps(inst, vr, 4 * H, 4, names)
+    inst.setFMUstate(state)
+    assert steps(inst, vr, 4 * H, 4, names) == later
+    inst.setFMUstate(inst.deSerializeFMUstate(blob))
+    assert steps(inst, vr, 4 * H, 4, names) == later
+    inst.freeFMUstate(state)
+    inst.reset()
+    start()
+    assert steps(inst, vr, 0, 4, names) == first
+
+    md2 = fmpy.read_model_description(str(FMU))
+    two = Instance(md2, fmpy.extract(str(FMU)))
+    two.setupExperiment(startTime=0)
+    two.enterInitializationMode()
+    two.exitInitializationMode()
+    planar_blob = two.serializeFMUstate(two.getFMUstate())
+    two.close()
+    with pytest.raises(FMICallException):
+        inst.deSerializeFMUstate(planar_blob)
+    assert "not a ContactBody3D state" in inst.text()
+    inst.close()
+
+
+def test_field_output_and_edge_history_carry_z(tmp_path):
+    """The .vtu files hold tetrahedra (VTK type 10); the edge history's records have z,
+    friction_z and slip_velocity_z, and its last record equals the FMI 3.0 arrays."""
+    names = ["edge_friction_z", "edge_slip_velocity_z", "edge_z", "edge_pressure"]
+    r = fmpy.simulate_fmu(str(FMU3D_FMI3), stop_time=5e-4, output_interval=H, output=names,
+                          start_values={"result_directory": str(tmp_path), "edge_output_interval": H,
+                                        "field_output_interval": 2e-4, "foundation_velocity_z": 10.0,
+                                        "friction_coefficient": 0.5})
+    history = np.load(tmp_path / "contactbody_edge.npy")
+    assert {"z", "friction_z", "slip_velocity_z"} <= set(history.dtype.names)
+    assert len(history) == len(r)
+    for field, name in [("friction_z", "edge_friction_z"), ("slip_velocity_z", "edge_slip_velocity_z"),
+                        ("z", "edge_z"), ("pressure", "edge_pressure")]:
+        assert np.array_equal(history[field][-1], r[name][-1]), field
+    assert np.abs(history["friction_z"][-1]).max() > 0
+    vtu = sorted(tmp_path.glob("*.vtu"))
+    assert vtu
+    text = vtu[-1].read_text()
+    encoded = re.search(r'Name="types"[^>]*>([^<]*)<', text).group(1).strip()
+    types = base64.b64decode(encoded)[8:]  # a UInt64 byte count, then one UInt8 per cell
+    assert len(types) == 6 * 6 ** 3 and set(types) == {10}

@@ -58,7 +58,38 @@ def variable_table(fmu=None) -> str:
     fmu3 = find_fmu(fmu).with_name("ContactBody_fmi3.fmu")
     if fmu3.exists():
         lines += [""] + _fmi3_section(md, fmpy.read_model_description(str(fmu3)))
+    solid = [find_fmu(fmu).with_name(f"ContactBody3D{s}.fmu") for s in ("", "_fmi3")]
+    if all(f.exists() for f in solid):
+        lines += [""] + _solid_section(md, *(fmpy.read_model_description(str(f)) for f in solid))
     return "\n".join(lines) + "\n"
+
+
+def _solid_section(md2, md3d, md3d_fmi3):
+    """What the 3D model (ContactBody3D.fmu, ContactBody3D_fmi3.fmu: the same table compiled
+    with the body's dimension) has otherwise than the 2D one."""
+    planar = {v.name: v for v in md2.modelVariables}
+    solid = {v.name: v for v in md3d.modelVariables}
+    lines = ["## The 3D model (`ContactBody3D.fmu`, `ContactBody3D_fmi3.fmu`)", "",
+             f"GUID {md3d.guid}. The same table (`fmu_src/variables.cpp`) compiled with the body's "
+             "dimension: every variable above by the same name and value reference, but those "
+             "listed here. A 3D body's forces are in N, its energies in J and the plate's mass "
+             "in kg; it comes from a mesh of tetrahedra (no rectangle); its foundation slides "
+             "in x and z.", "",
+             "| name | value reference | in the 2D model | in the 3D model | description |",
+             "|---|---|---|---|---|"]
+    for name in sorted(set(planar) | set(solid), key=lambda n: (solid.get(n) or planar[n]).valueReference):
+        a, b = planar.get(name), solid.get(name)
+        if a is not None and b is not None and (a.unit or "") == (b.unit or "") and name != "mesh":
+            continue
+        described = lambda v: ("absent" if v is None else f"starts at '{v.start}'" if name == "mesh"
+                               else (v.unit or "(no unit)"))
+        v = b or a
+        lines.append(f"| `{name}` | {v.valueReference} | {described(a)} | {described(b)} | "
+                     f"{_cell((b.description if b is not None else a.description) or '')} |")
+    extra = [v for v in md3d_fmi3.modelVariables if v.dimensions and v.name.endswith("_z")]
+    lines += ["", "Its FMI 3.0 edge arrays add the z components: " +
+              ", ".join(f"`{v.name}` ({v.valueReference}, {v.unit or ''})" for v in extra) + "."]
+    return lines
 
 
 def _fmi3_section(md2, md3):

@@ -3,10 +3,11 @@
     .venv/bin/python -m contactbody.release [DIST]     # default dist/; scripts/release.sh
 
 DIST gets, from the FMUs that scripts/setup.sh built in build/:
-- ContactBody.fmu, ContactBody_fmi3.fmu, BeltDrive.fmu, Press.fmu: every platform of
+- ContactBody.fmu, ContactBody_fmi3.fmu, ContactBody3D.fmu, ContactBody3D_fmi3.fmu,
+  BeltDrive.fmu, Press.fmu: every platform of
   platforms.json in each;
 - belt_and_body.ssp, press_and_body.ssp: the example system models (contactbody.system);
-- contactbody-VERSION-py3-none-any.whl: the Python package with the four FMUs as package data,
+- contactbody-VERSION-py3-none-any.whl: the Python package with the six FMUs as package data,
   so that find_fmu() and the system models work after `pip install` with no checkout. It is a
   pure-Python wheel: the package loads no binary itself, fmpy extracts the one the FMU holds for
   the machine (Linux x86_64 and aarch64 with glibc >= 2.17, Windows x86_64), so no
@@ -23,7 +24,7 @@ import tempfile
 import zipfile
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-FMUS = ["ContactBody", "ContactBody_fmi3", "BeltDrive", "Press"]
+FMUS = ["ContactBody", "ContactBody_fmi3", "ContactBody3D", "ContactBody3D_fmi3", "BeltDrive", "Press"]
 
 
 def fmus(build):

@@ -77,6 +77,36 @@ def von_mises(points, triangles, u, lam, mu):
     return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
 
 
+def read_solid_field(vtu):
+    """(points (N, 3), tetrahedra (T, 4), point_data) of one 3D snapshot."""
+    mesh = meshio.read(vtu)
+    return mesh.points, mesh.cells_dict["tetra"], dict(mesh.point_data)
+
+
+def von_mises_solid(points, tetrahedra, u, lam, mu):
+    """The von Mises stress of each P1 tetrahedron (Pa): its constant strain from the shape
+    gradients, sigma = lam tr(eps) I + 2 mu eps."""
+    p = points[tetrahedra]                              # (T, 4, 3)
+    edges = (p[:, 1:] - p[:, :1]).transpose(0, 2, 1)    # (T, 3, 3): columns p_k - p_0
+    du = (u[tetrahedra[:, 1:]] - u[tetrahedra[:, :1]]).transpose(0, 2, 1)  # (T, 3, 3)
+    g = du @ np.linalg.inv(edges)                       # grad u
+    eps = 0.5 * (g + g.transpose(0, 2, 1))
+    trace = np.trace(eps, axis1=1, axis2=2)
+    sigma = 2 * mu * eps + lam * trace[:, None, None] * np.eye(3)
+    deviator = sigma - np.trace(sigma, axis1=1, axis2=2)[:, None, None] / 3 * np.eye(3)
+    return np.sqrt(1.5 * np.einsum("tij,tij->t", deviator, deviator))
+
+
+def boundary_faces(tetrahedra):
+    """(faces (F, 3), the tetrahedron of each): the triangles that belong to one tetrahedron."""
+    faces = np.concatenate([tetrahedra[:, [1, 2, 3]], tetrahedra[:, [0, 3, 2]],
+                            tetrahedra[:, [0, 1, 3]], tetrahedra[:, [0, 2, 1]]])
+    owner = np.tile(np.arange(len(tetrahedra)), 4)
+    _, index, counts = np.unique(np.sort(faces, axis=1), axis=0, return_index=True, return_counts=True)
+    once = index[counts == 1]
+    return faces[once], owner[once]
+
+
 def kinetic_energy(points, triangles, v, density):
     """1/2 v^T M v with the consistent P1 mass matrix."""
     return 0.5 * density * l2_squared(points, triangles, v[:, :2])

@@ -244,6 +244,51 @@ def plate_with_hole(path, width=0.1, height=0.06, hole=(0.05, 0.03, 0.015), size
         return write(gmsh, path, version)
 
 
+def pad3d(path, width=0.06, height=0.02, depth=0.04, chamfer=0.004, slot_width=0.006,
+          slot_depth=0.008, size=4e-3, contact_size=None, version="4.1"):
+    """pad()'s outline extruded `depth` along z: a 3D pad of tetrahedra with two chamfered
+    bottom edges (along z) and a slot across its bottom face; the two bottom faces beside the
+    slot are "contact", the top face "clamp". Cells of `size`, of `contact_size` on the
+    contact faces if given."""
+    w, h, c, sw, sd = width, height, chamfer, slot_width, slot_depth
+    outline = [(c, 0), (w / 2 - sw / 2, 0), (w / 2 - sw / 2, sd), (w / 2 + sw / 2, sd),
+               (w / 2 + sw / 2, 0), (w - c, 0), (w, c), (w, h), (0, h), (0, c)]
+    with session("pad3d") as gmsh:
+        occ = gmsh.model.occ
+        points = [occ.addPoint(x, y, 0) for x, y in outline]
+        lines = [occ.addLine(points[k], points[(k + 1) % len(points)]) for k in range(len(points))]
+        face = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+        volume = [tag for dim, tag in occ.extrude([(2, face)], 0, 0, depth) if dim == 3]
+        occ.synchronize()
+        contact, clamp = [], []
+        for _, tag in gmsh.model.getBoundary([(3, t) for t in volume], oriented=False):
+            x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(2, tag)
+            if abs(y1 - y0) < 1e-6 and abs(y0) < 1e-6:  # OCC pads its boxes by its tolerance
+                contact.append(tag)
+            elif abs(y1 - y0) < 1e-6 and abs(y1 - h) < 1e-6:
+                clamp.append(tag)
+        gmsh.model.addPhysicalGroup(3, volume, name="body")
+        gmsh.model.addPhysicalGroup(2, contact, name="contact")
+        gmsh.model.addPhysicalGroup(2, clamp, name="clamp")
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        if contact_size:
+            field = gmsh.model.mesh.field
+            d = field.add("Distance")
+            field.setNumbers(d, "SurfacesList", contact)
+            t = field.add("Threshold")
+            field.setNumber(t, "InField", d)
+            field.setNumber(t, "SizeMin", contact_size)
+            field.setNumber(t, "SizeMax", size)
+            field.setNumber(t, "DistMin", 0)
+            field.setNumber(t, "DistMax", 2 * (size - contact_size))
+            field.setAsBackgroundMesh(t)
+            for option in ("Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromPoints",
+                           "Mesh.MeshSizeFromCurvature"):
+                gmsh.option.setNumber(option, 0)
+        gmsh.model.mesh.generate(3)
+        return write(gmsh, path, version)
+
+
 def pad(path, width=0.06, height=0.02, chamfer=0.004, slot_width=0.006, slot_depth=0.008,
         size=1e-3, contact_size=None, growth=0.2, version="4.1"):
     """A brake-pad-like block: chamfered bottom corners, a slot cut up from the middle of its

@@ -4,8 +4,11 @@ its foundation slides in x and z, and everything that exists for the 2D model ru
 five variants with the energy balance, the static start, force control, the initial gap, state
 save and restore, reset, refused calls, field output and the edge history."""
 import base64
+import json
 import pathlib
 import re
+import subprocess
+import sys
 import tempfile
 import zipfile
 
@@ -314,3 +317,31 @@ def test_field_output_and_edge_history_carry_z(tmp_path):
     encoded = re.search(r'Name="types"[^>]*>([^<]*)<', text).group(1).strip()
     types = base64.b64decode(encoded)[8:]  # a UInt64 byte count, then one UInt8 per cell
     assert len(types) == 6 * 6 ** 3 and set(types) == {10}
+
+
+def test_von_mises_of_a_tetrahedron_under_uniaxial_strain():
+    """u = e x along x: sigma = diag(lam e + 2 mu e, lam e, lam e), whose von Mises stress is
+    2 mu e, whatever the tetrahedron."""
+    from contactbody import fields
+    points = np.array([[0, 0, 0], [1, 0.1, 0], [0.2, 1, 0.1], [0.1, 0.3, 1.0]])
+    e, lam, mu = 1e-3, 300e6, 150e6
+    u = np.zeros_like(points)
+    u[:, 0] = e * points[:, 0]
+    stress = fields.von_mises_solid(points, np.array([[0, 1, 2, 3]]), u, lam, mu)
+    assert stress[0] == pytest.approx(2 * mu * e, rel=1e-12)
+    faces, owner = fields.boundary_faces(np.array([[0, 1, 2, 3], [1, 2, 3, 4]]))
+    assert len(faces) == 6 and sorted(owner) == [0, 0, 0, 1, 1, 1]
+
+
+def test_turning_pad_example_measures_what_it_draws(tmp_path):
+    """examples/turning_pad_3d.py on an 8 mm mesh: the picture is written, the energy balance
+    closes, in mid-turn some nodes stick and some slip, the friction's heading lags the
+    foundation's while it turns and every node ends slipping at F x its pressure."""
+    subprocess.run([sys.executable, str(ROOT / "examples" / "turning_pad_3d.py"), "--out", str(tmp_path),
+                    "--size", "8e-3"], check=True, capture_output=True, cwd=ROOT / "examples")
+    summary = json.loads((tmp_path / "turning_pad_3d.json").read_text())
+    assert (tmp_path / "turning_pad_3d.png").stat().st_size > 50_000
+    assert summary["energy_balance_residual"] < 1e-9
+    assert summary["mid_turn_nodes"]["stick"] > 0 and summary["mid_turn_nodes"]["slip"] > 0
+    assert summary["largest_heading_lag_during_turn_deg"] > 10
+    assert summary["friction_over_F_normal_at_end"] == pytest.approx(1, abs=1e-2)

@@ -95,13 +95,16 @@ def test_fmi3_edge_arrays_hold_x_z_pressure_friction_slip_gap_state():
 
 # ---- physics through the FMU ----
 
+@pytest.mark.parametrize("law", ["coulomb", "slip_rate"])
 @pytest.mark.parametrize("variant", range(5))
-def test_energy_balance_closes_in_every_variant_sliding_in_x_and_z(variant):
+def test_energy_balance_closes_in_every_variant_sliding_in_x_and_z(variant, law):
     """Sliding at (12, 16) m/s with F = 0.5, damped (so that static friction and damping both
-    work), and static_friction_ratio 1.5: the balance closes to 1e-9 of max(E(0), |works|)."""
+    work), static_friction_ratio 1.5, with Coulomb's law and with the slip-rate law (a Stribeck
+    drop over 5 m/s and a viscous term): the balance closes to 1e-9 of max(E(0), |works|)."""
+    rate = {"stribeck_velocity": 5.0, "viscous_friction": 0.01} if law == "slip_rate" else {}
     r = simulate(mass_matrix=variant, friction_coefficient=0.5, static_friction_ratio=1.5,
                  foundation_velocity=12.0, foundation_velocity_z=16.0, damping_stiffness=2e-6,
-                 output=WORK_TERMS + ["friction_force", "friction_force_z", "normal_force"])
+                 output=WORK_TERMS + ["friction_force", "friction_force_z", "normal_force"], **rate)
     assert r["normal_force"][-1] > 0 and r["friction_dissipation"][-1] > 0
     assert balance_residual(r) < 1e-9
 
@@ -203,7 +206,7 @@ def test_refused_settings_name_what_is_wrong(unzipped3d, md3d):
     vr = {v.name: v.valueReference for v in md3d.modelVariables}
     cases = [({"mesh": ""}, "a 3D body comes from a Gmsh file"),
              ({"modes": 10}, "the reduced body is not in ContactBody3D"),
-             ({"viscous_friction": 0.1}, "slip-rate law"),
+             ({"initial_state": 1, "initial_velocity_z": 0.5}, "initial velocities must be 0"),
              ({"mesh": str(DATA / "outside" / "missing.msh")}, "missing.msh")]
     for values, expected in cases:
         inst = Instance(md3d, unzipped3d)

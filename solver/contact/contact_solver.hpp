@@ -175,6 +175,9 @@ private:
     double residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
     void disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda);
     Eigen::VectorXd disc_rT_, disc_direction_, disc_ratio_;
+    // Per node at the last residual: F (the rate law's at the slip), the normal trial, and
+    // with a slip-rate law dF/d|s| and s / |s|.
+    Eigen::VectorXd disc_F_, disc_trial_, disc_dF_, disc_slip_direction_;
     // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
     // the tolerance within options.max_sweeps.
     bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,

@@ -3,7 +3,9 @@
 // a -> F lambda_N |a| (the paper's Remark 4.4). The same Alart-Curnier residual as in 2D, with
 // the tangential projection onto a disc instead of an interval, and a semi-smooth Newton on its
 // full generalized Jacobian (open nodes eliminated). In 2D the disc is the interval and this
-// Jacobian the reduced system's; the 2D solve keeps its own path (its bits).
+// Jacobian the reduced system's; the 2D solve keeps its own path (its bits). With a slip-rate
+// law F depends on the slip speed |s| / slip_time, s = u_T - origin the node's slip vector, taken
+// implicitly as in 2D: its derivative enters a slipping node's rows.
 #include <cmath>
 #include <limits>
 
@@ -67,11 +69,27 @@ double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::Vector
     pattern_.resize(n);
     disc_direction_.resize(2 * n);
     disc_ratio_.resize(n);
+    disc_F_.resize(n);
+    disc_trial_.resize(n);
+    disc_dF_.setZero(n);
+    disc_slip_direction_.setZero(2 * n);
     for (Eigen::Index i = 0; i < n; ++i) {
         const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
         const double u[3] = {u_hat_[i], u_hat_[n + i], u_hat_[2 * n + i]};
         const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
-        const DiscNode d = disc_node(l, u, r_[i], disc_rT_[i], p.gap_limit[i], origin, p.friction[i]);
+        double F = p.friction[i];
+        if (p.rate_dependent()) {
+            const double slip[2] = {u[1] - origin[0], u[2] - origin[1]};
+            const double size = std::sqrt(slip[0] * slip[0] + slip[1] * slip[1]);
+            double dF = 0;
+            F = p.coefficient(i, size, &dF);
+            disc_dF_[i] = size > 0 ? dF : 0.0;  // |s| has no derivative at 0
+            disc_slip_direction_[i] = size > 0 ? slip[0] / size : 0.0;
+            disc_slip_direction_[n + i] = size > 0 ? slip[1] / size : 0.0;
+        }
+        const DiscNode d = disc_node(l, u, r_[i], disc_rT_[i], p.gap_limit[i], origin, F);
+        disc_F_[i] = F;
+        disc_trial_[i] = -l[0] - r_[i] * (p.gap_limit[i] - u[0]);
         for (int c = 0; c < 3; ++c) phi[c * n + i] = d.phi[c];
         status_[i] = d.status;
         pattern_[i] = static_cast<signed char>(d.status == NodeStatus::open ? 0 : d.status == NodeStatus::stick ? 1 : 2);
@@ -92,6 +110,7 @@ double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::Vector
 //   slip:   phi_T = l_T - F trial t, t = z / |z|, z = l_T - r_T (u_T - origin),
 //           trial = -l_N - r_N (gap - u_N)
 //           -> E_T - F t (-e_N + r_N W_N) - (F trial / |z|) (I - t t^T) (E_T - r_T W_T)
+//              - trial t F'(|s|) (s / |s|)^T W_T     (a slip-rate law, s = u_T - origin)
 // The open nodes' steps are known; the rest is a dense system on the active nodes' unknowns.
 void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda) {
     const Eigen::Index n = p.gap_limit.size(), m = 3 * n;
@@ -121,7 +140,7 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             continue;
         }
         const double t[2] = {disc_direction_[i], disc_direction_[n + i]};
-        const double F = p.friction[i], kappa = disc_ratio_[i];
+        const double F = disc_F_[i], kappa = disc_ratio_[i];
         // Component c - 1 of: E_T - F t (-e_N + r_N W_N) - kappa (I - t t^T)(E_T - r_T W_T)
         const int q = static_cast<int>(c - 1);
         J.row(a) = -F * t[q] * rN * p.W.row(i);
@@ -133,6 +152,9 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             J.row(a) += kappa * projector * rT * p.W.row(col);
             J(a, col) -= kappa * projector;
         }
+        if (disc_dF_[i] != 0)
+            J.row(a) -= disc_trial_[i] * t[q] * disc_dF_[i] *
+                        (disc_slip_direction_[i] * p.W.row(n + i) + disc_slip_direction_[n + i] * p.W.row(2 * n + i));
         J(a, row) += 1;
     }
     Eigen::VectorXd rhs(k);
@@ -154,8 +176,6 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
 ContactSolveInfo ContactSolver::solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
                                            Eigen::VectorXd& lambda) {
     const Eigen::Index n = p.gap_limit.size();
-    if (p.rate_dependent())
-        throw std::logic_error("ContactSolver: a slip-rate law with isotropic friction is not built");
     // One augmentation parameter for both tangential directions (isotropy: their mean
     // diagonal, invariant under a turn about the normal).
     disc_rT_.resize(n);

@@ -348,3 +348,24 @@ def test_turning_pad_example_measures_what_it_draws(tmp_path):
     assert summary["mid_turn_nodes"]["stick"] > 0 and summary["mid_turn_nodes"]["slip"] > 0
     assert summary["largest_heading_lag_during_turn_deg"] > 10
     assert summary["friction_over_F_normal_at_end"] == pytest.approx(1, abs=1e-2)
+
+
+def test_a_study_runs_on_the_3d_body_with_its_units(tmp_path):
+    """contactbody.study on ContactBody3D: two points sliding along x and along z; the z
+    friction has its metric, the apparent friction ratio is the mean force's magnitude, and
+    study.json records N and J."""
+    from contactbody.study import Study, run_study
+    study = Study(stop_time=5e-4, output_interval=1e-4, average_from=2e-4,
+                  fixed={"damping_stiffness": 2e-6, "friction_coefficient": 0.3},
+                  grid={"foundation_velocity_z": [0.0, 5.0]}, series=["friction_force_z"])
+    df = run_study(study, tmp_path, fmu=FMU3D, workers=1, progress=False, dashboard=False)
+    assert list(df["status"]) == ["ok", "ok"]
+    along_x, along_z = (df[df["foundation_velocity_z"] == v].iloc[0] for v in (0.0, 5.0))
+    assert abs(along_x["friction_force_z_mean"]) < 1e-3 * abs(along_x["friction_force_mean"])
+    assert along_z["friction_force_z_mean"] > 0
+    assert along_z["apparent_friction_ratio"] == pytest.approx(
+        np.hypot(along_z["friction_force_mean"], along_z["friction_force_z_mean"])
+        / along_z["normal_force_mean"], rel=1e-12)
+    assert 0.25 < along_z["apparent_friction_ratio"] <= 0.3 * (1 + 1e-9)
+    units = json.loads((tmp_path / "study.json").read_text())["units"]
+    assert (units["normal_force_mean"], units["energy_final"], units["friction_power"]) == ("N", "J", "W")

@@ -21,11 +21,11 @@ Modules: schema (the settings), metrics (what a point yields), workers (the dask
 journal (the table), runner (run_study).
 """
 from .journal import Table
-from .metrics import METRIC_UNITS, METRICS, OUTPUTS, TIMES, failed_metrics, metrics, run_point
+from .metrics import METRIC_UNITS, METRICS, OUTPUTS, TIMES, failed_metrics, metric_units, metrics, run_point
 from .runner import keep_settings, parameter_columns, point_of_key, run_study
 from .schema import Study, StudyError
 from .workers import ShipFMU
 
-__all__ = ["METRICS", "METRIC_UNITS", "OUTPUTS", "TIMES", "ShipFMU", "Study", "StudyError", "Table",
+__all__ = ["METRICS", "METRIC_UNITS", "metric_units", "OUTPUTS", "TIMES", "ShipFMU", "Study", "StudyError", "Table",
            "failed_metrics", "keep_settings", "metrics", "parameter_columns", "point_of_key",
            "run_point", "run_study"]

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..fmu import Interface, find_fmu
 from .schema import StudyError, _canonical, Study
-from .metrics import METRICS, METRIC_UNITS, TIMES, failed_metrics
+from .metrics import METRICS, TIMES, failed_metrics, metric_units
 from .workers import _run_on_worker, ShipFMU
 from .journal import Table
 
@@ -68,7 +68,7 @@ def keep_settings(out, study: Study, units: dict):
             p for p in study.resolved()["points"] if p not in resolved["points"])
     else:
         resolved = study.resolved()
-    resolved["units"] = {**METRIC_UNITS, **units, "stop_time": "s", "output_interval": "s",
+    resolved["units"] = {**metric_units(units), **units, "stop_time": "s", "output_interval": "s",
                          "average_from": "s"}
     pathlib.Path(out).mkdir(parents=True, exist_ok=True)
     tmp = path.with_suffix(".json.tmp")

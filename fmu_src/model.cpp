@@ -259,11 +259,6 @@ std::array<double, num_inputs> ContactBodyModel::current_inputs() const {
 void ContactBodyModel::initialize() {
     if (!rebuild_ && sim_) return;
     check_structure();
-    // The reduced 3D body's contact rows hold y and x: its edge arrays' z slip velocities
-    // (and friction, which it refuses too) would have nothing to come from.
-    if (solid_model && values_.modes > 0)
-        throw ModelError(concat("modes = ", values_.modes, ": the reduced body is not in ", model_identifier,
-                                " yet (its contact edge has no z rows); set modes = 0 (the full body)"));
     build_simulation(values_);
     if (!values_.mesh.empty()) {
         const int contact_nodes = static_cast<int>(sim_->body().num_contact_nodes());

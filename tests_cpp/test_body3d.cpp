@@ -274,17 +274,23 @@ TEST(Body3D, BadTetrahedralFilesAreRefusedWithTheirLine) {
     EXPECT_NE(second.find("line 10: element 1 is a 10-node (second-order) tetrahedron"), std::string::npos) << second;
 }
 
-TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndA3DBodyRefusesWhatIsNotBuilt) {
+TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndAZVelocity) {
     SceneParameters p = box_scene(Box{}, "box_2d_model.msh", MassVariant::redistributed_normal);
     p.dimension = 2;
     EXPECT_NE(thrown([&] { discretize(p); }).find("it holds tetrahedra, a 3D body"), std::string::npos);
     p.dimension = 3;
-    p.friction_coefficient = 0.3;
-    p.modes = 10;
-    EXPECT_NE(thrown([&] { discretize(p); }).find("friction_coefficient must be 0 on a reduced 3D body"), std::string::npos);
-    p.friction_coefficient = 0;
-    Simulation sim(p, -1e-5);
-    EXPECT_NE(thrown([&] { sim.set_friction_coefficient(0.2); }).find("friction_coefficient"), std::string::npos);
+    p.mesh.clear();
+    EXPECT_NE(thrown([&] { check_parameters(p); }).find("a 3D body comes from a Gmsh file"), std::string::npos);
+    // A 2D body (the rectangle) has no z: neither a z velocity of its foundation nor of itself.
+    SceneParameters planar;
+    planar.nx = planar.ny = 4;
+    planar.initial_velocity_z = 1;
+    EXPECT_NE(thrown([&] { check_parameters(planar); }).find("initial_velocity_z must be 0 for a 2D body"), std::string::npos);
+    planar.initial_velocity_z = 0;
+    Simulation sim(planar, -1e-5);
+    StepInputs in;
+    in.foundation_velocity_z = 0.5;
+    EXPECT_NE(thrown([&] { sim.do_step(1e-5, in); }).find("a 2D body (plane strain in x-y) has no z direction"), std::string::npos);
 }
 
 // Isotropic friction (Remark 4.4): a box pressed on a foundation sliding in the direction
@@ -537,37 +543,58 @@ TEST(Body3D, SupernodalLuSolvesAsTheSimplicialCholeskyDoes) {
 // both of its contact edges and the variants whose edge is massless in y (as in 2D; variant 2
 // is refused on a reduced 3D body for now).
 TEST(Body3D, ReducedBodyWithEveryModeIsTheFullBody) {
+    // Pressed, without friction and with isotropic friction under a foundation sliding along
+    // 0.6 rad in the x-z plane, both edges (variant 2 has no tangential mass: massless only):
+    // the normal, friction and clamp forces in x, y and z are the full body's to 1e-10.
     const double dt = 2e-6;
-    SceneParameters both = box_scene(Box{}, "box_reduced.msh", MassVariant::redistributed_both);
-    both.modes = 10;
-    EXPECT_NE(thrown([&] { discretize(both); }).find("redistributed_both"), std::string::npos);
-    for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact}) {
-        for (auto edge : {ReducedEdge::massless, ReducedEdge::tangential_mass}) {
-            SCOPED_TRACE(std::to_string(static_cast<int>(v)) + " " + std::to_string(static_cast<int>(edge)));
-            SceneParameters p = box_scene(Box{}, "box_reduced.msh", v);
-            p.initial_velocity_y = -1;
-            p.reduced_edge = edge;
-            Stepper full(p);
-            const bool tangential = edge == ReducedEdge::tangential_mass;
-            ReducedStepper reduced(p, finite_mode_count(discretize(p), tangential));
-            State s = pressing_start(full);
-            ReducedState r = reduced.from_full(s);
-            double scale = 0, worst = 0;
-            int touching = 0;
-            for (int k = 0; k < 300; ++k) {
-                const SubstepReport a = full.substep(s, dt, pressing(k, dt));
-                const SubstepReport b = reduced.substep(r, dt, pressing(k, dt));
-                scale = std::max(scale, std::abs(a.normal_force));
-                worst = std::max({worst, std::abs(a.normal_force - b.normal_force),
-                                  std::abs(a.top_reaction_y - b.top_reaction_y)});
-                touching += a.active_nodes > 0;
-            }
-            EXPECT_GT(touching, 100);
-            EXPECT_LT(worst / scale, 1e-10);
-            State back;
-            reduced.to_full(r, back);
-            EXPECT_LT((back.u - s.u).cwiseAbs().maxCoeff() / s.u.cwiseAbs().maxCoeff(), 1e-10);
+    struct Case {
+        MassVariant variant;
+        ReducedEdge edge;
+        double friction;
+    };
+    std::vector<Case> cases;
+    for (double F : {0.0, 0.4}) {
+        for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact})
+            for (auto edge : {ReducedEdge::massless, ReducedEdge::tangential_mass}) cases.push_back({v, edge, F});
+        cases.push_back({MassVariant::redistributed_both, ReducedEdge::massless, F});
+    }
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(static_cast<int>(c.variant)) + " " + std::to_string(static_cast<int>(c.edge)) +
+                     " F = " + std::to_string(c.friction));
+        SceneParameters p = box_scene(Box{}, "box_reduced.msh", c.variant);
+        p.initial_velocity_y = -1;
+        p.reduced_edge = c.edge;
+        p.friction_coefficient = c.friction;
+        Stepper full(p);
+        const bool tangential = c.edge == ReducedEdge::tangential_mass;
+        ReducedStepper reduced(p, finite_mode_count(discretize(p), tangential));
+        State s = pressing_start(full);
+        ReducedState r = reduced.from_full(s);
+        double scale = 0, worst = 0, friction = 0;
+        int touching = 0;
+        for (int k = 0; k < 300; ++k) {
+            SubstepLoad load = pressing(k, dt);
+            load.foundation_velocity = 2 * std::cos(0.6);
+            load.foundation_velocity_z = 2 * std::sin(0.6);
+            const SubstepReport a = full.substep(s, dt, load);
+            const SubstepReport b = reduced.substep(r, dt, load);
+            scale = std::max(scale, std::abs(a.normal_force));
+            worst = std::max({worst, std::abs(a.normal_force - b.normal_force),
+                              std::abs(a.friction_force - b.friction_force),
+                              std::abs(a.friction_force_z - b.friction_force_z),
+                              std::abs(a.top_reaction_x - b.top_reaction_x),
+                              std::abs(a.top_reaction_y - b.top_reaction_y),
+                              std::abs(a.top_reaction_z - b.top_reaction_z),
+                              std::abs(a.work.friction_dissipation - b.work.friction_dissipation) / dt});
+            friction = std::max(friction, std::hypot(a.friction_force, a.friction_force_z));
+            touching += a.active_nodes > 0;
         }
+        EXPECT_GT(touching, 100);
+        if (c.friction > 0) EXPECT_GT(friction, 0.1 * scale * c.friction);
+        EXPECT_LT(worst / scale, 1e-10);
+        State back;
+        reduced.to_full(r, back);
+        EXPECT_LT((back.u - s.u).cwiseAbs().maxCoeff() / s.u.cwiseAbs().maxCoeff(), 1e-10);
     }
 }
 

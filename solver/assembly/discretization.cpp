@@ -150,21 +150,6 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
     }
     if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))
         reject("lambda", "such that lambda + 2 mu / 3 > 0 for a 3D body (a positive bulk modulus)", p.lambda);
-    // Not built yet (issue 55): the reduced body of a 3D body with friction (its contact solve
-    // has one tangential direction). Refused rather than run as if x were the only direction.
-    // The reduced body's contact edge holds the y (and x) dofs; variant 2 leaves the contact
-    // nodes' z dofs massless too, and they are not edge dofs yet (measured: all modes then
-    // miss the full body by 1 %).
-    if (mesh.dim == 3 && p.modes != 0 && p.mass_matrix == MassVariant::redistributed_both)
-        reject("modes", "0 on a 3D body with mass_matrix = redistributed_both for now (its contact "
-               "nodes' massless z dofs are not in the reduced body's edge yet)", p.modes);
-    if (mesh.dim == 3 && p.friction_coefficient != 0 && p.modes != 0)
-        reject("friction_coefficient", "0 on a reduced 3D body (modes > 0) for now (its isotropic "
-               "friction is not built yet)", p.friction_coefficient);
-    if (mesh.dim == 3 && rate_law(p).active() && p.modes != 0)
-        reject(p.stribeck_velocity > 0 ? "stribeck_velocity" : "viscous_friction",
-               "0 on a reduced 3D body (modes > 0) for now (its isotropic friction is not built yet)",
-               p.stribeck_velocity > 0 ? p.stribeck_velocity : p.viscous_friction);
 }
 
 void check_reduced_edge(const SceneParameters& p) {

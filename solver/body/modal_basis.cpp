@@ -40,7 +40,7 @@ private:
 };
 
 // The contact unknowns as signed free positions: N_i = -e_y(i), T_i = +e_x(i) (the stepper's B),
-// the x ones only where the tangential dofs are not held.
+// then a 3D body's +e_z(i); the tangential ones only where they are not held.
 struct ContactRows {
     std::vector<int> position;
     std::vector<double> sign;
@@ -49,11 +49,18 @@ ContactRows contact_rows(const Discretization& d, bool hold_tangential) {
     ContactRows b;
     for (int y : d.contact_y) b.position.push_back(y), b.sign.push_back(-1);
     if (!hold_tangential)
-        for (int x : d.contact_x) b.position.push_back(x), b.sign.push_back(1);
+        for (const auto* dofs : {&d.contact_x, &d.contact_z})
+            for (int t : *dofs) b.position.push_back(t), b.sign.push_back(1);
     return b;
 }
 
 }  // namespace
+
+std::vector<int> tangential_contact_dofs(const Discretization& d) {
+    std::vector<int> dofs = d.contact_x;
+    dofs.insert(dofs.end(), d.contact_z.begin(), d.contact_z.end());
+    return dofs;
+}
 
 SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions) {
     std::vector<Eigen::Triplet<double>> t;
@@ -68,7 +75,7 @@ int finite_mode_count(const Discretization& d, bool hold_tangential) {
     for (Eigen::Index k = 0; k < d.M_free.rows(); ++k) massless += d.M_free.coeff(k, k) == 0;
     int held_with_mass = 0;
     if (hold_tangential)
-        for (int x : d.contact_x) held_with_mass += d.M_free.coeff(x, x) != 0;
+        for (int x : tangential_contact_dofs(d)) held_with_mass += d.M_free.coeff(x, x) != 0;
     return static_cast<int>(d.M_free.rows()) - massless - held_with_mass;
 }
 
@@ -153,11 +160,11 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
     if (modes < 1 || modes > finite)
         throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +
                                     std::to_string(finite) + " finite modes" +
-                                    (hold_tangential ? " with its contact x dofs held (reduced_edge = tangential_mass)" : ""));
+                                    (hold_tangential ? " with its contact nodes' tangential dofs held (reduced_edge = tangential_mass)" : ""));
     const Eigen::Index n = d.A_free.rows();
     // The held dofs X and the rest I: the modes, the residual and the static solves are the
     // rest's (with nothing held, the free dofs themselves).
-    const std::vector<int> held = hold_tangential ? d.contact_x : std::vector<int>{};
+    const std::vector<int> held = hold_tangential ? tangential_contact_dofs(d) : std::vector<int>{};
     std::vector<int> rest, rest_index(static_cast<size_t>(n), -1);
     {
         std::vector<bool> is_held(static_cast<size_t>(n), false);

@@ -22,8 +22,8 @@ struct ModalBasis {
     // with every finite mode kept only the massless contact dofs' columns remain, and
     // residual^T M residual = 0 there.
     Eigen::MatrixXd residual;  // n_f x k
-    // The tangential-mass edge (hold_tangential): the contact x dofs kept as coordinates of
-    // their own, X. The modes and the residual are then those of the body with X held (zero
+    // The tangential-mass edge (hold_tangential): the contact x (and a 3D body's z) dofs kept
+    // as coordinates of their own, X (tangential_contact_dofs' order). The modes and the residual are then those of the body with X held (zero
     // on X's rows; the residual of the contact normal dofs only), and these are Craig-Bampton's
     // constraint modes: identity on X's rows, -A_II^-1 A_IX on the rest (I). They carry the
     // mass of X and of the interior they drag along. n_f x n_X; n_f x 0 for the massless edge.
@@ -63,6 +63,10 @@ struct LowestModes {
     int iterations = 0, applications = 0;
 };
 LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes, int dense_limit = 400);
+
+// The contact nodes' tangential free positions: x, then a 3D body's z (the order of the
+// tangential contact unknowns and of the tangential-mass edge's coordinates).
+std::vector<int> tangential_contact_dofs(const Discretization& d);
 
 // The columns `positions` of an identity of n rows: a sparse selection (P^T A P picks a block).
 SparseMatrix selection(Eigen::Index n, const std::vector<int>& positions);

@@ -49,19 +49,22 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     }
 
     const int nc = num_contact_nodes();
-    Bhat_.resize(2 * nc, n);
-    Blift_.resize(2 * nc);
-    for (int i = 0; i < nc; ++i) {  // N_i = -e_y(i), T_i = +e_x(i), as the stepper's B
-        const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_x[static_cast<size_t>(i)];
-        Bhat_.row(i).head(nd_) << -basis_.modes.row(y), -basis_.residual.row(y);
-        Bhat_.row(nc + i).head(nd_) << basis_.modes.row(x), basis_.residual.row(x);
-        Bhat_.row(i).tail(nx_) = -TC.row(y);
-        Bhat_.row(nc + i).tail(nx_) = TC.row(x);
-        Blift_[i] = -basis_.lift[y];
-        Blift_[nc + i] = basis_.lift[x];
+    tangents_ = d.mesh.dim - 1;
+    const Eigen::Index rows = (1 + tangents_) * nc;
+    Bhat_.resize(rows, n);
+    Blift_.resize(rows);
+    // N_i = -e_y(i), T_i = +e_x(i) (and a 3D body's +e_z(i)), as the stepper's B.
+    const std::vector<int> tangential = tangential_contact_dofs(d);
+    for (Eigen::Index r = 0; r < rows; ++r) {
+        const bool normal = r < nc;
+        const int dof = normal ? d.contact_y[static_cast<size_t>(r)] : tangential[static_cast<size_t>(r - nc)];
+        const double sign = normal ? -1.0 : 1.0;
+        Bhat_.row(r).head(nd_) << sign * basis_.modes.row(dof), sign * basis_.residual.row(dof);
+        Bhat_.row(r).tail(nx_) = sign * TC.row(dof);
+        Blift_[r] = sign * basis_.lift[dof];
     }
-    tangential_rows_are_x_ = nx_ > 0 && Bhat_.bottomRows(nc).leftCols(nd_).isZero(0) &&
-                             Bhat_.bottomRows(nc).rightCols(nx_).isIdentity(0);
+    tangential_rows_are_x_ = nx_ > 0 && Bhat_.bottomRows(rows - nc).leftCols(nd_).isZero(0) &&
+                             Bhat_.bottomRows(rows - nc).rightCols(nx_).isIdentity(0);
 
     // The clamp: e = 1 on the clamped y dofs.
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
@@ -110,15 +113,16 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     if (d.mesh.dim == 3) clamp_z_ = clamp_rows(2);
 
     start_run();
-    problem_.a.resize(2 * nc);
+    problem_.tangents = tangents_;
+    problem_.a.resize(rows);
     problem_.gap_limit.resize(nc);
-    problem_.slip_origin.resize(nc);
+    problem_.slip_origin.resize(tangents_ * nc);
     rhs_.resize(n);
     w_.resize(n);
-    contact_u_.resize(2 * nc);
+    contact_u_.resize(rows);
     normal_u_.resize(nc);
     normal_u_at_.setConstant(n + 1, std::numeric_limits<double>::quiet_NaN());  // matches no state
-    bw_.resize(2 * nc);
+    bw_.resize(rows);
     du_.resize(n);
     contact_force_.resize(n);
     dw_.resize(n);
@@ -332,7 +336,7 @@ bool ReducedStepper::set_clamp(State& s, double top, double rate) const {
 bool ReducedStepper::fits(const State& s) const {
     const Eigen::Index nc = num_contact_nodes();
     return s.u.size() == size() + 2 && s.v.size() == size() + 2 &&
-           (s.lambda.size() == nc || s.lambda.size() == 2 * nc) && s.sticking.size() == nc;
+           (s.lambda.size() == nc || s.lambda.size() == (1 + tangents_) * nc) && s.sticking.size() == nc;
 }
 
 ContactFactorization ReducedStepper::contact_factorization() const {
@@ -458,7 +462,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // products are bound by the memory they read: only the rows used are formed. The normal
     // rows of B u^k (-u_y of the contact nodes: the gaps), and B w.
     contact_u_.head(nc) = normal_displacements(s);
-    edge_product(0, 2 * nc, w_, bw_);
+    edge_product(0, bw_.size(), w_, bw_);
     bw_ += Blift_ * w_t;
 
     problem_.a = bw_.head(problem_.a.size());
@@ -486,8 +490,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         // last product, at its solution. Without friction its tangential rows are formed.
         bw_.head(unknowns) = solver_.displacements();
         if (!friction) {
-            edge_product(nc, nc, w_, bw_.tail(nc));
-            bw_.tail(nc) += Blift_.tail(nc) * w_t;
+            const Eigen::Index t = tangents_ * nc;
+            edge_product(nc, t, w_, bw_.tail(t));
+            bw_.tail(t) += Blift_.tail(t) * w_t;
         }
     } else {
         s.lambda.setZero();
@@ -525,6 +530,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, solver_.status(), [&](int i) { return contact_u_[i]; },
         [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
+    if (tangents_ == 2)
+        record_contact_z(report, snapshot_, s.lambda, dt, load.foundation_velocity_z,
+                         [&](int i) { return 2 * bw_[2 * nc + i]; });
 
     zdot = 2 * c2 * w_ - zdot;
     z += 2 * w_;

@@ -133,6 +133,7 @@ private:
     // X's (M_XX) only, since the residual's rows are zero (massless): the substep's products
     // with them read a fifth of M_dX at nx = 160 with 80 modes. And A_hat's X block (Guyan's
     // condensed stiffness; A_hat has no X coupling).
+    Eigen::Index tangents_ = 1;  // tangential contact unknowns per node: 1 in 2D, 2 (x, z) in 3D
     Eigen::Index nd_ = 0, nx_ = 0;  // diagonal coordinates (m + k), tangential ones (0 or n_c)
     Eigen::MatrixXd mass_mx_;       // m x n_X
     Eigen::MatrixXd mass_xx_;       // n_X x n_X

@@ -478,21 +478,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
         touching, f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
         [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
-    if (d.mesh.dim == 3) {  // the z share of the friction's works, forces and slip
-        const double foundation_step = load.foundation_velocity_z * dt;
-        snapshot_.lambda_T_z.resize(nc);
-        snapshot_.slip_velocity_z.resize(nc);
-        for (int i = 0; i < nc; ++i) {
-            const double lz = friction ? s.lambda[2 * nc + i] : 0.0;
-            const double dz = 2 * w_[d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 2)];
-            snapshot_.lambda_T_z[i] = lz;
-            snapshot_.slip_velocity_z[i] = (dz - foundation_step) / dt;
-            report.friction_force_z += lz;
-            report.work.friction += lz * dz;
-            report.work.foundation += lz * foundation_step;
-            report.work.friction_dissipation += lz * (foundation_step - dz);
-        }
-    }
+    if (d.mesh.dim == 3)
+        record_contact_z(report, snapshot_, s.lambda, dt, load.foundation_velocity_z,
+                         [&](int i) { return 2 * w_[d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 2)]; });
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.

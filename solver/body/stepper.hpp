@@ -179,6 +179,28 @@ void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::Vec
     report.corner_lambda_T = snapshot.lambda_T[0];
 }
 
+// A 3D body's z share, after record_contact: the friction force and works of lambda_T_z, and
+// the snapshot's z friction and slip velocity (relative to the foundation). dz(i): contact
+// node i's z increment over the substep.
+template <class TangentialStep>
+void record_contact_z(SubstepReport& report, ContactSnapshot& snapshot, const Eigen::VectorXd& lambda,
+                      double dt, double foundation_velocity_z, TangentialStep&& dz) {
+    const Eigen::Index nc = snapshot.lambda_N.size();
+    const bool friction = lambda.size() > 2 * nc;
+    const double foundation_step = foundation_velocity_z * dt;
+    snapshot.lambda_T_z.resize(nc);
+    snapshot.slip_velocity_z.resize(nc);
+    for (int i = 0; i < static_cast<int>(nc); ++i) {
+        const double lz = friction ? lambda[2 * nc + i] : 0.0, d = dz(i);
+        snapshot.lambda_T_z[i] = lz;
+        snapshot.slip_velocity_z[i] = (d - foundation_step) / dt;
+        report.friction_force_z += lz;
+        report.work.friction += lz * d;
+        report.work.foundation += lz * foundation_step;
+        report.work.friction_dissipation += lz * (foundation_step - d);
+    }
+}
+
 // The full body: every dof of the mesh is a coordinate of its State.
 class Stepper : public Body {
 public:

@@ -332,7 +332,7 @@ void Simulation::initial_reactions() {
 void Simulation::set_friction_coefficient(double friction) {
     SceneParameters p = body_->parameters();
     p.friction_coefficient = friction;
-    check_dimension(body_->discretization().mesh, p);  // a 3D body has no friction yet
+    check_dimension(body_->discretization().mesh, p);
     body_->set_friction_coefficient(friction);
 }
 

@@ -12,6 +12,10 @@
 #include "gmsh.hpp"
 #include "text.hpp"
 
+#ifndef CONTACTBODY_ONE_MODEL_TABLE
+#define CONTACTBODY_ONE_MODEL_TABLE 0
+#endif
+
 namespace contactbody::fmu {
 
 std::string mesh_path(const std::string& mesh, const std::string& resources) {
@@ -123,7 +127,7 @@ Variable edge_state_output(const char* name, unsigned vr, const char* descriptio
 
 // The edge arrays follow the body: nx + 1 for the rectangle, a mesh's contact nodes (a mesh
 // that cannot be read leaves edge_nodes as it is: initialization refuses the file, naming why).
-void follow_nx(Values& v, const std::string&) {
+[[maybe_unused]] void follow_nx(Values& v, const std::string&) {
     if (v.mesh.empty()) v.edge_nodes = v.nx + 1;
 }
 void follow_mesh(Values& v, const std::string& resources) {
@@ -141,13 +145,13 @@ void follow_mesh(Values& v, const std::string& resources) {
 void retune_friction(Simulation& s, double friction) { s.set_friction_coefficient(friction); }
 
 std::vector<Variable> checked(std::vector<Variable> rows) {
-    check_variable_table(rows);
+    check_variable_table(rows, !CONTACTBODY_ONE_MODEL_TABLE);
     return rows;
 }
 
 }  // namespace
 
-void check_variable_table(const std::vector<Variable>& rows) {
+void check_variable_table(const std::vector<Variable>& rows, bool every_field) {
     const auto fail = [](const std::string& what) {
         throw std::logic_error("variable table: " + what);
     };
@@ -157,29 +161,28 @@ void check_variable_table(const std::vector<Variable>& rows) {
         return nullptr;
     };
     // Within each model a reference and a name are one variable's; a row of one model may
-    // share them with the other's (the 3D model's mesh has its own description).
-    for (int model : {2, 3}) {
-        std::unordered_map<unsigned, const char*> references;
-        std::unordered_map<std::string, unsigned> names;
-        for (const Variable& v : rows) {
-            if (v.dimension != 0 && v.dimension != model) continue;
-            if (!references.emplace(v.value_reference, v.name).second)
-                fail(std::string(v.name) + " repeats the value reference of " +
-                     references[v.value_reference]);
-            if (!names.emplace(v.name, v.value_reference).second)
-                fail(std::string(v.name) + " is declared twice for the " + std::to_string(model) + "D model");
-        }
-    }
-    for (const Variable& a : rows)  // the same name is the same reference in both models
-        for (const Variable& b : rows)
-            if (std::string(a.name) == b.name && a.value_reference != b.value_reference)
+    // share them with the other's (the 3D model's mesh has its own description), and the same
+    // name is the same reference in both.
+    const auto together = [](const Variable& a, const Variable& b) {
+        return a.dimension == 0 || b.dimension == 0 || a.dimension == b.dimension;
+    };
+    for (size_t i = 0; i < rows.size(); ++i)
+        for (size_t j = 0; j < i; ++j) {
+            const Variable &a = rows[i], &b = rows[j];
+            const bool same_name = std::strcmp(a.name, b.name) == 0;
+            if (same_name && a.value_reference != b.value_reference)
                 fail(std::string(a.name) + " has two value references");
+            if (!together(a, b)) continue;
+            if (a.value_reference == b.value_reference && !same_name)
+                fail(std::string(a.name) + " repeats the value reference of " + b.name);
+            if (same_name) fail(std::string(a.name) + " is declared twice for one model");
+        }
     SceneParameters scene;
     std::vector<std::string> scene_names;
     SceneParameters::for_each(
         [&](const char* name, Reuse, const auto&) {
             const Variable* v = named(name);
-            if (!v || v->causality != C::parameter || v->fmu_only)
+            if (every_field && (!v || v->causality != C::parameter || v->fmu_only))
                 fail(std::string("SceneParameters' ") + name + " is set by no parameter");
             scene_names.push_back(name);
         },
@@ -194,7 +197,8 @@ void check_variable_table(const std::vector<Variable>& rows) {
     Observables::for_each(
         [&](const char* name, const auto&) {
             const Variable* v = named(name);
-            if (!v || v->causality != C::output) fail(std::string("Observables' ") + name + " is no output");
+            if (every_field && (!v || v->causality != C::output))
+                fail(std::string("Observables' ") + name + " is no output");
         },
         probe);
 }
@@ -238,18 +242,32 @@ Variable& Variable::starting_at(const char* text) {
 
 namespace {
 
+// A row of one model (Variable::dimension). A platform build's binary holds its own model's rows
+// only (CONTACTBODY_ONE_MODEL_TABLE: the other's would take room in the FMU, issue 41's 5 MB);
+// the native build's hold both, and its table test checks them together.
+#if !CONTACTBODY_ONE_MODEL_TABLE || CONTACTBODY_MODEL_DIMENSION == 2
+#define PLANAR_ROW(...) __VA_ARGS__.only_in(2),
+#else
+#define PLANAR_ROW(...)
+#endif
+#if !CONTACTBODY_ONE_MODEL_TABLE || CONTACTBODY_MODEL_DIMENSION == 3
+#define SOLID_ROW(...) __VA_ARGS__.only_in(3),
+#else
+#define SOLID_ROW(...)
+#endif
+
 // The rows. FMI limits are inclusive: where a value must be > 0, min is the smallest meaningful
 // positive value. Enumerations take their range from their type.
 const std::vector<Variable>& all_rows() {
     static const std::vector<Variable> rows = checked({
         // Parameters (docs/variables.md lists them). A row marked only_in(2) or only_in(3)
         // belongs to one model (variables.hpp's model_dimension).
-        string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused; setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh).only_in(2),
-        string("mesh", 35, &Values::mesh, "The body's mesh: a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order tetrahedra, in metres, with physical groups of boundary surfaces named contact (may touch the foundation, the plane y = const under its lowest node by initial_gap, which slides in x and z) and clamp (driven as the top: u_x = u_z = 0, u_y = top_displacement); its path absolute or relative to the FMU's resources folder. The default block.msh (in resources/) is a 0.1 m cube of 6 x 6 x 6 Kuhn-split cells, its bottom face in contact and its top face clamped. Setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh).only_in(3).starting_at(solid_default_mesh),
-        real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body").only_in(2),
-        real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body").only_in(2),
-        integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx).only_in(2),
-        integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both).only_in(2),
+        PLANAR_ROW(string("mesh", 35, &Values::mesh, "The body's mesh: empty = the rectangle of width, height, nx and ny; else a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order triangles in the x-y plane, in metres, with physical groups of boundary lines named contact (may touch the foundation, which lies under its lowest node by initial_gap) and clamp (driven as the top edge); its path absolute or relative to the FMU's resources folder. width, height, nx and ny are then unused; setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh))
+        SOLID_ROW(string("mesh", 35, &Values::mesh, "The body's mesh: a Gmsh file (MSH 4.1 or 2.2, ASCII) of first-order tetrahedra, in metres, with physical groups of boundary surfaces named contact (may touch the foundation, the plane y = const under its lowest node by initial_gap, which slides in x and z) and clamp (driven as the top: u_x = u_z = 0, u_y = top_displacement); its path absolute or relative to the FMU's resources folder. The default block.msh (in resources/) is a 0.1 m cube of 6 x 6 x 6 Kuhn-split cells, its bottom face in contact and its top face clamped. Setting it sets edge_nodes to its number of contact nodes").as_structural(Standard::both).then(follow_mesh).starting_at(solid_default_mesh))
+        PLANAR_ROW(real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"))
+        PLANAR_ROW(real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"))
+        PLANAR_ROW(integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x").as_structural(Standard::both).then(follow_nx))
+        PLANAR_ROW(integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y").as_structural(Standard::both))
         integer("edge_nodes", 31, &Values::edge_nodes, solid_model ? solid_default_mesh_contact_nodes : 21, solid_model ? 3 : 2, solid_model ? static_cast<double>(max_nodes) : max_cells_per_direction + 1, "Contact nodes, the size of the edge arrays: nx + 1 for the rectangle (setting nx sets it; another value is refused when Configuration Mode ends and at initialization); with a mesh its number of contact nodes (setting mesh sets it; another value is refused at initialization, naming it)").as_structural(Standard::fmi3).as_fmu_only(),
         real("density", 5, &Values::density, "kg/m3", 1000, 1e-3, inf, "Density rho"),
         real("lambda", 6, &Values::lambda, "Pa", 300e6, none, none, "First Lame coefficient (lambda + mu > 0)"),
@@ -270,7 +288,7 @@ const std::vector<Variable>& all_rows() {
         real("top_mass", 23, &Values::top_mass, per_body("kg/m", "kg"), 1.0, 1e-9, inf, "Mass of the top plate (top_control = force)"),
         real("initial_velocity_x", 24, &Values::initial_velocity_x, "m/s", 0, none, none, "Uniform initial velocity of the body, x (the clamped dofs excepted)"),
         real("initial_velocity_y", 25, &Values::initial_velocity_y, "m/s", 0, none, none, "Uniform initial velocity of the body, y (with the plate under force control)"),
-        real("initial_velocity_z", 37, &Values::initial_velocity_z, "m/s", 0, none, none, "Uniform initial velocity of the body, z (the clamped dofs excepted)").only_in(3),
+        SOLID_ROW(real("initial_velocity_z", 37, &Values::initial_velocity_z, "m/s", 0, none, none, "Uniform initial velocity of the body, z (the clamped dofs excepted)"))
         enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0, "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)"),
         real("max_energy", 29, &Values::max_energy, per_body("J/m", "J"), 0, 0, inf, "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit"),
         real("max_energy_ratio", 30, &Values::max_energy_ratio, "", 1e6, 0, inf, "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with an error status, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is above the growth of every run of the paper's Figs. 7-8 but variant 0 at internal_step 1e-6 s, whose growth is chaotic and crosses it in some draws (the examples that measure growth set 0)"),
@@ -281,7 +299,7 @@ const std::vector<Variable>& all_rows() {
         enumeration("reduced_edge", 36, &Values::reduced_edge, "ReducedEdge", 0, per_body("The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose x dofs have no mass); by_variant takes the default measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2", "The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x and z dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose tangential dofs have no mass); by_variant takes the default measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2")),
         // Inputs
         real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, per_body("Horizontal velocity V of the rigid foundation", "Velocity of the rigid foundation in its plane, x component")).as_input(Input::foundation_velocity),
-        real("foundation_velocity_z", 38, &Values::foundation_velocity_z, "m/s", 0, none, none, "Velocity of the rigid foundation in its plane, z component").as_input(Input::foundation_velocity_z).only_in(3),
+        SOLID_ROW(real("foundation_velocity_z", 38, &Values::foundation_velocity_z, "m/s", 0, none, none, "Velocity of the rigid foundation in its plane, z component").as_input(Input::foundation_velocity_z))
         real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, per_body("Prescribed vertical displacement of the top edge", "Prescribed vertical (y) displacement of the clamp group")).as_input(Input::top_displacement),
         real("top_force", 22, &Values::top_force, per_body("N/m", "N"), 0, none, none, "Force pressing the top plate down (top_control = force), positive downwards").as_input(Input::top_force),
         // Outputs
@@ -292,12 +310,12 @@ const std::vector<Variable>& all_rows() {
         output("energy_minus_friction_work", 104, per_body("J/m", "J"), "E - xi (paper Fig. 8)"),
         output("normal_force", 105, per_body("N/m", "N"), "Total normal contact force on the body, a magnitude (>= 0): the average over the last communication step of its substeps' forces"),
         output("friction_force", 106, per_body("N/m", "N"), "Total friction force on the body, signed x component (> 0: the foundation drags the body towards +x): the average over the last communication step"),
-        output("friction_force_z", 125, "N", "Total friction force on the body, signed z component: the average over the last communication step").only_in(3),
+        SOLID_ROW(output("friction_force_z", 125, "N", "Total friction force on the body, signed z component: the average over the last communication step"))
         output("corner_pressure", 107, "Pa", per_body("Contact pressure at node (0,0), averaged over the last step", "Contact pressure at the first contact node (least x, then least z), averaged over the last step")),
         output("corner_friction", 108, "Pa", per_body("Friction force density at node (0,0), averaged over the last step", "Friction force density at the first contact node, x component, averaged over the last step")),
         output("top_reaction_x", 109, per_body("N/m", "N"), "Force of the clamp (or plate) on the body, signed x component, averaged over the last communication step"),
         output("top_reaction_y", 110, per_body("N/m", "N"), "Force of the clamp (or plate) on the body, signed y component (< 0 while it presses the body down), averaged over the last communication step"),
-        output("top_reaction_z", 126, "N", "Force of the clamp (or plate) on the body, signed z component, averaged over the last communication step").only_in(3),
+        SOLID_ROW(output("top_reaction_z", 126, "N", "Force of the clamp (or plate) on the body, signed z component, averaged over the last communication step"))
         output("active_contact_nodes", 111, "", "Contact nodes in contact at the last substep"),
         output("slipping_contact_nodes", 112, "", "Contact nodes slipping at the last substep"),
         output("max_penetration", 113, "m", "Largest penetration of the bottom nodes at the ends u^{k+1} of the last step's substeps. Contact is imposed at the midpoints u^{k+1/2}, so this is the scheme's overshoot between midpoints (about dt/2 x the normal velocity), not a violated contact condition"),
@@ -314,12 +332,12 @@ const std::vector<Variable>& all_rows() {
         output("gauss_seidel_sweeps", 124, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)"),
         // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
         edge_output("edge_x", 130, "m", &EdgeSnapshot::x, "Position x of each bottom node (reference configuration)").as_discrete(),
-        edge_output("edge_z", 136, "m", &EdgeSnapshot::z, "Position z of each contact node (reference configuration)").as_discrete().only_in(3),
+        SOLID_ROW(edge_output("edge_z", 136, "m", &EdgeSnapshot::z, "Position z of each contact node (reference configuration)").as_discrete())
         edge_output("edge_pressure", 131, "Pa", &EdgeSnapshot::pressure, "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)"),
         edge_output("edge_friction", 132, "Pa", &EdgeSnapshot::friction, "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)"),
-        edge_output("edge_friction_z", 137, "Pa", &EdgeSnapshot::friction_z, "Friction force density at each contact node, signed z component, averaged like friction_force_z (node shares x densities sum to friction_force_z)").only_in(3),
+        SOLID_ROW(edge_output("edge_friction_z", 137, "Pa", &EdgeSnapshot::friction_z, "Friction force density at each contact node, signed z component, averaged like friction_force_z (node shares x densities sum to friction_force_z)"))
         edge_output("edge_slip_velocity", 133, "m/s", &EdgeSnapshot::slip_velocity, "Velocity x of each bottom node relative to the foundation over the last substep"),
-        edge_output("edge_slip_velocity_z", 138, "m/s", &EdgeSnapshot::slip_velocity_z, "Velocity z of each contact node relative to the foundation over the last substep").only_in(3),
+        SOLID_ROW(edge_output("edge_slip_velocity_z", 138, "m/s", &EdgeSnapshot::slip_velocity_z, "Velocity z of each contact node relative to the foundation over the last substep"))
         edge_output("edge_gap", 134, "m", &EdgeSnapshot::gap, "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)"),
         edge_state_output("edge_state", 135, "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)"),
     });

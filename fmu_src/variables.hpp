@@ -133,9 +133,10 @@ const std::vector<Variable>& all_model_variables();
 // in the FMU's resources folder; "" (the rectangle) stays "".
 std::string mesh_path(const std::string& mesh, const std::string& resources);
 // The table's consistency, checked when it is built: value references unique, every parameter
-// reaching a SceneParameters field or declared FMU-only, every SceneParameters field set by a
-// parameter, every Observables field an output. Throws std::logic_error naming what is wrong.
-void check_variable_table(const std::vector<Variable>& rows);
+// reaching a SceneParameters field or declared FMU-only, and with every_field (the rows of both
+// models) every SceneParameters field set by a parameter, every Observables field an output.
+// Throws std::logic_error naming what is wrong.
+void check_variable_table(const std::vector<Variable>& rows, bool every_field = true);
 // Throws std::invalid_argument naming the variable if value is not finite or out of range.
 void check_range(const Variable& v, double value);
 // Longest accepted String value (bytes).

@@ -17,7 +17,7 @@ from fmpy.fmi1 import FMICallException
 import numpy as np
 import pytest
 
-from conftest import FMU, ROOT, Instance
+from conftest import FMU, ROOT, SANITIZED, Instance
 
 FMU3D = FMU.with_name("ContactBody3D.fmu")
 FMU3D_FMI3 = FMU.with_name("ContactBody3D_fmi3.fmu")
@@ -365,6 +365,7 @@ def test_turning_pad_example_measures_what_it_draws(tmp_path):
     assert summary["friction_over_F_normal_at_end"] == pytest.approx(1, abs=1e-2)
 
 
+@pytest.mark.skipif(SANITIZED, reason="dask workers do not load the sanitized FMU (as test_study.py)")
 def test_a_study_runs_on_the_3d_body_with_its_units(tmp_path):
     """contactbody.study on ContactBody3D: two points sliding along x and along z; the z
     friction has its metric, the apparent friction ratio is the mean force's magnitude, and

@@ -246,3 +246,19 @@ def test_fmi3_layer_on_windows_continues_a_linux_state_bit_for_bit(tmp_path):
         assert out.returncode == 0, out.stderr[-3000:]
         got = [[float.fromhex(x) for x in line.split()] for line in outputs.read_text().splitlines()]
         assert got == rows[steps:], nx
+
+
+@pytest.mark.parametrize("values", [
+    {"mass_matrix": 1},
+    {"mass_matrix": 4, "stribeck_velocity": 5.0, "static_friction_ratio": 1.5, "viscous_friction": 0.01},
+    {"modes": 60, "reduced_edge": 2},
+], ids=["isotropic_friction", "slip_rate_law", "reduced_body"])
+def test_the_3d_model_is_bit_identical_to_linux(values):
+    """ContactBody3D's win64 binary (the tetrahedral kernels, the disc friction, the dense
+    eigensolver of the reduced body): the default block sliding along (12, 16) m/s, 1 ms."""
+    fmu3d = FMU.with_name("ContactBody3D.fmu")
+    run = dict(stop_time=1e-3, output_interval=1e-4,
+               start_values={"friction_coefficient": 0.5, "foundation_velocity": 12.0,
+                             "foundation_velocity_z": 16.0, "damping_stiffness": 2e-6, **values})
+    windows, linux = extract_for("win64", fmu3d), extract_for("linux64", fmu3d)
+    assert_same_bits(fmpy.simulate_fmu(windows, **run), fmpy.simulate_fmu(linux, **run))

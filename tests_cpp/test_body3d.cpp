@@ -419,6 +419,72 @@ TEST(Body3D, SlipRateLawOnTheDiscClosesTheBalanceAndObeysTheLaw) {
     }
 }
 
+// The sparse contact solve with isotropic friction (sparse_contact.hpp: slipping nodes loaded
+// along their slip direction, a fixed point carried by the Newton iterations) against the
+// condensed one on W: sliding along 0.6 rad at 20 m/s, and creeping at 5 cm/s under a heading
+// that turns a right angle with static friction (stick and slip), variants 1 and 4. Every
+// substep's normal force, friction force (x, z) and clamp reactions agree to 1e-8 of the normal
+// force, the works to 1e-9; the sparse path's balance closes to 1e-9.
+TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
+    const double dt = 2e-6;
+    for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact}) {
+        for (const bool creeping : {false, true}) {
+            SCOPED_TRACE(std::to_string(static_cast<int>(v)) + (creeping ? " creeping" : " sliding"));
+            SceneParameters p = box_scene(Box{}, "box_paths.msh", v);
+            p.friction_coefficient = 0.4;
+            p.static_friction_ratio = creeping ? 1.3 : 1.0;
+            Stepper sparse(p), condensed(p);
+            sparse.set_contact_path(Stepper::ContactPath::sparse);
+            condensed.set_contact_path(Stepper::ContactPath::condensed);
+            State a = sparse.initial_state(-2e-5), b = condensed.initial_state(-2e-5);
+            const auto energy = [&](Stepper& body, const State& state) {
+                const auto [kinetic, strain] = body.kinetic_and_strain_energy(state);
+                return kinetic + strain;
+            };
+            const double E0 = energy(sparse, a);
+            Works wa, wb;
+            double worst = 0, worst_work = 0, scale = 0, work_scale = E0;
+            int slipping = 0, sticking = 0, iterations = 0;
+            const int substeps = 300;
+            const double speed = creeping ? 0.05 : 20, rate = creeping ? (M_PI / 2) / (substeps * dt) : 0;
+            for (int k = 0; k < substeps; ++k) {
+                SubstepLoad load;
+                load.top_start = load.top_end = -2e-5;
+                const double heading = creeping ? rate * k * dt : 0.6;
+                load.foundation_velocity = speed * std::cos(heading);
+                load.foundation_velocity_z = speed * std::sin(heading);
+                const SubstepReport ra = sparse.substep(a, dt, load);
+                const SubstepReport rb = condensed.substep(b, dt, load);
+                wa += ra.work;
+                wb += rb.work;
+                scale = std::max(scale, std::abs(rb.normal_force));
+                work_scale = std::max({work_scale, std::abs(wb.clamp), std::abs(wb.friction), std::abs(wb.foundation)});
+                worst = std::max({worst, std::abs(ra.normal_force - rb.normal_force),
+                                  std::abs(ra.friction_force - rb.friction_force),
+                                  std::abs(ra.friction_force_z - rb.friction_force_z),
+                                  std::abs(ra.top_reaction_x - rb.top_reaction_x),
+                                  std::abs(ra.top_reaction_y - rb.top_reaction_y),
+                                  std::abs(ra.top_reaction_z - rb.top_reaction_z)});
+                worst_work = std::max({worst_work, std::abs(wa.friction - wb.friction),
+                                       std::abs(wa.friction_dissipation - wb.friction_dissipation),
+                                       std::abs(wa.normal_contact - wb.normal_contact)});
+                slipping += rb.slipping_nodes;
+                sticking += rb.active_nodes - rb.slipping_nodes;
+                iterations += ra.contact_iterations;
+            }
+            EXPECT_TRUE(sparse.sparse_contact());
+            EXPECT_FALSE(condensed.sparse_contact());
+            EXPECT_GT(slipping, 100);
+            if (creeping) EXPECT_GT(sticking, 100);
+            EXPECT_LT(worst / scale, 1e-8);
+            EXPECT_LT(worst_work / work_scale, 1e-9);
+            const double balance = std::abs(energy(sparse, a) - E0 - (wa.clamp + wa.normal_contact + wa.friction - wa.damping));
+            EXPECT_LT(balance / work_scale, 1e-9);
+            RecordProperty(creeping ? "creeping_newton_iterations" : "sliding_newton_iterations", iterations);
+        }
+    }
+}
+
 // Stick and slip under a foundation that creeps and turns its heading by a right angle over
 // the run: nodes stick, break loose with the static coefficient, slip in a turning direction;
 // the balance and the law hold throughout.

@@ -92,7 +92,22 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
     phi.resize(lambda.size());
     trial_pattern_.resize(n);
     trial_status_.resize(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
+    if (friction && p.tangents == 2) {  // a 3D body: the disc (one r_T for both directions,
+        trial_direction_.resize(2 * n);  // the mean of K's: invariant under a turn about y)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
+            const double u[3] = {-w[K.dof(i)], w[K.dof(n + i)], w[K.dof(2 * n + i)]};
+            const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
+            const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+            const DiscNode d = disc_node(l, u, K.stiffness(i), rT, p.gap_limit[i], origin, p.friction[i]);
+            for (int c = 0; c < 3; ++c) phi[c * n + i] = d.phi[c];
+            trial_status_[i] = d.status;
+            trial_pattern_[i] = d.status == NodeStatus::open ? 0 : d.status == NodeStatus::stick ? 1 : 2;
+            trial_direction_[i] = d.direction[0];
+            trial_direction_[n + i] = d.direction[1];
+        }
+    }
+    for (Eigen::Index i = 0; i < n && !(friction && p.tangents == 2); ++i) {
         double unused = 0;
         double& phiT = friction ? phi[n + i] : unused;
         trial_pattern_[i] = alart_curnier_node(
@@ -115,16 +130,18 @@ void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem&
     for (Eigen::Index i = 0; i < n; ++i) {
         const bool active = pattern_[i] != 0;
         lambda_new_[i] = active ? -(K.row_product(i, w_new_) - rhs[K.dof(i)]) : 0.0;
-        if (friction)
-            lambda_new_[n + i] = active ? K.row_product(n + i, w_new_) - rhs[K.dof(n + i)] : 0.0;
+        for (Eigen::Index c = 1; friction && c <= p.tangents; ++c)
+            lambda_new_[c * n + i] = active ? K.row_product(c * n + i, w_new_) - rhs[K.dof(c * n + i)] : 0.0;
     }
 }
 
 void SparseContactSolver::held_set(bool friction) {
     const Eigen::Index n = pattern_.size();
+    const Eigen::Index tangents = static_cast<Eigen::Index>(held_.size()) / n - 1;
     for (Eigen::Index i = 0; i < n; ++i) {
         held_[static_cast<size_t>(i)] = pattern_[i] != 0;
-        held_[static_cast<size_t>(n + i)] = friction && pattern_[i] == 1;
+        for (Eigen::Index c = 1; c <= tangents; ++c)
+            held_[static_cast<size_t>(c * n + i)] = friction && pattern_[i] == 1;
     }
 }
 
@@ -157,7 +174,7 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
         const Eigen::Index j = c.unknown;
         e[static_cast<Eigen::Index>(k)] =
             c.held ? K.stiffness(j) * (x[K.dof(j)] - (homogeneous ? 0.0 : targets_[j]))
-                   : reaction(j) - (c.sf != 0 ? c.sf * reaction(j - n) : 0.0);
+                   : reaction(j) - (c.sf != 0 ? c.sf * reaction(j % n) : 0.0);
     }
 }
 
@@ -171,7 +188,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     held_set(friction);
     for (Eigen::Index i = 0; i < n; ++i) {
         targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
-        targets_[n + i] = friction ? p.slip_origin[i] : 0.0;
+        for (Eigen::Index c = 1; c < m / n; ++c)
+            targets_[c * n + i] = friction ? p.slip_origin[(c - 1) * n + i] : 0.0;
     }
     for (Eigen::Index j = 0; j < m; ++j) differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
     if (differing > max_differing) K.hold(held_);
@@ -193,10 +211,14 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     // The unknowns: what the pattern asks that the factor's held set does not give.
     coupling_.clear();
     for (Eigen::Index j = 0; j < m; ++j) {
-        const Eigen::Index i = j < n ? j : j - n;
+        const Eigen::Index i = j % n;
         const bool wants = held_[static_cast<size_t>(j)] != 0, has = K.held()[static_cast<size_t>(j)] != 0;
         const bool slips = j >= n && friction && (pattern_[i] == 2 || pattern_[i] == -2);
-        const double sf = slips ? slip_sign(p, i, pattern_[i]) : 0.0;
+        // A slipping node's friction, F p along its slip direction: +-F in 2D, F t in 3D (t
+        // the last residual's, held through the pattern's solve).
+        const double sf = !slips ? 0.0
+                          : p.tangents == 2 ? p.friction[i] * direction_[(j / n - 1) * n + i]
+                                            : slip_sign(p, i, pattern_[i]);
         if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true});
         else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false});
         else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false});
@@ -206,7 +228,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     double force_scale = scale;
     for (Eigen::Index k = 0; k < q; ++k) {
         const Coupling& c = coupling_[static_cast<size_t>(k)];
-        const Eigen::Index i = c.unknown < n ? c.unknown : c.unknown - n;
+        const Eigen::Index i = c.unknown % n;
         double guess = 0;
         if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
         else if (c.kind == load) guess = c.sf * -lambda_trial_[i];
@@ -224,12 +246,14 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         // coefficients.
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations() ||
             kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_ ||
-            kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction) {
+            kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
+            kept_direction_.size() != direction_.size() || kept_direction_ != direction_) {
             kept_ = first_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
             kept_pattern_ = pattern_;
             kept_friction_ = p.friction;
+            kept_direction_ = direction_;
         }
         // GCR: the kept directions' images c_j are orthonormal, so the residual's part in
         // their span goes at no solve; each new direction costs one held solve. Directions
@@ -293,7 +317,9 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                                             bool fresh_factor) {
     const Eigen::Index n = p.gap_limit.size(), nf = K.size();
     const bool friction = p.has_friction();
-    const Eigen::Index m = friction ? 2 * n : n;
+    const Eigen::Index m = friction ? (1 + p.tangents) * n : n;
+    if (friction && K.unknowns() != m)
+        throw std::logic_error("SparseContactSolver: the held operator's contact unknowns do not fit the friction's");
     if (lambda.size() != m) lambda.setZero(m);
     // Workspace: sized once (resizing to the same size does not allocate).
     const Eigen::Index m2 = K.unknowns();
@@ -313,10 +339,16 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     // The first pattern from the State: the last substep's pressed nodes, sticking where its
     // stick memory says, else slipping along their friction.
     pattern_.resize(n);
+    direction_.setZero(p.tangents == 2 ? 2 * n : 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         if (!(lambda[i] < 0)) pattern_[i] = 0;
         else if (!friction || sticking[i] != 0) pattern_[i] = 1;
         else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
+        if (friction && p.tangents == 2 && pattern_[i] != 0) {  // along its last friction
+            const double tx = lambda[n + i], tz = lambda[2 * n + i], size = std::sqrt(tx * tx + tz * tz);
+            pattern_[i] = sticking[i] != 0 || !(size > 0) ? 1 : 2;
+            if (size > 0) direction_[i] = tx / size, direction_[n + i] = tz / size;
+        }
     }
     if (fresh_factor) {
         held_set(friction);
@@ -366,6 +398,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         lambda_trial_ = lambda;
         pattern_.swap(trial_pattern_);
         status_.swap(trial_status_);
+        if (friction && p.tangents == 2) direction_.swap(trial_direction_);
         merit = trial_merit;
         info.residual = res;
         if (res <= options.tolerance) return info;

@@ -7,9 +7,11 @@
 // iterated as a primal-dual active set: each iterate (w, lambda) satisfies K w = rhs + B^T lambda
 // exactly, and a node pattern's step solves that pattern's linear problem on the sparse system:
 //   active node:   its y dof held at the gap (u_N = gap limit),
-//   sticking node: its x dof held at the slip origin too,
+//   sticking node: its x dof (and a 3D body's z dof) held at the slip origin too,
 //   slipping node: its x dof loaded by lambda_T = sf pressure, sf = +-F (the reaction of its
-//                  held y dof: a non-symmetric coupling),
+//                  held y dof: a non-symmetric coupling); a 3D body's x and z dofs by
+//                  F t pressure, t the slip direction of the last residual, held through the
+//                  pattern's solve (a fixed point in t that the Newton iterations carry on),
 //   open node:     unloaded.
 // The held factor is the Cholesky factor of K with a set of contact dofs held (their rows and
 // columns the identity's), in K's own fill-reducing ordering and symbolic analysis. A pattern
@@ -131,6 +133,9 @@ private:
 
     using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
     Pattern pattern_, trial_pattern_;
+    // A 3D body's slipping nodes' directions (x components, then z): the pattern's, and the
+    // last residual's.
+    Eigen::VectorXd direction_, trial_direction_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;
     std::vector<char> held_;
     // The iterate and the pattern step's result (new_), the backtracking trial.
@@ -143,7 +148,7 @@ private:
     Eigen::MatrixXd directions_, images_;
     int kept_ = 0, first_ = 0;
     Pattern kept_pattern_;
-    Eigen::VectorXd kept_friction_;
+    Eigen::VectorXd kept_friction_, kept_direction_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
     long solves_ = 0, krylov_iterations_ = 0;

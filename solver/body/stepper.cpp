@@ -158,7 +158,7 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
 }
 
 void Stepper::set_friction_coefficient(double friction) {
-    // A 3D body with friction takes the condensed solve, without the cost model's: a factor
+    // A 3D body's held operator has its contact z dofs with friction, not without: a factor
     // made for the other is dropped.
     if (disc_.mesh.dim == 3 && (friction > 0) != (params_.friction_coefficient > 0)) {
         for (auto& f : cache_) f.reset();
@@ -270,11 +270,12 @@ void Stepper::set_contact_factorization(const ContactFactorization& saved) {
     for (const auto& c : cache_) {
         if (!c || !c->held || c->dt != saved.substep) continue;
         const Eigen::Index nc = num_contact_nodes();
-        std::vector<char> held(static_cast<size_t>(2 * nc));
+        std::vector<char> held(static_cast<size_t>(c->held->unknowns()));
         for (Eigen::Index i = 0; i < nc; ++i) {
             const signed char x = saved.pattern[static_cast<size_t>(i)];
             held[static_cast<size_t>(i)] = x != 0;
-            held[static_cast<size_t>(nc + i)] = x == 1;
+            for (size_t j = static_cast<size_t>(nc + i); j < held.size(); j += static_cast<size_t>(nc))
+                held[j] = x == 1;  // the tangential dofs of a sticking node
         }
         c->held->hold(held);
         current_factor_ = c->id;
@@ -290,9 +291,7 @@ long Stepper::sparse_refactorizations() const {
 
 bool Stepper::wants_sparse() const {
     if (contact_path_ != ContactPath::automatic) return contact_path_ == ContactPath::sparse;
-    // A 3D body's isotropic friction is solved on W (its slip direction turns): condensed.
-    const bool isotropic_friction = disc_.mesh.dim == 3 && params_.friction_coefficient > 0;
-    return !rate_law(params_).active() && !isotropic_friction &&
+    return !rate_law(params_).active() &&
            sparse_contact_pays(num_contact_nodes(), disc_.expand.cols(), params_.friction_coefficient);
 }
 
@@ -326,8 +325,9 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     }
     ++factorizations_;
     f->id = ++factor_ids_;
-    if (sparse) {  // y and x: the sparse solve's friction is along x (2D) or absent (3D)
-        contact_dofs.resize(static_cast<size_t>(2 * nc));
+    if (sparse) {  // y and x; a 3D body's z with friction (without, its x is not used)
+        const bool isotropic_friction = disc_.mesh.dim == 3 && params_.friction_coefficient > 0;
+        contact_dofs.resize(static_cast<size_t>((isotropic_friction ? 3 : 2) * nc));
         f->held = std::make_unique<HeldOperator>(K, contact_dofs);
         return f;
     }

@@ -58,6 +58,50 @@ signed char alart_curnier_node(double lN, double lT, double uN, double uT, doubl
     return z > 0 ? 2 : -2;
 }
 
+// A 3D body's node on the disc (isotropic friction, |lambda_T| <= F lambda_N with a two-
+// dimensional slip): the same Alart-Curnier residual, the tangential trial projected onto the
+// disc of radius F x the normal trial. Both contact solvers classify 3D nodes by it.
+// One node's residual on the disc: u = (u_N, u_x, u_z) at lambda = (l_N, l_x, l_z).
+struct DiscNode {
+    NodeStatus status = NodeStatus::open;
+    double phi[3] = {0, 0, 0};
+    double direction[2] = {0, 0};  // z / |z| (slip)
+    double ratio = 0;              // bound / |z| (slip)
+    double coefficient = 0;        // F
+};
+
+inline DiscNode disc_node(const double l[3], const double u[3], double rN, double rT, double gap,
+                   const double origin[2], double F) {
+    DiscNode d;
+    d.coefficient = F;
+    const double pressure = -l[0];
+    const double trial = pressure - rN * (gap - u[0]);
+    if (trial <= 0) {
+        d.phi[0] = pressure;
+        d.phi[1] = l[1];
+        d.phi[2] = l[2];
+        return d;
+    }
+    d.phi[0] = pressure - trial;
+    const double bound = F * trial;
+    const double z[2] = {l[1] - rT * (u[1] - origin[0]), l[2] - rT * (u[2] - origin[1])};
+    const double size = std::sqrt(z[0] * z[0] + z[1] * z[1]);  // not hypot: no libm in the FMUs
+    if (size <= bound) {
+        d.phi[1] = l[1] - z[0];
+        d.phi[2] = l[2] - z[1];
+        d.status = NodeStatus::stick;
+        return d;
+    }
+    d.direction[0] = z[0] / size;
+    d.direction[1] = z[1] / size;
+    d.ratio = bound / size;
+    d.phi[1] = l[1] - bound * d.direction[0];
+    d.phi[2] = l[2] - bound * d.direction[1];
+    d.status = NodeStatus::slip;
+    return d;
+}
+
+
 struct ContactProblem {
     // Tangential components per node: 1 (a 2D body, slip along x) or 2 (a 3D body, x and z:
     // isotropic friction |lambda_T| <= F lambda_N). With friction the unknowns are

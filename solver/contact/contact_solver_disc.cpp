@@ -14,50 +14,6 @@
 
 namespace contactbody {
 
-namespace {
-
-// One node's residual on the disc: u = (u_N, u_x, u_z) at lambda = (l_N, l_x, l_z).
-struct DiscNode {
-    NodeStatus status = NodeStatus::open;
-    double phi[3] = {0, 0, 0};
-    double direction[2] = {0, 0};  // z / |z| (slip)
-    double ratio = 0;              // bound / |z| (slip)
-    double coefficient = 0;        // F
-};
-
-DiscNode disc_node(const double l[3], const double u[3], double rN, double rT, double gap,
-                   const double origin[2], double F) {
-    DiscNode d;
-    d.coefficient = F;
-    const double pressure = -l[0];
-    const double trial = pressure - rN * (gap - u[0]);
-    if (trial <= 0) {
-        d.phi[0] = pressure;
-        d.phi[1] = l[1];
-        d.phi[2] = l[2];
-        return d;
-    }
-    d.phi[0] = pressure - trial;
-    const double bound = F * trial;
-    const double z[2] = {l[1] - rT * (u[1] - origin[0]), l[2] - rT * (u[2] - origin[1])};
-    const double size = std::sqrt(z[0] * z[0] + z[1] * z[1]);  // not hypot: no libm in the FMUs
-    if (size <= bound) {
-        d.phi[1] = l[1] - z[0];
-        d.phi[2] = l[2] - z[1];
-        d.status = NodeStatus::stick;
-        return d;
-    }
-    d.direction[0] = z[0] / size;
-    d.direction[1] = z[1] / size;
-    d.ratio = bound / size;
-    d.phi[1] = l[1] - bound * d.direction[0];
-    d.phi[2] = l[2] - bound * d.direction[1];
-    d.status = NodeStatus::slip;
-    return d;
-}
-
-}  // namespace
-
 double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda,
                                     Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();

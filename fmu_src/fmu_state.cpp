@@ -226,6 +226,9 @@ FmuState deserialize(const char* bytes, size_t size) {
 
     Reader r(payload, payload_size);
     FmuState s;
+    // Every field the table does not read keeps its start (the other model's: the 2D model's
+    // foundation_velocity_z and initial_velocity_z stay 0).
+    s.model.values = start_values();
     s.instance_state = r.value<uint32_t>("instance state");
     if (!(s.instance_state & restorable_states) || (s.instance_state & (s.instance_state - 1)))
         r.fail("invalid instance state " + std::to_string(s.instance_state));

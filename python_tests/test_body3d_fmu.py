@@ -221,7 +221,7 @@ def test_refused_settings_name_what_is_wrong(unzipped3d, md3d):
     vr = {v.name: v.valueReference for v in md3d.modelVariables}
     cases = [({"mesh": ""}, "a 3D body comes from a Gmsh file"),
              ({"modes": 1999}, "finite modes"),
-             ({"initial_state": 1, "initial_velocity_z": 0.5}, "initial velocities must be 0"),
+             ({"initial_state": 1, "initial_velocity_z": 0.5}, "initial_velocity_y and initial_velocity_z must be 0"),
              ({"mesh": str(DATA / "outside" / "missing.msh")}, "missing.msh")]
     for values, expected in cases:
         inst = Instance(md3d, unzipped3d)

@@ -135,14 +135,16 @@ def payload_offsets(md):
             off["edge_nodes"] = pos
             pos += 4
     off["start_time"] = pos
-    off["field_output_count"] = pos + 56  # after 3 rates and 3 previous inputs; no times follow
-    off["next_field_output"] = pos + 64
-    off["edge_rows"] = pos + 72
-    off["next_edge_output"] = pos + 80
-    off["simulation_flag"] = pos + 88
-    off["time"] = pos + 89
-    off["u_length"] = pos + 97
-    off["u"] = pos + 105
+    # after 4 rates and 4 previous inputs (foundation_velocity_z's held at 0 in the 2D model);
+    # no times follow
+    off["field_output_count"] = pos + 72
+    off["next_field_output"] = pos + 80
+    off["edge_rows"] = pos + 88
+    off["next_edge_output"] = pos + 96
+    off["simulation_flag"] = pos + 104
+    off["time"] = pos + 105
+    off["u_length"] = pos + 113
+    off["u"] = pos + 121
     return off
 
 
@@ -171,7 +173,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 14": blob[:8] + struct.pack("<I", 14) + blob[12:],
+        "version 15": blob[:8] + struct.pack("<I", 15) + blob[12:],
+        "version 13 (before the 3D model's z variables)": blob[:8] + struct.pack("<I", 13) + blob[12:],
         "version 12 (before the contact factorization)": blob[:8] + struct.pack("<I", 12) + blob[12:],
         "version 11 (before modes)": blob[:8] + struct.pack("<I", 11) + blob[12:],
         "version 10 (before E(0))": blob[:8] + struct.pack("<I", 10) + blob[12:],

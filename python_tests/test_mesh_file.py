@@ -275,7 +275,7 @@ def pressed_block(gmsh, order=1, recombine=False, volume=False):
 @pytest.mark.parametrize("kind, needle", [
     ("second_order", "(second-order)"),
     ("quadrangles", "is a 4-node quadrangle"),
-    ("volume", "(3D)"),
+    ("volume", "it holds tetrahedra, a 3D body"),
 ])
 def test_elements_other_than_first_order_triangles(tmp_path, kind, needle, unzipped_fmu):
     with meshes.session(kind) as gmsh:

@@ -119,9 +119,11 @@ void check_parameters(const SceneParameters& p) {
     if (p.static_initial_state &&
         (p.initial_velocity_x != 0 || p.initial_velocity_y != 0 || p.initial_velocity_z != 0)) {
         Text msg;
-        msg << "initial_state = static starts the body at rest, so the initial velocities "
-               "must be 0 (got " << p.initial_velocity_x << ", " << p.initial_velocity_y << ", "
-            << p.initial_velocity_z << " m/s): set them to 0, or use initial_state = paper";
+        msg << "initial_state = static starts the body at rest, so initial_velocity_x"
+            << (p.dimension == 3 ? ", initial_velocity_y and initial_velocity_z" : " and initial_velocity_y")
+            << " must be 0 (got " << p.initial_velocity_x << ", " << p.initial_velocity_y;
+        if (p.dimension == 3) msg << ", " << p.initial_velocity_z;
+        msg << " m/s): set them to 0, or use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
     if (!(std::isfinite(p.initial_gap) && p.initial_gap >= 0))
@@ -143,9 +145,9 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
         msg << "mesh " << mesh.source << ", line 0: it holds "
             << (mesh.dim == 3 ? "tetrahedra, a 3D body" : "triangles, a 2D body") << "; this model's "
             << "bodies are " << p.dimension << "D"
-            << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh of first-order "
+            << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh with first-order "
                                    "triangles in the x-y plane"
-                                 : " (forces in N) and need a mesh of first-order tetrahedra");
+                                 : " (forces in N) and need a mesh with first-order tetrahedra");
         throw std::invalid_argument(msg.str());
     }
     if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))

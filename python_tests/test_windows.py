@@ -7,6 +7,7 @@ import pathlib
 import subprocess
 
 import fmpy
+import numpy as np
 import pytest
 from fmpy.fmi2 import FMU2Slave
 
@@ -255,10 +256,24 @@ def test_fmi3_layer_on_windows_continues_a_linux_state_bit_for_bit(tmp_path):
 ], ids=["isotropic_friction", "slip_rate_law", "reduced_body"])
 def test_the_3d_model_is_bit_identical_to_linux(values):
     """ContactBody3D's win64 binary (the tetrahedral kernels, the disc friction, the dense
-    eigensolver of the reduced body): the default block sliding along (12, 16) m/s, 1 ms."""
+    eigensolver of the reduced body): the default block sliding along (12, 16) m/s, 1 ms, bit for
+    bit. With the slip-rate law, to round-off only: its exp is the C library's, msvcrt's on
+    Windows and zig's compiler_rt's on Linux (cmake/fmu_binaries.cmake), which differ in the last
+    bit (measured: the energy at 1e-4 s, 0x1.010140d6f13ffp-5 against ...400p-5)."""
     fmu3d = FMU.with_name("ContactBody3D.fmu")
     run = dict(stop_time=1e-3, output_interval=1e-4,
                start_values={"friction_coefficient": 0.5, "foundation_velocity": 12.0,
                              "foundation_velocity_z": 16.0, "damping_stiffness": 2e-6, **values})
     windows, linux = extract_for("win64", fmu3d), extract_for("linux64", fmu3d)
-    assert_same_bits(fmpy.simulate_fmu(windows, **run), fmpy.simulate_fmu(linux, **run))
+    a, b = fmpy.simulate_fmu(windows, **run), fmpy.simulate_fmu(linux, **run)
+    if "stribeck_velocity" not in values:
+        assert_same_bits(a, b)
+        return
+    # The physical outputs (max_penetration is round-off itself, 1e-20 m here; the counts of
+    # Newton iterations may differ by one where a residual sits at the tolerance).
+    for name in ["energy", "kinetic_energy", "strain_energy", "friction_work", "clamp_work",
+                 "normal_contact_work", "friction_dissipation", "foundation_work", "damping_work",
+                 "normal_force", "friction_force", "friction_force_z", "top_reaction_x",
+                 "top_reaction_y", "top_reaction_z"]:
+        scale = np.abs(b[name]).max()
+        assert np.abs(a[name] - b[name]).max() <= 1e-10 * scale, name

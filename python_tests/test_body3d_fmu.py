@@ -158,6 +158,41 @@ def test_a_foundation_turning_from_x_to_z_turns_the_friction_with_it():
     assert early["friction_force"] > 0 and late["friction_force_z"] > 0
 
 
+@pytest.mark.parametrize("variant, law", [(v, "coulomb") for v in range(5)] + [(1, "slip_rate"), (4, "slip_rate")])
+def test_reduced_body_closes_its_balance_in_every_variant(variant, law):
+    """modes = 60 (the massless edge, the default for variants 1 and 2; the tangential-mass
+    edge for 0, 3, 4), sliding along (12, 16) m/s with static friction, and the slip-rate law:
+    the balance closes to 1e-9 of max(E(0), |works|)."""
+    rate = {"stribeck_velocity": 5.0, "viscous_friction": 0.01} if law == "slip_rate" else {}
+    r = simulate(modes=60, mass_matrix=variant, friction_coefficient=0.5, static_friction_ratio=1.5,
+                 foundation_velocity=12.0, foundation_velocity_z=16.0, damping_stiffness=2e-6,
+                 output=WORK_TERMS + ["normal_force"], **rate)
+    assert r["normal_force"][-1] > 0 and r["friction_dissipation"][-1] > 0
+    assert balance_residual(r) < 1e-9
+
+
+def test_the_blow_up_guard_stops_a_3d_body_naming_its_energy_in_joules(unzipped3d, md3d):
+    """max_energy = 0.03 J, 1.6 E(0), for the block sliding undamped with F = 1.2 (the defaults, which
+    the warning says are unstable): the step that passes it fails with fmi2Error, its message
+    names the energy, and the outputs stay those of the step's start."""
+    vr = {v.name: v.valueReference for v in md3d.modelVariables}
+    inst = Instance(md3d, unzipped3d)
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.setReal([vr["max_energy"]], [0.03])
+    inst.exitInitializationMode()
+    energy = inst.getReal([vr["energy"]])[0]
+    assert energy < 0.02  # E(0): 0.019 J
+    with pytest.raises(FMICallException):
+        for k in range(200):
+            inst.doStep(k * H, H)
+            energy = inst.getReal([vr["energy"]])[0]
+    errors = [text for status, _, text in inst.messages if status == 3]
+    assert errors and "exceeds" in errors[-1] and " J" in errors[-1], errors
+    assert inst.getReal([vr["energy"]])[0] == energy  # the failed step's start
+    inst.close()
+
+
 @pytest.mark.parametrize("edge", [1, 2])  # massless, tangential_mass
 def test_reduced_body_slides_in_x_and_z_and_closes_its_balance(edge):
     """modes = 120 of the block, both edges, friction sliding along (12, 16) m/s: the balance

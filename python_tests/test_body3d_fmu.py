@@ -95,8 +95,13 @@ def test_fmi3_edge_arrays_hold_x_z_pressure_friction_slip_gap_state():
 
 # ---- physics through the FMU ----
 
+# Under the sanitizer (an instrumented run of the same code, 5x slower) the variants' code paths
+# run once each in variants 0, 1 and 4: CI's time (docs/testing_and_benchmarks.md).
+SANITIZED_VARIANTS = [0, 1, 4] if SANITIZED else range(5)
+
+
 @pytest.mark.parametrize("law", ["coulomb", "slip_rate"])
-@pytest.mark.parametrize("variant", range(5))
+@pytest.mark.parametrize("variant", SANITIZED_VARIANTS)
 def test_energy_balance_closes_in_every_variant_sliding_in_x_and_z(variant, law):
     """Sliding at (12, 16) m/s with F = 0.5, damped (so that static friction and damping both
     work), static_friction_ratio 1.5, with Coulomb's law and with the slip-rate law (a Stribeck
@@ -158,7 +163,7 @@ def test_a_foundation_turning_from_x_to_z_turns_the_friction_with_it():
     assert early["friction_force"] > 0 and late["friction_force_z"] > 0
 
 
-@pytest.mark.parametrize("variant, law", [(v, "coulomb") for v in range(5)] + [(1, "slip_rate"), (4, "slip_rate")])
+@pytest.mark.parametrize("variant, law", [(v, "coulomb") for v in SANITIZED_VARIANTS] + [(1, "slip_rate"), (4, "slip_rate")])
 def test_reduced_body_closes_its_balance_in_every_variant(variant, law):
     """modes = 60 (the massless edge, the default for variants 1 and 2; the tangential-mass
     edge for 0, 3, 4), sliding along (12, 16) m/s with static friction, and the slip-rate law:
@@ -386,6 +391,7 @@ def test_von_mises_of_a_tetrahedron_under_uniaxial_strain():
     assert len(faces) == 6 and sorted(owner) == [0, 0, 0, 1, 1, 1]
 
 
+@pytest.mark.skipif(SANITIZED, reason="the example runs build/'s FMU, not the sanitized one: the main job's")
 def test_turning_pad_example_measures_what_it_draws(tmp_path):
     """examples/turning_pad_3d.py on an 8 mm mesh: the picture is written, the energy balance
     closes, in mid-turn some nodes stick and some slip, the friction's heading lags the

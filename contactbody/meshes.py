@@ -70,12 +70,13 @@ def discrete_mesh(gmsh, coords, triangles, groups, surface_group="body"):
         gmsh.model.addPhysicalGroup(1, [curve], name=name)
 
 
-def _refine_near(gmsh, point, fine, coarse, distance, fine_distance=None):
-    """Element size `fine` within `fine_distance` (by default `distance`/10) of `point`,
-    growing to `coarse` at `distance`."""
+def _refine_near(gmsh, point, fine, coarse, distance, fine_distance=None, entities="PointsList"):
+    """Element size `fine` within `fine_distance` (by default `distance`/10) of `point` (a
+    point's tag, or a list of the tags `entities` names: "SurfacesList", ...), growing to
+    `coarse` at `distance`."""
     field = gmsh.model.mesh.field
     d = field.add("Distance")
-    field.setNumbers(d, "PointsList", [point])
+    field.setNumbers(d, entities, point if isinstance(point, list) else [point])
     t = field.add("Threshold")
     field.setNumber(t, "InField", d)
     field.setNumber(t, "SizeMin", fine)
@@ -272,19 +273,7 @@ def pad3d(path, width=0.06, height=0.02, depth=0.04, chamfer=0.004, slot_width=0
         gmsh.model.addPhysicalGroup(2, clamp, name="clamp")
         gmsh.option.setNumber("Mesh.MeshSizeMax", size)
         if contact_size:
-            field = gmsh.model.mesh.field
-            d = field.add("Distance")
-            field.setNumbers(d, "SurfacesList", contact)
-            t = field.add("Threshold")
-            field.setNumber(t, "InField", d)
-            field.setNumber(t, "SizeMin", contact_size)
-            field.setNumber(t, "SizeMax", size)
-            field.setNumber(t, "DistMin", 0)
-            field.setNumber(t, "DistMax", 2 * (size - contact_size))
-            field.setAsBackgroundMesh(t)
-            for option in ("Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromPoints",
-                           "Mesh.MeshSizeFromCurvature"):
-                gmsh.option.setNumber(option, 0)
+            _refine_near(gmsh, contact, contact_size, size, 2 * (size - contact_size), 0, "SurfacesList")
         gmsh.model.mesh.generate(3)
         return write(gmsh, path, version)
 

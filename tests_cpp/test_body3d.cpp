@@ -302,6 +302,7 @@ struct Sliding {
     // | |lambda_T| - F lambda_N | at slipping nodes over the largest multiplier (the scale of
     // the solver's tolerance, relative to max |lambda|)
     double worst_law = 0;
+    double least_substep_dissipation = 0;  // friction never creates energy: >= 0 in every substep
 };
 
 Sliding slide(MassVariant variant, double heading, double turn, double F, int substeps,
@@ -341,6 +342,7 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
         load.foundation_velocity_z = speed * std::sin(angle);
         const SubstepReport r = body.substep(s, dt, load);
         works += r.work;
+        out.least_substep_dissipation = std::min(out.least_substep_dissipation, r.work.friction_dissipation);
         scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction), std::abs(works.foundation)});
         out.normal += r.normal_force;
         out.friction_x += r.friction_force;
@@ -390,6 +392,7 @@ TEST(Body3D, IsotropicFrictionClosesTheEnergyBalanceAndObeysTheLawInEveryVariant
         EXPECT_GT(r.dissipation, 0);
         EXPECT_LT(r.worst_cone, 1e-8);
         EXPECT_LT(r.worst_direction, 1e-8);
+        EXPECT_GE(r.least_substep_dissipation, -1e-12 * std::abs(r.dissipation));
     }
 }
 
@@ -416,6 +419,8 @@ TEST(Body3D, SlipRateLawOnTheDiscClosesTheBalanceAndObeysTheLaw) {
         // which is relative to the largest multiplier (measured 2e-8 relative to the node's own).
         EXPECT_LT(slow.worst_law, 1e-9);
         EXPECT_LT(slow.worst_direction, 1e-8);
+        EXPECT_GE(fast.least_substep_dissipation, -1e-12 * fast.dissipation);
+        EXPECT_GE(slow.least_substep_dissipation, -1e-12 * std::abs(slow.dissipation));
     }
 }
 
@@ -443,7 +448,7 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
             };
             const double E0 = energy(sparse, a);
             Works wa, wb;
-            double worst = 0, worst_work = 0, scale = 0, work_scale = E0;
+            double worst = 0, worst_work = 0, scale = 0, work_scale = E0, least_dissipation = 0;
             int slipping = 0, sticking = 0, iterations = 0;
             const int substeps = 300;
             const double speed = creeping ? 0.05 : 20, rate = creeping ? (M_PI / 2) / (substeps * dt) : 0;
@@ -457,6 +462,7 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
                 const SubstepReport rb = condensed.substep(b, dt, load);
                 wa += ra.work;
                 wb += rb.work;
+                least_dissipation = std::min({least_dissipation, ra.work.friction_dissipation, rb.work.friction_dissipation});
                 scale = std::max(scale, std::abs(rb.normal_force));
                 work_scale = std::max({work_scale, std::abs(wb.clamp), std::abs(wb.friction), std::abs(wb.foundation)});
                 worst = std::max({worst, std::abs(ra.normal_force - rb.normal_force),
@@ -480,6 +486,7 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
             EXPECT_LT(worst_work / work_scale, 1e-9);
             const double balance = std::abs(energy(sparse, a) - E0 - (wa.clamp + wa.normal_contact + wa.friction - wa.damping));
             EXPECT_LT(balance / work_scale, 1e-9);
+            EXPECT_GE(least_dissipation, -1e-12 * work_scale);  // friction never creates energy
             RecordProperty(creeping ? "creeping_newton_iterations" : "sliding_newton_iterations", iterations);
         }
     }

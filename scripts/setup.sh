@@ -64,4 +64,6 @@ fi
 # Linux and macOS binaries with zig, their win64 ones with MinGW-w64 (CMakeLists.txt).
 /usr/bin/cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DZIG="$zig_home/ziglang/zig" >/dev/null
+build_start=$SECONDS
 /usr/bin/cmake --build build
+echo "== setup: the build took $((SECONDS - build_start)) s =="

@@ -94,6 +94,7 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
     trial_status_.resize(n);
     if (friction && p.tangents == 2) {  // a 3D body: the disc (one r_T for both directions,
         trial_direction_.resize(2 * n);  // the mean of K's: invariant under a turn about y)
+        trial_ratio_.resize(n);
         for (Eigen::Index i = 0; i < n; ++i) {
             const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
             const double u[3] = {-w[K.dof(i)], w[K.dof(n + i)], w[K.dof(2 * n + i)]};
@@ -105,6 +106,7 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
             trial_pattern_[i] = d.status == NodeStatus::open ? 0 : d.status == NodeStatus::stick ? 1 : 2;
             trial_direction_[i] = d.direction[0];
             trial_direction_[n + i] = d.direction[1];
+            trial_ratio_[i] = d.ratio;
         }
     }
     for (Eigen::Index i = 0; i < n && !(friction && p.tangents == 2); ++i) {
@@ -171,7 +173,23 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
     };
     for (size_t k = 0; k < coupling_.size(); ++k) {
         const Coupling& c = coupling_[k];
-        const Eigen::Index j = c.unknown;
+        const Eigen::Index j = c.unknown, i = j % n;
+        if (p.tangents == 2 && j >= n && (pattern_[i] == 2 || pattern_[i] == -2)) {
+            // A 3D slipping node: phi_T = l_T - F p t(z) linearized at the iterate (Newton, not
+            // a fixed point in t): l_T - F p t - rho (I - t t^T) (q - q0), q = l_T - r_T u_T,
+            // rho = F p / |z| (disc_node's ratio), q0 the iterate's (the shift).
+            const int component = static_cast<int>(j / n) - 1;
+            const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+            const double t[2] = {direction_[i], direction_[n + i]};
+            const double l[2] = {reaction(n + i), reaction(2 * n + i)};
+            const double q[2] = {l[0] - rT * x[K.dof(n + i)], l[1] - rT * x[K.dof(2 * n + i)]};
+            const double along = t[0] * q[0] + t[1] * q[1];
+            e[static_cast<Eigen::Index>(k)] =
+                l[component] - p.friction[i] * t[component] * reaction(i) -
+                ratio_[i] * (q[component] - t[component] * along) +
+                (homogeneous ? 0.0 : newton_shift_[component * n + i]);
+            continue;
+        }
         e[static_cast<Eigen::Index>(k)] =
             c.held ? K.stiffness(j) * (x[K.dof(j)] - (homogeneous ? 0.0 : targets_[j]))
                    : reaction(j) - (c.sf != 0 ? c.sf * reaction(j % n) : 0.0);
@@ -247,13 +265,15 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations() ||
             kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_ ||
             kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
-            kept_direction_.size() != direction_.size() || kept_direction_ != direction_) {
+            kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
+            kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
             kept_ = first_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
             kept_pattern_ = pattern_;
             kept_friction_ = p.friction;
             kept_direction_ = direction_;
+            kept_ratio_ = ratio_;
         }
         // GCR: the kept directions' images c_j are orthonormal, so the residual's part in
         // their span goes at no solve; each new direction costs one held solve. Directions
@@ -340,6 +360,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     // stick memory says, else slipping along their friction.
     pattern_.resize(n);
     direction_.setZero(p.tangents == 2 ? 2 * n : 0);
+    ratio_.setZero(p.tangents == 2 ? n : 0);  // the first step: t held (no iterate's z yet)
+    newton_shift_.setZero(p.tangents == 2 ? 2 * n : 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         if (!(lambda[i] < 0)) pattern_[i] = 0;
         else if (!friction || sticking[i] != 0) pattern_[i] = 1;
@@ -367,6 +389,16 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
+        if (friction && p.tangents == 2) {  // the iterate's rho (I - t t^T) q0 (equations)
+            for (Eigen::Index i = 0; i < n; ++i) {
+                const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+                const double t[2] = {direction_[i], direction_[n + i]};
+                const double q[2] = {lambda[n + i] - rT * w[K.dof(n + i)],
+                                     lambda[2 * n + i] - rT * w[K.dof(2 * n + i)]};
+                const double along = t[0] * q[0] + t[1] * q[1];
+                for (int c = 0; c < 2; ++c) newton_shift_[c * n + i] = ratio_[i] * (q[c] - t[c] * along);
+            }
+        }
         solve_pattern(K, p, rhs, lambda_trial_.lpNorm<Eigen::Infinity>(), options.tolerance);
         double res = residual(K, p, w_new_, lambda_new_, phi_new_);
         double trial_merit = phi_new_.squaredNorm();
@@ -398,7 +430,10 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         lambda_trial_ = lambda;
         pattern_.swap(trial_pattern_);
         status_.swap(trial_status_);
-        if (friction && p.tangents == 2) direction_.swap(trial_direction_);
+        if (friction && p.tangents == 2) {
+            direction_.swap(trial_direction_);
+            ratio_.swap(trial_ratio_);
+        }
         merit = trial_merit;
         info.residual = res;
         if (res <= options.tolerance) return info;

@@ -10,8 +10,9 @@
 //   sticking node: its x dof (and a 3D body's z dof) held at the slip origin too,
 //   slipping node: its x dof loaded by lambda_T = sf pressure, sf = +-F (the reaction of its
 //                  held y dof: a non-symmetric coupling); a 3D body's x and z dofs by
-//                  F t pressure, t the slip direction of the last residual, held through the
-//                  pattern's solve (a fixed point in t that the Newton iterations carry on),
+//                  the disc's slip law linearized at the iterate, l_T = F p t + rho (I - t t^T)
+//                  (delta l_T - r_T delta u_T), t the iterate's slip direction and
+//                  rho = F p / |z| (a spring across t: Newton in t, not a fixed point),
 //   open node:     unloaded.
 // The held factor is the Cholesky factor of K with a set of contact dofs held (their rows and
 // columns the identity's), in K's own fill-reducing ordering and symbolic analysis. A pattern
@@ -136,6 +137,9 @@ private:
     // A 3D body's slipping nodes' directions (x components, then z): the pattern's, and the
     // last residual's.
     Eigen::VectorXd direction_, trial_direction_;
+    // Their F p / |z| (disc_node's ratio: the slip law's derivative in t), and the iterate's
+    // rho (I - t t^T) q0 (x components, then z): the Newton step's terms.
+    Eigen::VectorXd ratio_, trial_ratio_, newton_shift_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;
     std::vector<char> held_;
     // The iterate and the pattern step's result (new_), the backtracking trial.
@@ -148,7 +152,7 @@ private:
     Eigen::MatrixXd directions_, images_;
     int kept_ = 0, first_ = 0;
     Pattern kept_pattern_;
-    Eigen::VectorXd kept_friction_, kept_direction_;
+    Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
     long solves_ = 0, krylov_iterations_ = 0;

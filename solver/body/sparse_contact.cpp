@@ -164,35 +164,49 @@ void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs
     ++solves_;
 }
 
-void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem& p,
+void SparseContactSolver::responses(const HeldOperator& K, const ContactProblem& p,
                                     const Eigen::VectorXd& rhs, const Eigen::VectorXd& x,
-                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const {
-    const Eigen::Index n = p.gap_limit.size();
+                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> out) const {
+    const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
     const auto reaction = [&](Eigen::Index j) {
         return K.row_product(j, x) - (homogeneous ? 0.0 : rhs[K.dof(j)]);
     };
-    for (size_t k = 0; k < coupling_.size(); ++k) {
-        const Coupling& c = coupling_[k];
+    for (Eigen::Index k = 0; k < q; ++k) {
+        const Eigen::Index j = coupling_[static_cast<size_t>(k)].unknown;
+        out[k] = reaction(j);
+        out[q + k] = x[K.dof(j)];
+        out[2 * q + k] = j >= n ? reaction(j % n) : 0.0;
+    }
+}
+
+void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem& p,
+                                    const Eigen::Ref<const Eigen::VectorXd>& response,
+                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const {
+    const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
+    const auto reaction = [&](Eigen::Index k) { return response[k]; };
+    const auto value = [&](Eigen::Index k) { return response[q + k]; };
+    const auto pressure = [&](Eigen::Index k) { return response[2 * q + k]; };
+    for (Eigen::Index k = 0; k < q; ++k) {
+        const Coupling& c = coupling_[static_cast<size_t>(k)];
         const Eigen::Index j = c.unknown, i = j % n;
-        if (p.tangents == 2 && j >= n && (pattern_[i] == 2 || pattern_[i] == -2)) {
+        if (c.partner >= 0) {
             // A 3D slipping node: phi_T = l_T - F p t(z) linearized at the iterate (Newton, not
             // a fixed point in t): l_T - F p t - rho (I - t t^T) (q - q0), q = l_T - r_T u_T,
             // rho = F p / |z| (disc_node's ratio), q0 the iterate's (the shift).
             const int component = static_cast<int>(j / n) - 1;
+            const Eigen::Index x_k = component == 0 ? k : c.partner, z_k = component == 0 ? c.partner : k;
             const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
             const double t[2] = {direction_[i], direction_[n + i]};
-            const double l[2] = {reaction(n + i), reaction(2 * n + i)};
-            const double q[2] = {l[0] - rT * x[K.dof(n + i)], l[1] - rT * x[K.dof(2 * n + i)]};
-            const double along = t[0] * q[0] + t[1] * q[1];
-            e[static_cast<Eigen::Index>(k)] =
-                l[component] - p.friction[i] * t[component] * reaction(i) -
-                ratio_[i] * (q[component] - t[component] * along) +
-                (homogeneous ? 0.0 : newton_shift_[component * n + i]);
+            const double l[2] = {reaction(x_k), reaction(z_k)};
+            const double qT[2] = {l[0] - rT * value(x_k), l[1] - rT * value(z_k)};
+            const double along = t[0] * qT[0] + t[1] * qT[1];
+            e[k] = l[component] - p.friction[i] * t[component] * pressure(k) -
+                   ratio_[i] * (qT[component] - t[component] * along) +
+                   (homogeneous ? 0.0 : newton_shift_[component * n + i]);
             continue;
         }
-        e[static_cast<Eigen::Index>(k)] =
-            c.held ? K.stiffness(j) * (x[K.dof(j)] - (homogeneous ? 0.0 : targets_[j]))
-                   : reaction(j) - (c.sf != 0 ? c.sf * reaction(j % n) : 0.0);
+        e[k] = c.held ? K.stiffness(j) * (value(k) - (homogeneous ? 0.0 : targets_[j]))
+                      : reaction(k) - (c.sf != 0 ? c.sf * pressure(k) : 0.0);
     }
 }
 
@@ -221,6 +235,25 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     reactions(K, p, rhs);
 }
 
+// Modified Gram-Schmidt of the image in `slot` against the first `count` kept ones, the same
+// combination taken of its direction and responses.
+void SparseContactSolver::orthogonalize(int slot, int count, Eigen::Index q) {
+    auto c = images_.col(slot).head(q);
+    for (int j = 0; j < count; ++j) {
+        const int other = (first_ + j) % max_directions;
+        const double beta = images_.col(other).head(q).dot(c);
+        c -= beta * images_.col(other).head(q);
+        directions_.col(slot).head(q) -= beta * directions_.col(other).head(q);
+        responses_.col(slot).head(3 * q) -= beta * responses_.col(other).head(3 * q);
+    }
+}
+
+void SparseContactSolver::normalize(int slot, double norm, Eigen::Index q) {
+    images_.col(slot).head(q) /= norm;
+    directions_.col(slot).head(q) /= norm;
+    responses_.col(slot).head(3 * q) /= norm;
+}
+
 bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p,
                                         const Eigen::VectorXd& rhs, double scale,
                                         double tolerance, int max_iterations) {
@@ -237,9 +270,18 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const double sf = !slips ? 0.0
                           : p.tangents == 2 ? p.friction[i] * direction_[(j / n - 1) * n + i]
                                             : slip_sign(p, i, pattern_[i]);
-        if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true});
-        else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false});
-        else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false});
+        if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
+        else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
+        else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
+    }
+    if (friction && p.tangents == 2) {  // a slipping node's x and z equations take both
+        for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
+        for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
+        for (Coupling& c : coupling_) {
+            const Eigen::Index i = c.unknown % n;
+            if (c.unknown >= n && (pattern_[i] == 2 || pattern_[i] == -2))
+                c.partner = coupling_of_[static_cast<size_t>(c.unknown < 2 * n ? 2 * n + i : n + i)];
+        }
     }
     // Their first values from the iterate's multipliers (a held value from rest).
     const Eigen::Index q = static_cast<Eigen::Index>(coupling_.size());
@@ -256,30 +298,54 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     held_solve(K, rhs, true, xi_, w_new_);
     if (q > 0) {
         auto r = krylov_residual_.head(q);
-        equations(K, p, rhs, w_new_, false, r);
+        auto response = response_.head(3 * q);
+        responses(K, p, rhs, w_new_, false, response);
+        equations(K, p, response, false, r);
         r = -r;
         force_scale = std::max(force_scale, r.lpNorm<Eigen::Infinity>());
         const double goal = 0.5 * tolerance * force_scale;
-        // The kept directions hold while the system does: the same pattern, factor and
-        // coefficients.
+        // The kept directions hold while the pattern and factor do (so the unknowns and what a
+        // held solve gives them). Each keeps its held solve's responses (what the equations
+        // read of it), so that where only the coefficients changed (the friction, a 3D slip
+        // direction and its rho: every Newton iteration of a 3D slip) its image is made again
+        // without a solve, and the images orthonormalized again.
+        const auto column = [&](int j) { return (first_ + j) % max_directions; };
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations() ||
-            kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_ ||
-            kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
-            kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
-            kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
+            kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_) {
             kept_ = first_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
             kept_pattern_ = pattern_;
-            kept_friction_ = p.friction;
-            kept_direction_ = direction_;
-            kept_ratio_ = ratio_;
+        } else if (kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
+                   kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
+                   kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
+            int kept = 0;
+            for (int j = 0; j < kept_; ++j) {
+                const int slot = column(j);
+                auto c = images_.col(slot).head(q);
+                equations(K, p, responses_.col(slot).head(3 * q), true, c);
+                const double before = c.norm();
+                orthogonalize(slot, kept, q);
+                const double norm = c.norm();
+                if (!(norm > 1e-10 * before)) continue;  // dependent on the others now: dropped
+                normalize(slot, norm, q);
+                if (kept != j) {  // close the ring's gap
+                    const int to = column(kept);
+                    directions_.col(to).head(q) = directions_.col(slot).head(q);
+                    images_.col(to).head(q) = images_.col(slot).head(q);
+                    responses_.col(to).head(3 * q) = responses_.col(slot).head(3 * q);
+                }
+                ++kept;
+            }
+            kept_ = kept;
         }
+        kept_friction_ = p.friction;
+        kept_direction_ = direction_;
+        kept_ratio_ = ratio_;
         // GCR: the kept directions' images c_j are orthonormal, so the residual's part in
         // their span goes at no solve; each new direction costs one held solve. Directions
         // are kept as loads and values (q entries), not as solutions: w is solved once more
         // at the end, which costs less than updating n_f-sized solutions with each of them.
-        const auto column = [&](int j) { return (first_ + j) % max_directions; };
         bool changed = false;
         for (int j = 0; j < kept_; ++j) {
             const double alpha = images_.col(column(j)).head(q).dot(r);
@@ -306,16 +372,12 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             auto c = images_.col(slot).head(q);
             v = r;
             held_solve(K, rhs, false, directions_.col(slot), z_);
-            equations(K, p, rhs, z_, true, c);
-            for (int j = 0; j < kept_; ++j) {  // modified Gram-Schmidt on the images
-                const double beta = images_.col(column(j)).head(q).dot(c);
-                c -= beta * images_.col(column(j)).head(q);
-                v -= beta * directions_.col(column(j)).head(q);
-            }
+            responses(K, p, rhs, z_, true, responses_.col(slot).head(3 * q));
+            equations(K, p, responses_.col(slot).head(3 * q), true, c);
+            orthogonalize(slot, kept_, q);
             const double norm = c.norm();
             if (!(norm > 0)) throw ContactSolveError("sparse contact solve: GCR broke down");
-            c /= norm;
-            v /= norm;
+            normalize(slot, norm, q);
             const double alpha = c.dot(r);
             r -= alpha * c;
             xi_.head(q) += alpha * v;
@@ -351,7 +413,10 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     krylov_residual_.resize(m2);
     for (Eigen::VectorXd* v : {&w, &w_new_, &w_trial_, &b_, &z_}) v->resize(nf);
     for (Eigen::VectorXd* v : {&lambda_new_, &lambda_trial_}) v->resize(m);
+    coupling_of_.resize(static_cast<size_t>(m2));
+    response_.resize(3 * m2);
     if (images_.rows() != m2) {
+        responses_.resize(3 * m2, max_directions);
         images_.resize(m2, max_directions);
         directions_.resize(m2, max_directions);
         kept_ = first_ = 0;

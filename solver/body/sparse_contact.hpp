@@ -123,14 +123,23 @@ private:
         Kind kind;     // a load (the factor's dof free) or a held value (held in the factor)
         double sf;     // +-F where the equation is a slip law's, else 0
         bool held;     // the pattern holds the dof (else it is loaded)
+        int partner;   // a 3D slipping node's other tangential unknown's coupling, else -1
     };
     // The right-hand side and held values of unknowns xi on top of base (the affine part's),
     // solved into x.
     void held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
                     const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x);
-    // The system's equations at x (homogeneous: without rhs and held values).
-    void equations(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
-                   const Eigen::VectorXd& x, bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const;
+    // What the system's equations read of a solution x, per coupled unknown k (3 q entries):
+    // the reaction at its dof, its dof's value, and its node's normal reaction (homogeneous:
+    // without rhs).
+    void responses(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                   const Eigen::VectorXd& x, bool homogeneous, Eigen::Ref<Eigen::VectorXd> out) const;
+    // The system's equations from those responses (homogeneous: without rhs and held values).
+    void equations(const HeldOperator& K, const ContactProblem& p,
+                   const Eigen::Ref<const Eigen::VectorXd>& response, bool homogeneous,
+                   Eigen::Ref<Eigen::VectorXd> e) const;
+    void orthogonalize(int slot, int count, Eigen::Index q);
+    void normalize(int slot, double norm, Eigen::Index q);
 
     using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
     Pattern pattern_, trial_pattern_;
@@ -149,7 +158,9 @@ private:
     Eigen::VectorXd xi_, krylov_residual_;
     // GCR's kept directions (loads and values) and their images (orthonormal), a ring of
     // kept_ from first_, valid for the pattern, factor and coefficients they were made with.
-    Eigen::MatrixXd directions_, images_;
+    Eigen::MatrixXd directions_, images_, responses_;
+    Eigen::VectorXd response_;
+    std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
     int kept_ = 0, first_ = 0;
     Pattern kept_pattern_;
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;

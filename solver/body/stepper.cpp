@@ -295,6 +295,14 @@ bool Stepper::wants_sparse() const {
            sparse_contact_pays(num_contact_nodes(), disc_.expand.cols(), params_.friction_coefficient);
 }
 
+void Stepper::set_contact_at_end_of_step(bool at_end) {
+    const MassVariant v = params_.mass_matrix;
+    if (v != MassVariant::standard && v != MassVariant::standard_implicit_contact)
+        throw std::logic_error("Stepper::set_contact_at_end_of_step: only for a consistent mass (variants 0 and 3)");
+    params_.mass_matrix = at_end ? MassVariant::standard_implicit_contact : MassVariant::standard;
+    disc_.contact_at_end_of_step = at_end;
+}
+
 void Stepper::set_contact_path(ContactPath path) {
     contact_path_ = path;
     for (auto& f : cache_) f.reset();

@@ -250,6 +250,10 @@ public:
     const char* operator_name() const override { return "factorized 4/dt^2 M + A"; }
     // Which contact solve the factors carry: automatic takes the measured cost model
     // (sparse_contact_pays); the others force one (tests, benchmarks). Drops cached factors.
+    // A consistent-mass body's contact at the end of the step (variant 3) or at its midpoint
+    // (variant 0): the same mass and K, so the static start's load path and its settling
+    // substep share one body and its factor. Throws std::logic_error for the other variants.
+    void set_contact_at_end_of_step(bool at_end);
     enum class ContactPath { automatic, condensed, sparse };
     void set_contact_path(ContactPath path);
     // Whether the last substep's factor solves the contact on the sparse system.

@@ -82,14 +82,15 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
 // across the load where a gap closes, nor where a node's friction coefficient changes on the
 // way (the stick memory: a node that stuck holds with F_s, one that slipped with F), nor where
 // the contact set grows. So a gap is closed first by the rigid shift `start` = -gap, and the
-// state taken is not the last u^{k+1} but the midpoint u^{k+1/2} of the final substep, from
-// `settle`, a body whose contact holds at the midpoint: that state is in static balance with
+// state taken is not the last u^{k+1} but the midpoint u^{k+1/2} of the final substep, run
+// with the contact at the midpoint (`timing`, where given, switches the body's contact to the
+// end of the step for the increments and back for it): that state is in static balance with
 // the substep's multipliers to round-off (A u = B^T lambda, the mass terms 1e-15), its active
 // nodes lie on the foundation, and its friction is within the cone the substep allowed. At
 // rest every pressed node sticks: it is marked so, and the stick memory then allows it F_s,
 // at least what it had. The body is left there at rest: the first dynamic substep's solution
 // is w = 0 with these multipliers.
-static State quasi_static_path(Body& path, Body& settle, double top, double start, int increments) {
+static State quasi_static_path(Body& path, Stepper* timing, double top, double start, int increments) {
     constexpr double quasi_static = 1e3;
     State rest;
     path.to_full(path.initial_state(0.0), rest);
@@ -109,10 +110,12 @@ static State quasi_static_path(Body& path, Body& settle, double top, double star
                 e.what() + "); use initial_state = paper");
         }
     };
+    if (timing) timing->set_contact_at_end_of_step(true);
     for (int k = 1; k <= increments; ++k)
         run(path, start + (top - start) * (k - 1) / increments, start + (top - start) * k / increments);
     const Eigen::VectorXd before = s.u;
-    run(settle, top, top);
+    if (timing) timing->set_contact_at_end_of_step(false);
+    run(path, top, top);
     s.u = 0.5 * (before + s.u);  // u^{k+1/2}
     s.v.setZero();
     const Eigen::Index nc = s.sticking.size();
@@ -121,12 +124,13 @@ static State quasi_static_path(Body& path, Body& settle, double top, double star
     return s;
 }
 
-// The full body that runs a static start's load path: `p`'s mesh and material, with contact at
-// the end of the step where the boundary has several heights (below), or at the midpoint;
-// the mass, which weighs 1e-15 there, is the consistent one (no M_r to build), and no
-// damping (2/dt beta A would weigh 1e-8: a static state does not depend on it).
-static std::unique_ptr<Stepper> path_stepper(SceneParameters p, bool end_of_step) {
-    p.mass_matrix = end_of_step ? MassVariant::standard_implicit_contact : MassVariant::standard;
+// The full body that runs a static start's load path: `p`'s mesh and material; the mass,
+// which weighs 1e-15 there, is the consistent one (no M_r to build), and no damping
+// (2/dt beta A would weigh 1e-8: a static state does not depend on it). Its contact is at the
+// midpoint; a boundary of several heights switches it to the end of the step for the
+// increments (below), on the same body and factor.
+static std::unique_ptr<Stepper> path_stepper(SceneParameters p) {
+    p.mass_matrix = MassVariant::standard;
     p.modes = 0;
     p.damping_mass = p.damping_stiffness = 0;
     return std::make_unique<Stepper>(p);
@@ -166,10 +170,9 @@ void Simulation::static_initial_state(double top, double force) {
     // the midpoint, no damping); else full bodies of the path's own (path_stepper).
     const bool own = flat && body_->modes() == 0 && !contact_at_end_of_step(p.mass_matrix) &&
                      !p.force_control && !p.damped();
-    std::unique_ptr<Stepper> settle = own ? nullptr : path_stepper(path, false);
-    std::unique_ptr<Stepper> increments = flat || own ? nullptr : path_stepper(path, true);
-    Body& settle_body = own ? *body_ : *settle;
-    Body& increments_body = increments ? *increments : settle_body;
+    std::unique_ptr<Stepper> path_body = own ? nullptr : path_stepper(path);
+    Body& runs = own ? *body_ : *path_body;
+    Stepper* timing = flat ? nullptr : path_body.get();
     // Without friction the static state does not depend on the path (the least energy under
     // the contact): a curved boundary's path is one increment, with its contact at the end of
     // the step, where ten cost ten contact solves whose contact sets differ (a 12.6k-node
@@ -178,7 +181,7 @@ void Simulation::static_initial_state(double top, double force) {
     if (!p.force_control) {
         // A top pressed below the gap touches: close the gap rigidly first (above).
         const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
-        state_ = body_->from_full(quasi_static_path(increments_body, settle_body, top, start, increments_count));
+        state_ = body_->from_full(quasi_static_path(runs, timing, top, start, increments_count));
         state_.time = time;
         check_static_balance();
         return;
@@ -188,7 +191,7 @@ void Simulation::static_initial_state(double top, double force) {
             "initial_state = static with top_control = force needs top_force > 0 at the start "
             "(it is " + std::to_string(force) + " N/m): only the contact holds the body; use "
             "initial_state = paper for a body that starts free");
-    const Discretization& d = settle->discretization();
+    const Discretization& d = path_body->discretization();
     const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
         double pressing = 0;                             // (A symmetric: col = row)
         for (int dof : d.top_dofs)
@@ -196,7 +199,7 @@ void Simulation::static_initial_state(double top, double force) {
         return pressing;
     };
     double probe = -1e-4 * d.mesh.clamp_height();
-    State s = quasi_static_path(increments_body, settle_body, probe, 0.0, increments_count);
+    State s = quasi_static_path(runs, timing, probe, 0.0, increments_count);
     double pressing = pressing_force(s);
     if (!(pressing > 0))
         throw std::invalid_argument("initial_state = static: the clamped load path carries no "
@@ -233,7 +236,7 @@ void Simulation::static_initial_state(double top, double force) {
             // linear estimate from the unloaded body reaches the force or passes it.
             probe = bracketed ? low + (force - low_pressing) * (high - low) / (high_pressing - low_pressing)
                               : probe * std::max(force / pressing, 1.0 + 1e-3);
-            s = quasi_static_path(increments_body, settle_body, probe, 0.0, increments_count);
+            s = quasi_static_path(runs, timing, probe, 0.0, increments_count);
             pressing = pressing_force(s);
         }
     }

@@ -29,6 +29,9 @@ string(JSON platform_count LENGTH ${platform_table} platforms)
 math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
+  # The platforms' builds run two at a time, each on two jobs, beside the native targets: one
+  # after another, each build's last files left a core idle (its longest file, its links).
+  set_property(GLOBAL APPEND PROPERTY JOB_POOLS platform_builds=2)
   if(NOT ZIG)  # scripts/setup.sh passes a zig outside the clone (its libc++ builds are cached by path)
     python_package_file(ZIG ziglang zig)
   endif()
@@ -81,7 +84,8 @@ if(CONTACTBODY_PORTABLE)
                  -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCONTACTBODY_FMU_BINARIES_ONLY=ON
                  -DCONTACTBODY_HOSTS=${hosts_arg}
                  -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
-      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
+      BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --parallel 2
+      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} JOB_POOLS build=platform_builds)
     list(APPEND binary_targets binaries_${platform})
   endforeach()
   # FMI 2.0's folders: one binary each, a universal one where rows share the folder.

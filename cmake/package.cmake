@@ -29,9 +29,9 @@ string(JSON platform_count LENGTH ${platform_table} platforms)
 math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
-  # The platforms' builds run two at a time, each on two jobs, beside the native targets: one
-  # after another, each build's last files left a core idle (its longest file, its links).
-  set_property(GLOBAL APPEND PROPERTY JOB_POOLS platform_builds=2)
+  # The platforms' builds run beside each other and the native targets (as many as the outer
+  # build's jobs), each on two jobs: one after another in the console pool, each build's last
+  # files left a core idle (its longest file, its links).
   if(NOT ZIG)  # scripts/setup.sh passes a zig outside the clone (its libc++ builds are cached by path)
     python_package_file(ZIG ziglang zig)
   endif()
@@ -85,7 +85,7 @@ if(CONTACTBODY_PORTABLE)
                  -DCONTACTBODY_HOSTS=${hosts_arg}
                  -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
       BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --parallel 2
-      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} JOB_POOLS build=platform_builds)
+      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products})
     list(APPEND binary_targets binaries_${platform})
   endforeach()
   # FMI 2.0's folders: one binary each, a universal one where rows share the folder.

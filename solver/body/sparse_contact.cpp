@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "build_features.hpp"
 #include "text.hpp"
 #include "trailing_cholesky.hpp"
 
@@ -79,6 +80,9 @@ void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) con
 void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) { factor_->solve(b, x); }
 
 namespace {
+// A 3D body's isotropic friction (the disc), which a 2D-only build leaves out (build_features.hpp).
+bool isotropic(const ContactProblem& p) { return solid_bodies_built && p.has_friction() && p.tangents == 2; }
+
 double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
     return pattern > 0 ? p.friction[i] : -p.friction[i];
 }
@@ -92,7 +96,7 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
     phi.resize(lambda.size());
     trial_pattern_.resize(n);
     trial_status_.resize(n);
-    if (friction && p.tangents == 2) {  // a 3D body: the disc (one r_T for both directions,
+    if (isotropic(p)) {  // a 3D body: the disc (one r_T for both directions,
         trial_direction_.resize(2 * n);  // the mean of K's: invariant under a turn about y)
         trial_ratio_.resize(n);
         for (Eigen::Index i = 0; i < n; ++i) {
@@ -109,7 +113,7 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
             trial_ratio_[i] = d.ratio;
         }
     }
-    for (Eigen::Index i = 0; i < n && !(friction && p.tangents == 2); ++i) {
+    for (Eigen::Index i = 0; i < n && !isotropic(p); ++i) {
         double unused = 0;
         double& phiT = friction ? phi[n + i] : unused;
         trial_pattern_[i] = alart_curnier_node(
@@ -189,7 +193,7 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
     for (Eigen::Index k = 0; k < q; ++k) {
         const Coupling& c = coupling_[static_cast<size_t>(k)];
         const Eigen::Index j = c.unknown, i = j % n;
-        if (c.partner >= 0) {
+        if (solid_bodies_built && c.partner >= 0) {
             // A 3D slipping node: phi_T = l_T - F p t(z) linearized at the iterate (Newton, not
             // a fixed point in t): l_T - F p t - rho (I - t t^T) (q - q0), q = l_T - r_T u_T,
             // rho = F p / |z| (disc_node's ratio), q0 the iterate's (the shift).
@@ -268,13 +272,13 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         // A slipping node's friction, F p along its slip direction: +-F in 2D, F t in 3D (t
         // the last residual's, held through the pattern's solve).
         const double sf = !slips ? 0.0
-                          : p.tangents == 2 ? p.friction[i] * direction_[(j / n - 1) * n + i]
+                          : isotropic(p) ? p.friction[i] * direction_[(j / n - 1) * n + i]
                                             : slip_sign(p, i, pattern_[i]);
         if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
         else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
         else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
     }
-    if (friction && p.tangents == 2) {  // a slipping node's x and z equations take both
+    if (isotropic(p)) {  // a slipping node's x and z equations take both
         for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
         for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
         for (Coupling& c : coupling_) {
@@ -431,7 +435,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         if (!(lambda[i] < 0)) pattern_[i] = 0;
         else if (!friction || sticking[i] != 0) pattern_[i] = 1;
         else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
-        if (friction && p.tangents == 2 && pattern_[i] != 0) {  // along its last friction
+        if (isotropic(p) && pattern_[i] != 0) {  // along its last friction
             const double tx = lambda[n + i], tz = lambda[2 * n + i], size = std::sqrt(tx * tx + tz * tz);
             pattern_[i] = sticking[i] != 0 || !(size > 0) ? 1 : 2;
             if (size > 0) direction_[i] = tx / size, direction_[n + i] = tz / size;
@@ -454,7 +458,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
-        if (friction && p.tangents == 2) {  // the iterate's rho (I - t t^T) q0 (equations)
+        if (isotropic(p)) {  // the iterate's rho (I - t t^T) q0 (equations)
             for (Eigen::Index i = 0; i < n; ++i) {
                 const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
                 const double t[2] = {direction_[i], direction_[n + i]};
@@ -495,7 +499,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         lambda_trial_ = lambda;
         pattern_.swap(trial_pattern_);
         status_.swap(trial_status_);
-        if (friction && p.tangents == 2) {
+        if (isotropic(p)) {
             direction_.swap(trial_direction_);
             ratio_.swap(trial_ratio_);
         }

@@ -83,6 +83,11 @@ namespace {
 // A 3D body's isotropic friction (the disc), which a 2D-only build leaves out (build_features.hpp).
 bool isotropic(const ContactProblem& p) { return solid_bodies_built && p.has_friction() && p.tangents == 2; }
 
+// One r_T for both tangential directions, the mean of K's: invariant under a turn about y.
+double tangential_stiffness(const HeldOperator& K, Eigen::Index n, Eigen::Index i) {
+    return 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+}
+
 double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
     return pattern > 0 ? p.friction[i] : -p.friction[i];
 }
@@ -103,7 +108,7 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
             const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
             const double u[3] = {-w[K.dof(i)], w[K.dof(n + i)], w[K.dof(2 * n + i)]};
             const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
-            const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+            const double rT = tangential_stiffness(K, n, i);
             const DiscNode d = disc_node(l, u, K.stiffness(i), rT, p.gap_limit[i], origin, p.friction[i]);
             for (int c = 0; c < 3; ++c) phi[c * n + i] = d.phi[c];
             trial_status_[i] = d.status;
@@ -199,7 +204,7 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
             // rho = F p / |z| (disc_node's ratio), q0 the iterate's (the shift).
             const int component = static_cast<int>(j / n) - 1;
             const Eigen::Index x_k = component == 0 ? k : c.partner, z_k = component == 0 ? c.partner : k;
-            const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+            const double rT = tangential_stiffness(K, n, i);
             const double t[2] = {direction_[i], direction_[n + i]};
             const double l[2] = {reaction(x_k), reaction(z_k)};
             const double qT[2] = {l[0] - rT * value(x_k), l[1] - rT * value(z_k)};
@@ -460,7 +465,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         ++info.iterations;
         if (isotropic(p)) {  // the iterate's rho (I - t t^T) q0 (equations)
             for (Eigen::Index i = 0; i < n; ++i) {
-                const double rT = 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+                const double rT = tangential_stiffness(K, n, i);
                 const double t[2] = {direction_[i], direction_[n + i]};
                 const double q[2] = {lambda[n + i] - rT * w[K.dof(n + i)],
                                      lambda[2 * n + i] - rT * w[K.dof(2 * n + i)]};

@@ -29,10 +29,11 @@ string(JSON platform_count LENGTH ${platform_table} platforms)
 math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
-  # The platforms' builds run one after another (the console pool). Run beside each other they
-  # cut the build from about 1100 s to 724-939 s in CI, but one run of four failed in zig's
-  # Mach-O link of both macOS targets ("failed to parse TBD file: NotLibStub" on our objects),
-  # cause not found: docs/building.md.
+  # The platforms' builds run beside each other and the native targets (as many as the outer
+  # build's jobs), each on two jobs: one after another in the console pool, each build's last
+  # files left a core idle (its longest file, its links), and the build took about 1100 s in CI
+  # against 724-939 s. cmake/build_platform.cmake builds a failed one once more (zig's Mach-O
+  # link failed once, cause not found: docs/building.md).
   if(NOT ZIG)  # scripts/setup.sh passes a zig outside the clone (its libc++ builds are cached by path)
     python_package_file(ZIG ziglang zig)
   endif()
@@ -85,7 +86,8 @@ if(CONTACTBODY_PORTABLE)
                  -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCONTACTBODY_FMU_BINARIES_ONLY=ON
                  -DCONTACTBODY_HOSTS=${hosts_arg}
                  -DZIG=${ZIG} -DEIGEN3_INCLUDE_DIR=${EIGEN3_INCLUDE_DIR}
-      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products} USES_TERMINAL_BUILD ON)
+      BUILD_COMMAND ${CMAKE_COMMAND} -DDIR=<BINARY_DIR> -P ${PROJECT_SOURCE_DIR}/cmake/build_platform.cmake
+      INSTALL_COMMAND "" BUILD_ALWAYS ON BUILD_BYPRODUCTS ${products})
     list(APPEND binary_targets binaries_${platform})
   endforeach()
   # FMI 2.0's folders: one binary each, a universal one where rows share the folder.

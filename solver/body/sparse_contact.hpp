@@ -63,6 +63,7 @@ public:
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
     long refactorizations() const { return refactorizations_; }
     double factor_nonzeros() const;
+    TrailingCholesky& factor() { return *factor_; }
 
 private:
     SparseMatrix K_;                 // both triangles: the held columns' entries

@@ -250,6 +250,11 @@ std::string Stepper::summary() const {
 
 bool Stepper::sparse_contact() const { return cache_[0] && cache_[0]->held; }
 
+TrailingCholesky& Stepper::last_factor() {
+    if (!cache_[0]) throw std::logic_error("Stepper::last_factor: no factor before the first substep");
+    return cache_[0]->held ? cache_[0]->held->factor() : *cache_[0]->cholesky;
+}
+
 ContactFactorization Stepper::contact_factorization() const {
     const Factor* f = nullptr;
     for (const auto& c : cache_)

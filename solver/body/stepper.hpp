@@ -273,6 +273,10 @@ public:
     // Which contact solve the body takes, and why (the log's).
     std::string summary() const override;
     long sparse_refactorizations() const;  // of the cached factors' held operators
+    // The last substep's factor of K (the sparse solve's, its held set's rows and columns the
+    // identity's, or the condensed solve's Cholesky factor): its size and one solve with it,
+    // the floor of a substep, for benchmarks. Throws std::logic_error before the first substep.
+    TrailingCholesky& last_factor();
     // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held) of the
     // current factor: a saved state keeps it, so that a restored one solves on the same.
     ContactFactorization contact_factorization() const override;

@@ -16,10 +16,10 @@ per case.
 
 Writes benchmarks/results/cost3d.json and cost3d.md.
 
-    .venv/bin/python benchmarks/cost3d.py [--build build] [--meshes 0,1,2]
+    .venv/bin/python benchmarks/cost3d.py [--build build] [--meshes 0,1,2] [--scenes pressed,lifted]
 
---meshes runs those meshes only (indices into MESHES) and keeps the other meshes' rows of the
-results file; the file is written after each case.
+--meshes and --scenes run those only (indices into MESHES, names of SCENES) and keep the other
+rows of the results file, which is written after each case.
 """
 import argparse
 import json
@@ -42,13 +42,18 @@ def main():
     parser.add_argument("--build", default=str(ROOT / "build"))
     parser.add_argument("--meshes", default=",".join(str(i) for i in range(len(MESHES))),
                         help="which meshes (indices into MESHES, smallest first)")
+    parser.add_argument("--scenes", default=",".join(SCENES), help="which scenes")
+    parser.add_argument("--out", default=str(OUT), help="the results folder")
     args = parser.parse_args()
+    out = pathlib.Path(args.out)
     program = pathlib.Path(args.build) / "bench_contact_scaling"
     chosen = [int(i) for i in args.meshes.split(",")]
     sizes = [m[0] for m in MESHES]
-    results = OUT / "cost3d.json"
+    results = out / "cost3d.json"
+    scenes = args.scenes.split(",")
     rows = [r for r in json.loads(results.read_text())["rows"]
-            if r["contact_size"] in sizes and sizes.index(r["contact_size"]) not in chosen] if results.exists() else []
+            if r["contact_size"] in sizes and not (sizes.index(r["contact_size"]) in chosen and r["scene"] in scenes)
+            ] if results.exists() else []
     with tempfile.TemporaryDirectory() as tmp:
         for contact, far, sliding in (MESHES[i] for i in chosen):
             path = meshes.hemisphere(pathlib.Path(tmp) / f"hemisphere_{contact:.3g}.msh", radius=0.05,
@@ -56,22 +61,22 @@ def main():
                                      refine_distance=0.025, contact_angle=25.0)
             nodes = int(path.read_text().split("$Nodes\n")[1].split()[1])
             for scene, extra in SCENES.items():
-                if scene == "sliding" and not sliding:
+                if scene not in scenes or (scene == "sliding" and not sliding):
                     continue
-                out = subprocess.run([str(program), str(path), "0", "automatic", "30", *extra],
-                                     check=True, capture_output=True, text=True).stdout
-                row = {"nodes": nodes, "scene": scene, "contact_size": contact, **json.loads(out)}
+                case = subprocess.run([str(program), str(path), "0", "automatic", "30", *extra],
+                                      check=True, capture_output=True, text=True).stdout
+                row = {"nodes": nodes, "scene": scene, "contact_size": contact, **json.loads(case)}
                 rows.append(row)
                 print(json.dumps(row), flush=True)
-                write(rows)
+                write(rows, out)
 
 
-def write(rows):
+def write(rows, out=OUT):
     """The results file and its table, rows in the order of MESHES and SCENES."""
     sizes, scenes = [m[0] for m in MESHES], list(SCENES)
     rows.sort(key=lambda r: (sizes.index(r["contact_size"]), scenes.index(r["scene"])))
-    OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / "cost3d.json").write_text(json.dumps({"rows": rows}, indent=1) + "\n")
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "cost3d.json").write_text(json.dumps({"rows": rows}, indent=1) + "\n")
     lines = ["# What a 3D body costs", "",
              "`.venv/bin/python benchmarks/cost3d.py`: tetrahedral hemispheres (R = 50 mm), "
              "beta = 4e-6 s, 1e-6 s substeps, the foundation at 20 m/s; pressed: F = 0, static start "
@@ -91,7 +96,7 @@ def write(rows):
                      f"{r['static_start_seconds']:.3g} | {1e3 * r['substep_seconds']:.3g} | "
                      f"{1e3 * r['sparse_solve_seconds']:.3g} | {r['substep_per_solve']:.2f} | {factor(r)} | "
                      f"{r['peak_memory_mb']:.0f} |")
-    (OUT / "cost3d.md").write_text("\n".join(lines) + "\n")
+    (out / "cost3d.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "simulation.hpp"
+#include "trailing_cholesky.hpp"
 
 using namespace contactbody;
 
@@ -124,6 +125,34 @@ TEST(SparseContactSolve, ReplaysBitForBit) {
     }
     EXPECT_EQ(a.state().u, c.state().u);
     EXPECT_EQ(a.state().lambda, c.state().lambda);
+}
+
+// What a benchmark takes as a substep's floor (bench_contact_scaling): one solve with the last
+// substep's factor is a solve with the substep's matrix 4/dt^2 M + A + 2/dt C, on either path,
+// where the body does not touch (no dof held).
+TEST(Stepper, LastFactorSolvesTheSubstepMatrix) {
+    SceneParameters p;
+    p.nx = p.ny = 12;
+    p.damping_stiffness = 4e-6;
+    p.internal_step = 2.5e-6;
+    p.initial_gap = 1e-3;
+    for (const auto path : {Stepper::ContactPath::sparse, Stepper::ContactPath::condensed}) {
+        auto owned = stepper_on(p, path);
+        Stepper& stepper = *owned;
+        EXPECT_THROW(stepper.last_factor(), std::logic_error);
+        Simulation sim(std::move(owned), 0.0);
+        StepInputs in;
+        in.foundation_velocity = 5;
+        sim.do_step(1e-5, in);
+        ASSERT_EQ(stepper.sparse_contact(), path == Stepper::ContactPath::sparse);
+        const Discretization& d = stepper.discretization();
+        const double dt = p.internal_step;
+        const SparseMatrix K = (4 / (dt * dt)) * d.M_free + d.A_free + (2 / dt) * d.C_free;
+        const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1, 2);
+        Eigen::VectorXd x(K.rows());
+        stepper.last_factor().solve(b, x);
+        EXPECT_LT((K * x - b).norm(), 1e-12 * b.norm());
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(

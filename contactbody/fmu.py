@@ -102,7 +102,10 @@ class Instance:
         self.callbacks = fmi2CallbackFunctions()
         self.callbacks.logger = _logger
         addLoggerProxy(ctypes.byref(self.callbacks))
-        self.slave.instantiate(callbacks=self.callbacks, loggingOn=logging_on)
+        try:
+            self.slave.instantiate(callbacks=self.callbacks, loggingOn=logging_on)
+        except Exception as error:  # fmpy says only "Failed to instantiate model": add the log
+            raise RuntimeError(f"{error}; the FMU's log: {self.text() or '(empty)'}") from error
 
     def __getattr__(self, name):
         return getattr(self.slave, name)

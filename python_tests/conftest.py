@@ -1,10 +1,12 @@
 """Shared fixtures: the built FMU, its extracted copy, and low-level instances that record
 every log message."""
+import atexit
 import ctypes
 import os
 import pathlib
 import shutil
 import socket
+import subprocess
 import tempfile
 import time
 
@@ -28,6 +30,16 @@ if PLATFORM == "win64":
     # fmpy starts `wine64` from PATH; ours (scripts/wine/wine64 says why) keeps the server up.
     os.environ["PATH"] = f"{ROOT / 'scripts' / 'wine'}{os.pathsep}{os.environ['PATH']}"
     os.environ.setdefault("WINEDEBUG", "-all")
+    # wineserver ends itself a moment after the last wine process; an instance started as it
+    # ends waited up to 2.5 s for its server here (0.5 s otherwise). CI once saw fmpy's client
+    # give up after its 10 s ("Failed to instantiate model"), most likely in that race. One
+    # persistent wineserver serves the session instead.
+    _prefix = pathlib.Path(os.environ.get("WINEPREFIX", pathlib.Path.home() / ".wine"))
+    _prefix.mkdir(parents=True, exist_ok=True)  # wine fills an empty prefix on its first run
+    subprocess.run(["/usr/lib/wine/wineserver", "--persistent"], check=True,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    atexit.register(subprocess.run, ["/usr/lib/wine/wineserver", "--kill"],
+                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 
 def not_through_remoting(why):

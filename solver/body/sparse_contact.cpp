@@ -252,15 +252,57 @@ void SparseContactSolver::orthogonalize(int slot, int count, Eigen::Index q) {
         const int other = (first_ + j) % max_directions;
         const double beta = images_.col(other).head(q).dot(c);
         c -= beta * images_.col(other).head(q);
-        directions_.col(slot).head(q) -= beta * directions_.col(other).head(q);
-        responses_.col(slot).head(3 * q) -= beta * responses_.col(other).head(3 * q);
+        directions_.col(slot) -= beta * directions_.col(other);
+        responses_.col(slot) -= beta * responses_.col(other);
     }
 }
 
 void SparseContactSolver::normalize(int slot, double norm, Eigen::Index q) {
     images_.col(slot).head(q) /= norm;
-    directions_.col(slot).head(q) /= norm;
-    responses_.col(slot).head(3 * q) /= norm;
+    directions_.col(slot) /= norm;
+    responses_.col(slot) /= norm;
+}
+
+// What the equations read of a kept direction's solution (responses() of the coupled unknowns)
+// from its responses at every contact unknown.
+void SparseContactSolver::coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const {
+    const Eigen::Index q = static_cast<Eigen::Index>(coupling_.size()), m = directions_.rows();
+    const auto all = responses_.col(slot);
+    for (Eigen::Index k = 0; k < q; ++k) {
+        const Eigen::Index j = coupling_[static_cast<size_t>(k)].unknown;
+        out[k] = all[j];
+        out[q + k] = all[m + j];
+        out[2 * q + k] = j >= n ? all[j % n] : 0.0;
+    }
+}
+
+// A kept direction (loads and values on the factor's dofs) stays valid on the same factor
+// when the pattern changes, where it has no entry at an unknown that is no longer coupled:
+// such entries are eliminated between the directions (one direction fewer each), so that a
+// substep whose pattern differs from the last by a node keeps the others' directions.
+void SparseContactSolver::eliminate_uncoupled() {
+    const Eigen::Index m = directions_.rows();
+    const auto column = [&](int j) { return (first_ + j) % max_directions; };
+    for (Eigen::Index u = 0; u < m; ++u) {
+        if (coupling_of_[static_cast<size_t>(u)] >= 0) continue;
+        int pivot = -1;
+        double largest = 0;
+        for (int j = 0; j < kept_; ++j) {
+            const double a = std::abs(directions_(u, column(j)));
+            if (a > largest) largest = a, pivot = column(j);
+        }
+        if (pivot < 0) continue;
+        for (int j = 0; j < kept_; ++j) {
+            const int other = column(j);
+            if (other == pivot || directions_(u, other) == 0) continue;
+            const double f = directions_(u, other) / directions_(u, pivot);
+            directions_.col(other) -= f * directions_.col(pivot);
+            responses_.col(other) -= f * responses_.col(pivot);
+            directions_(u, other) = 0;
+        }
+        directions_.col(pivot).setZero();  // dropped below (no image)
+        responses_.col(pivot).setZero();
+    }
 }
 
 bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p,
@@ -283,9 +325,9 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
         else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
     }
+    for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
+    for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
     if (isotropic(p)) {  // a slipping node's x and z equations take both
-        for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
-        for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
         for (Coupling& c : coupling_) {
             const Eigen::Index i = c.unknown % n;
             if (c.unknown >= n && (pattern_[i] == 2 || pattern_[i] == -2))
@@ -313,26 +355,27 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         r = -r;
         force_scale = std::max(force_scale, r.lpNorm<Eigen::Infinity>());
         const double goal = 0.5 * tolerance * force_scale;
-        // The kept directions hold while the pattern and factor do (so the unknowns and what a
-        // held solve gives them). Each keeps its held solve's responses (what the equations
-        // read of it), so that where only the coefficients changed (the friction, a 3D slip
-        // direction and its rho: every Newton iteration of a 3D slip) its image is made again
-        // without a solve, and the images orthonormalized again.
+        // The kept directions hold while the factor does (what a held solve gives them). Each
+        // keeps its held solve's responses at every contact unknown, so that where the
+        // pattern changed (its unknowns: eliminate_uncoupled) or only the coefficients did
+        // (the friction, a 3D slip direction and its rho: every Newton iteration of a 3D slip)
+        // its image is made again without a solve, and the images orthonormalized again.
         const auto column = [&](int j) { return (first_ + j) % max_directions; };
-        if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations() ||
-            kept_pattern_.size() != pattern_.size() || kept_pattern_ != pattern_) {
+        const bool same_pattern = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_;
+        if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) {
             kept_ = first_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
-            kept_pattern_ = pattern_;
-        } else if (kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
+        } else if (!same_pattern || kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
                    kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
                    kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
+            if (!same_pattern) eliminate_uncoupled();
             int kept = 0;
             for (int j = 0; j < kept_; ++j) {
                 const int slot = column(j);
                 auto c = images_.col(slot).head(q);
-                equations(K, p, responses_.col(slot).head(3 * q), true, c);
+                coupled_responses(slot, n, response_.head(3 * q));
+                equations(K, p, response_.head(3 * q), true, c);
                 const double before = c.norm();
                 orthogonalize(slot, kept, q);
                 const double norm = c.norm();
@@ -340,14 +383,15 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 normalize(slot, norm, q);
                 if (kept != j) {  // close the ring's gap
                     const int to = column(kept);
-                    directions_.col(to).head(q) = directions_.col(slot).head(q);
+                    directions_.col(to) = directions_.col(slot);
                     images_.col(to).head(q) = images_.col(slot).head(q);
-                    responses_.col(to).head(3 * q) = responses_.col(slot).head(3 * q);
+                    responses_.col(to) = responses_.col(slot);
                 }
                 ++kept;
             }
             kept_ = kept;
         }
+        kept_pattern_ = pattern_;
         kept_friction_ = p.friction;
         kept_direction_ = direction_;
         kept_ratio_ = ratio_;
@@ -359,7 +403,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         for (int j = 0; j < kept_; ++j) {
             const double alpha = images_.col(column(j)).head(q).dot(r);
             r -= alpha * images_.col(column(j)).head(q);
-            xi_.head(q) += alpha * directions_.col(column(j)).head(q);
+            for (Eigen::Index k = 0; k < q; ++k)
+                xi_[k] += alpha * directions_(coupling_[static_cast<size_t>(k)].unknown, column(j));
             changed = true;
         }
         int iterations = 0;
@@ -377,19 +422,26 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 --kept_;
             }
             const int slot = column(kept_);
-            auto v = directions_.col(slot).head(q);
+            auto v = direction_coupled_.head(q);
             auto c = images_.col(slot).head(q);
             v = r;
-            held_solve(K, rhs, false, directions_.col(slot), z_);
-            responses(K, p, rhs, z_, true, responses_.col(slot).head(3 * q));
-            equations(K, p, responses_.col(slot).head(3 * q), true, c);
+            held_solve(K, rhs, false, v, z_);
+            directions_.col(slot).setZero();
+            for (Eigen::Index k = 0; k < q; ++k) directions_(coupling_[static_cast<size_t>(k)].unknown, slot) = v[k];
+            for (Eigen::Index j = 0; j < m; ++j) {  // its responses at every contact unknown
+                responses_(j, slot) = K.row_product(j, z_);
+                responses_(m + j, slot) = z_[K.dof(j)];
+            }
+            coupled_responses(slot, n, response_.head(3 * q));
+            equations(K, p, response_.head(3 * q), true, c);
             orthogonalize(slot, kept_, q);
             const double norm = c.norm();
             if (!(norm > 0)) throw ContactSolveError("sparse contact solve: GCR broke down");
             normalize(slot, norm, q);
             const double alpha = c.dot(r);
             r -= alpha * c;
-            xi_.head(q) += alpha * v;
+            for (Eigen::Index k = 0; k < q; ++k)  // the direction as orthonormalized
+                xi_[k] += alpha * directions_(coupling_[static_cast<size_t>(k)].unknown, slot);
             changed = true;
             ++kept_;
             ++iterations;
@@ -424,8 +476,9 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     for (Eigen::VectorXd* v : {&lambda_new_, &lambda_trial_}) v->resize(m);
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
+    direction_coupled_.resize(m2);
     if (images_.rows() != m2) {
-        responses_.resize(3 * m2, max_directions);
+        responses_.resize(2 * m2, max_directions);
         images_.resize(m2, max_directions);
         directions_.resize(m2, max_directions);
         kept_ = first_ = 0;

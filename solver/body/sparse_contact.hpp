@@ -19,7 +19,8 @@
 // is solved on the factor of a nearby held set: what differs (dofs held now but free in the
 // factor, dofs free now but held in it, and the slipping nodes' loads) are the unknowns of a
 // small linear system solved by GCR, one held solve an iteration, whose directions are kept
-// while the pattern holds (a substep like the last needs none). The factor is rebuilt (a
+// while the factor holds (a substep like the last needs none; where a node changes state, the
+// directions' entries at what is no longer an unknown are eliminated between them). The factor is rebuilt (a
 // numeric refactorization) only where many dofs differ.
 #pragma once
 
@@ -140,6 +141,8 @@ private:
                    const Eigen::Ref<const Eigen::VectorXd>& response, bool homogeneous,
                    Eigen::Ref<Eigen::VectorXd> e) const;
     void orthogonalize(int slot, int count, Eigen::Index q);
+    void coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const;
+    void eliminate_uncoupled();
     void normalize(int slot, double norm, Eigen::Index q);
 
     using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
@@ -157,10 +160,12 @@ private:
     Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values
     std::vector<Coupling> coupling_;
     Eigen::VectorXd xi_, krylov_residual_;
-    // GCR's kept directions (loads and values) and their images (orthonormal), a ring of
-    // kept_ from first_, valid for the pattern, factor and coefficients they were made with.
+    // GCR's kept directions (loads and values, per contact unknown), their held solves'
+    // responses (the reaction, then the value, at every contact unknown) and their images
+    // (orthonormal, per coupled unknown), a ring of kept_ from first_, valid for the factor
+    // they were made on (and their images for the pattern and coefficients).
     Eigen::MatrixXd directions_, images_, responses_;
-    Eigen::VectorXd response_;
+    Eigen::VectorXd response_, direction_coupled_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
     int kept_ = 0, first_ = 0;
     Pattern kept_pattern_;

@@ -95,11 +95,12 @@ public:
                            const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
                            Eigen::VectorXd& w, bool fresh_factor);
     // Drops the kept directions (they make a solve faster, and change its last bits).
-    void forget() { kept_ = first_ = 0; kept_operator_ = nullptr; }
+    void forget() { kept_ = 0; kept_operator_ = nullptr; }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life
     long krylov_iterations() const { return krylov_iterations_; }
+    long gcr_rounds() const { return rounds_; }  // GCR's rounds after the first (solve_coupled)
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
     // More dofs differing from the factor's held set than this: refactor to the pattern's.
@@ -140,10 +141,11 @@ private:
     void equations(const HeldOperator& K, const ContactProblem& p,
                    const Eigen::Ref<const Eigen::VectorXd>& response, bool homogeneous,
                    Eigen::Ref<Eigen::VectorXd> e) const;
-    void orthogonalize(int slot, int count, Eigen::Index q);
+    bool orthonormalize(int slot, Eigen::Index q, double dependent);
+    void remake_images(const HeldOperator& K, const ContactProblem& p, int first);
+    void add_directions(Eigen::Index q);
     void coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const;
     void eliminate_uncoupled();
-    void normalize(int slot, double norm, Eigen::Index q);
 
     using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
     Pattern pattern_, trial_pattern_;
@@ -160,19 +162,20 @@ private:
     Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values
     std::vector<Coupling> coupling_;
     Eigen::VectorXd xi_, krylov_residual_;
-    // GCR's kept directions (loads and values, per contact unknown), their held solves'
-    // responses (the reaction, then the value, at every contact unknown) and their images
-    // (orthonormal, per coupled unknown), a ring of kept_ from first_, valid for the factor
-    // they were made on (and their images for the pattern and coefficients).
-    Eigen::MatrixXd directions_, images_, responses_;
-    Eigen::VectorXd response_, direction_coupled_;
+    // GCR's kept_ directions as made (loads and values, per contact unknown), their held
+    // solves' responses (the reaction, then the value, at every contact unknown), valid for
+    // the factor they were made on; the orthonormal images (per coupled unknown) for the
+    // pattern and coefficients, and which combination of the directions each one's is
+    // (combinations_: upper triangular). coefficients_: GCR's step in the directions as made.
+    Eigen::MatrixXd directions_, images_, responses_, combinations_;
+    Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
-    int kept_ = 0, first_ = 0;
+    int kept_ = 0;
     Pattern kept_pattern_;
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
-    long solves_ = 0, krylov_iterations_ = 0;
+    long solves_ = 0, krylov_iterations_ = 0, rounds_ = 0;
 };
 
 }  // namespace contactbody

@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
     const bool sparse = stepper && stepper->sparse_contact();
     const long held_solves = stepper ? stepper->sparse_solver().solves() : 0L;
     const long krylov_iterations = stepper ? stepper->sparse_solver().krylov_iterations() : 0L;
+    const long gcr_rounds = stepper ? stepper->sparse_solver().gcr_rounds() : 0L;
     const long held_refactorizations = stepper ? stepper->sparse_refactorizations() : 0L;
     // The floor: one solve with K's factor in its fill-reducing order. The full body's is its own
     // last factor (the sparse contact solve's, its held set's rows the identity's: the same
@@ -95,13 +96,13 @@ int main(int argc, char** argv) {
                 "\"static_start_seconds\": %.6g, \"substep_seconds\": %.6g, "
                 "\"sparse_solve_seconds\": %.6g, \"substep_per_solve\": %.4g, "
                 "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
-                "\"krylov_iterations\": %ld, \"held_refactorizations\": %ld, "
+                "\"krylov_iterations\": %ld, \"gcr_rounds\": %ld, \"held_refactorizations\": %ld, "
                 "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
                 "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
                 "\"factor_kernel\": \"%s\"}\n",
                 contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start,
                 substep, solve, substep / solve, static_cast<double>(iterations) / (steps * per_step),
-                held_solves, krylov_iterations, held_refactorizations, o.normal_force, o.kinetic_energy,
+                held_solves, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force, o.kinetic_energy,
                 o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
                 factor.supernodal() ? "supernodal_lu" : "simplicial");
 }

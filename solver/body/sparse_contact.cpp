@@ -536,7 +536,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     ContactSolveInfo info;
     double merit = std::numeric_limits<double>::infinity();
     // GCR's goal (solve_coupled): the tolerance, a tenth of it for each Newton iteration that
-    // ends on the pattern it solved (which only a more accurate solve of it can improve).
+    // ends on the pattern it solved without halving the residual (a stall that only a more
+    // accurate solve of the pattern can end: F = 1.2).
     double linear_tolerance = options.tolerance;
     for (;;) {
         if (info.iterations >= options.max_iterations) {
@@ -583,7 +584,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                 trial_merit = phi_new_.squaredNorm();
             }
         }
-        if (trial_pattern_ == pattern_) linear_tolerance = std::max(0.1 * linear_tolerance, 1e-6 * options.tolerance);
+        if (trial_pattern_ == pattern_ && res > 0.5 * info.residual && info.iterations > 1)
+            linear_tolerance = std::max(0.1 * linear_tolerance, 1e-6 * options.tolerance);
         w.swap(w_new_);
         lambda.swap(lambda_new_);
         lambda_trial_ = lambda;

@@ -18,8 +18,10 @@ Writes benchmarks/results/cost3d.json and cost3d.md.
 
     .venv/bin/python benchmarks/cost3d.py [--build build] [--meshes 0,1] [--scenes pressed,lifted]
 
-By default the two smaller meshes; --meshes 2 the 111k-node one (more than 95 minutes of one
-core for its pressed scene, up to 14 GB: run it alone). --meshes and --scenes run those only (indices into MESHES, names of SCENES) and keep the other
+By default the two smaller meshes; --meshes 2 the 111k-node one (up to 14 GB: run it alone;
+its lifted scene takes 35 minutes, its pressed one hours: its static start was still
+refactoring the load path's body for its held sets after 65 minutes of one core, when it was
+stopped). --meshes and --scenes run those only (indices into MESHES, names of SCENES) and keep the other
 rows of the results file, which is written after each case.
 """
 import argparse
@@ -84,7 +86,9 @@ def write(rows, out=OUT):
              "beta = 4e-6 s, 1e-6 s substeps, the foundation at 20 m/s; pressed: F = 0, static start "
              "under -0.2 mm, then held; sliding: the same with F = 0.3; lifted: F = 0, 1 mm above the "
              "foundation (no sliding scene on the largest: its static start with friction refactors ten "
-             "times). One process per case. *One solve* is with the run's own last factor (the sparse "
+             "times). One process per case. The set-up is the simulation's construction (the "
+             "discretization and the static start, whose load path has a factor of its own); the body's "
+             "own factor is made in the first step, which is not timed. *One solve* is with the run's own last factor (the sparse "
              "contact solve's, its held dofs the identity's), whose kernel, analysis flops and "
              "nonzeros the table gives.", "",
              "| nodes | unknowns | contact nodes | scene | contact solve | set-up incl. static start [s] | substep [ms] | one solve [ms] | substep / solve | factor | factor flops | factor nonzeros | peak memory [MB] |",

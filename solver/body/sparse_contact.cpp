@@ -380,9 +380,12 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     if (q > 0) {
         auto r = krylov_residual_.head(q);
         auto response = response_.head(3 * q);
-        responses(K, p, rhs, w_new_, false, response);
-        equations(K, p, response, false, r);
-        r = -r;
+        const auto solution_residual = [&] {  // what the equations lack at w_new_
+            responses(K, p, rhs, w_new_, false, response);
+            equations(K, p, response, false, r);
+            r = -r;
+        };
+        solution_residual();
         force_scale = std::max(force_scale, r.lpNorm<Eigen::Infinity>());
         const double goal = 0.5 * tolerance * force_scale;
         // The kept directions hold while the factor does (what a held solve gives them). Each
@@ -468,9 +471,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             if (!changed) break;
             held_solve(K, rhs, true, xi_, w_new_);
             if (round == 2) break;
-            responses(K, p, rhs, w_new_, false, response);
-            equations(K, p, response, false, r);
-            r = -r;
+            solution_residual();
             if (!(r.lpNorm<Eigen::Infinity>() > goal)) break;
             ++rounds_;
         }

@@ -527,6 +527,36 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     EXPECT_NEAR((a.u - b0.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * b0.u.lpNorm<Eigen::Infinity>());
 }
 
+// Where a refactorization costs more held solves than GCR may take (a tetrahedral body of a
+// few thousand nodes), a pattern that differs from the factor's held set is solved on that
+// factor first: a frictionless box pressed from rest in one quasi-static step (every contact
+// node held, none held by the factor) needs no refactorization, and gives the condensed
+// solve's state. Before, it refactored at the first pattern of more than 64 dofs.
+TEST(Body3D, ACostlyFactorSolvesAPatternOnTheFactorItHas) {
+    Box b;
+    b.nx = b.nz = 16;
+    b.ny = 10;
+    SceneParameters p = box_scene(b, "box_costly_factor.msh", MassVariant::standard_implicit_contact);
+    Stepper sparse(p), condensed(p);
+    sparse.set_contact_path(Stepper::ContactPath::sparse);
+    condensed.set_contact_path(Stepper::ContactPath::condensed);
+    State a = sparse.initial_state(0), b0 = condensed.initial_state(0);
+    a.v.setZero();
+    b0.v.setZero();
+    SubstepLoad load;
+    load.top_start = 0;
+    load.top_end = -2e-5;
+    const SubstepReport ra = sparse.substep(a, 1e3, load);
+    const SubstepReport rb = condensed.substep(b0, 1e3, load);
+    const TrailingCholesky& factor = sparse.last_factor();
+    RecordProperty("refactorization_in_solves", std::to_string(factor.factor_flops() / (4 * factor.factor_nonzeros())));
+    ASSERT_GT(factor.factor_flops() / (4 * factor.factor_nonzeros()), SparseContactSolver::max_directions);
+    EXPECT_EQ(ra.active_nodes, (b.nx + 1) * (b.nz + 1));
+    EXPECT_EQ(sparse.sparse_refactorizations(), 0);
+    EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
+    EXPECT_NEAR((a.u - b0.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * b0.u.lpNorm<Eigen::Infinity>());
+}
+
 // Stick and slip under a foundation that creeps and turns its heading by a right angle over
 // the run: nodes stick, break loose with the static coefficient, slip in a turning direction;
 // the balance and the law hold throughout.

@@ -52,6 +52,10 @@ HeldOperator::~HeldOperator() = default;
 
 double HeldOperator::factor_nonzeros() const { return factor_->factor_nonzeros(); }
 
+double HeldOperator::refactorization_in_solves() const {
+    return factor_->factor_flops() / (4 * factor_->factor_nonzeros());
+}
+
 void HeldOperator::hold(const std::vector<char>& held) {
     if (held == held_) return;
     std::copy(lower_.valuePtr(), lower_.valuePtr() + lower_.nonZeros(), held_lower_.valuePtr());
@@ -233,13 +237,20 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
             targets_[c * n + i] = friction ? p.slip_origin[(c - 1) * n + i] : 0.0;
     }
     for (Eigen::Index j = 0; j < m; ++j) differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
-    if (differing > max_differing) K.hold(held_);
-    // On a factor of another held set, GCR stops after max_detour solves and the pattern is
-    // solved again on its own factor (where the body is stiff, as in the static start's load
-    // paths, the differing dofs' system converges slowly).
-    if (!solve_coupled(K, p, rhs, scale, tolerance, K.held() == held_ ? max_directions : max_detour)) {
+    // Where a refactorization costs more held solves than GCR may take (tetrahedral bodies:
+    // 125 at 2.7k nodes, 1,400 at 111k), any pattern is first tried on the factor there is,
+    // with up to max_directions of them, and refactored only where that fails: the static
+    // start's frictionless load path from rest then solves on the unheld factor (the 12.6k
+    // hemisphere: 4 refactorizations before, none now, the same state). Else a pattern that
+    // differs in more than max_differing dofs is refactored at once, and one that differs in
+    // fewer tried with max_detour solves (where the body is stiff, as in the load paths, the
+    // differing dofs' system converges slowly).
+    const bool costly = K.refactorization_in_solves() > max_directions;
+    if (!costly && differing > max_differing) K.hold(held_);
+    const bool detour = K.held() != held_;
+    if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions, detour)) {
         K.hold(held_);
-        solve_coupled(K, p, rhs, scale, tolerance, max_directions);
+        solve_coupled(K, p, rhs, scale, tolerance, max_directions, false);
     }
     reactions(K, p, rhs);
 }
@@ -337,7 +348,7 @@ void SparseContactSolver::eliminate_uncoupled() {
 
 bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p,
                                         const Eigen::VectorXd& rhs, double scale,
-                                        double tolerance, int max_iterations) {
+                                        double tolerance, int max_iterations, bool detour) {
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     // The unknowns: what the pattern asks that the factor's held set does not give.
@@ -430,7 +441,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             }
             while (r.lpNorm<Eigen::Infinity>() > goal) {
                 if (iterations >= max_iterations) {
-                    if (max_iterations < max_directions) {
+                    if (detour) {
                         add_directions(q);
                         return false;
                     }

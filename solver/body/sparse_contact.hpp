@@ -64,6 +64,9 @@ public:
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
     long refactorizations() const { return refactorizations_; }
     double factor_nonzeros() const;
+    // What a refactorization costs in held solves: its flops (the analysis's) over a solve's,
+    // 4 per nonzero of L (forward and backward).
+    double refactorization_in_solves() const;
     TrailingCholesky& factor() { return *factor_; }
 
 private:
@@ -103,7 +106,9 @@ public:
     long gcr_rounds() const { return rounds_; }  // GCR's rounds after the first (solve_coupled)
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
-    // More dofs differing from the factor's held set than this: refactor to the pattern's.
+    // More dofs differing from the factor's held set than this: refactor to the pattern's,
+    // where a refactorization costs at most max_directions held solves; else the pattern is
+    // tried on the factor first (solve_pattern).
     static constexpr int max_differing = 64;
     static constexpr int max_detour = 16;
 
@@ -113,9 +118,10 @@ private:
     void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
                        double scale, double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took
-    // more than max_iterations held solves.
+    // more than max_iterations held solves on a detour (a factor of another held set); on
+    // the pattern's own factor that throws ContactSolveError.
     bool solve_coupled(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
-                       double scale, double tolerance, int max_iterations);
+                       double scale, double tolerance, int max_iterations, bool detour);
     double residual(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& w,
                     const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
     void reactions(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs);

@@ -492,8 +492,29 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
     }
 }
 
-// A static start's load step (dt = 1e3 s, contact at the end of the step, as the load paths
-// of a curved body run it) with friction: the box pressed onto the foundation spreads under
+// A static start's load step from rest (the top to -2e-5 m in dt = 1e3 s, contact at the end
+// of the step, as the load paths of a curved body run it), on the sparse and on the condensed
+// contact solve.
+struct LoadStep {
+    explicit LoadStep(const SceneParameters& p) : sparse(p), condensed(p) {
+        sparse.set_contact_path(Stepper::ContactPath::sparse);
+        condensed.set_contact_path(Stepper::ContactPath::condensed);
+        a = sparse.initial_state(0);
+        b = condensed.initial_state(0);
+        a.v.setZero();
+        b.v.setZero();
+        SubstepLoad load;
+        load.top_start = 0;
+        load.top_end = -2e-5;
+        ra = sparse.substep(a, 1e3, load);
+        rb = condensed.substep(b, 1e3, load);
+    }
+    Stepper sparse, condensed;
+    State a, b;
+    SubstepReport ra, rb;
+};
+
+// The load step with friction: the box pressed onto the foundation spreads under
 // Poisson, so its rim slips outwards in every direction of the plane at once, and its middle
 // sticks. A slipping node's direction depends on its neighbours' through the body, so a fixed
 // point in the directions converged slowly or not at all (a 2.7k-node hemisphere's static
@@ -504,18 +525,9 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     b.nx = b.nz = 6;
     SceneParameters p = box_scene(b, "box_load_step.msh", MassVariant::standard_implicit_contact);
     p.friction_coefficient = 0.3;
-    Stepper sparse(p), condensed(p);
-    sparse.set_contact_path(Stepper::ContactPath::sparse);
-    condensed.set_contact_path(Stepper::ContactPath::condensed);
-    State a = sparse.initial_state(0), b0 = condensed.initial_state(0);
-    a.v.setZero();
-    b0.v.setZero();
-    SubstepLoad load;
-    load.top_start = 0;
-    load.top_end = -2e-5;
-    const SubstepReport ra = sparse.substep(a, 1e3, load);
-    const SubstepReport rb = condensed.substep(b0, 1e3, load);
-    EXPECT_TRUE(sparse.sparse_contact());
+    LoadStep step(p);
+    const SubstepReport &ra = step.ra, &rb = step.rb;
+    EXPECT_TRUE(step.sparse.sparse_contact());
     EXPECT_GT(rb.slipping_nodes, 8);
     EXPECT_GT(rb.active_nodes - rb.slipping_nodes, 4);
     EXPECT_EQ(ra.slipping_nodes, rb.slipping_nodes);
@@ -524,7 +536,7 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
     EXPECT_NEAR(ra.friction_force, rb.friction_force, 1e-8 * rb.normal_force);
     EXPECT_NEAR(ra.friction_force_z, rb.friction_force_z, 1e-8 * rb.normal_force);
-    EXPECT_NEAR((a.u - b0.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * b0.u.lpNorm<Eigen::Infinity>());
+    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
 }
 
 // Where a refactorization costs more held solves than GCR may take (a tetrahedral body of a
@@ -537,24 +549,15 @@ TEST(Body3D, ACostlyFactorSolvesAPatternOnTheFactorItHas) {
     b.nx = b.nz = 16;
     b.ny = 10;
     SceneParameters p = box_scene(b, "box_costly_factor.msh", MassVariant::standard_implicit_contact);
-    Stepper sparse(p), condensed(p);
-    sparse.set_contact_path(Stepper::ContactPath::sparse);
-    condensed.set_contact_path(Stepper::ContactPath::condensed);
-    State a = sparse.initial_state(0), b0 = condensed.initial_state(0);
-    a.v.setZero();
-    b0.v.setZero();
-    SubstepLoad load;
-    load.top_start = 0;
-    load.top_end = -2e-5;
-    const SubstepReport ra = sparse.substep(a, 1e3, load);
-    const SubstepReport rb = condensed.substep(b0, 1e3, load);
-    const TrailingCholesky& factor = sparse.last_factor();
+    LoadStep step(p);
+    const SubstepReport &ra = step.ra, &rb = step.rb;
+    const TrailingCholesky& factor = step.sparse.last_factor();
     RecordProperty("refactorization_in_solves", std::to_string(factor.factor_flops() / (4 * factor.factor_nonzeros())));
     ASSERT_GT(factor.factor_flops() / (4 * factor.factor_nonzeros()), SparseContactSolver::max_directions);
     EXPECT_EQ(ra.active_nodes, (b.nx + 1) * (b.nz + 1));
-    EXPECT_EQ(sparse.sparse_refactorizations(), 0);
+    EXPECT_EQ(step.sparse.sparse_refactorizations(), 0);
     EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
-    EXPECT_NEAR((a.u - b0.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * b0.u.lpNorm<Eigen::Infinity>());
+    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
 }
 
 // Stick and slip under a foundation that creeps and turns its heading by a right angle over

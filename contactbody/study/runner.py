@@ -32,6 +32,18 @@ def _client(workers, scheduler, dashboard=True):
     return Client(cluster), cluster
 
 
+def _close_cluster(cluster, log) -> None:
+    """Closes run_study's own cluster. Where a worker died, its nanny may still be starting
+    the next one, and closing then fails inside distributed ("can only join a started
+    process", dask/distributed#6973, open; seen once in 700 runs of our tests). Every point is
+    recorded by then: that is said, and the table written."""
+    try:
+        cluster.close()
+    except AssertionError as e:
+        log(f"the dask cluster did not close cleanly ({e}; dask/distributed#6973); every "
+            "point is recorded")
+
+
 def _key(pid: str) -> str:
     return f"point-{pid}-{time.monotonic_ns()}"
 
@@ -171,7 +183,7 @@ def run_study(study: Study, out, fmu=None, workers: int | None = None,
             if own:
                 client.close()
                 if cluster is not None:
-                    cluster.close()
+                    _close_cluster(cluster, log)
     df = table.write_parquet()
     df.attrs["ran"] = len(todo)
     return df

@@ -98,7 +98,7 @@ public:
                            const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
                            Eigen::VectorXd& w, bool fresh_factor);
     // Drops the kept directions (they make a solve faster, and change its last bits).
-    void forget() { kept_ = 0; kept_operator_ = nullptr; }
+    void forget() { kept_ = 0; kept_operator_ = nullptr; detour_solves_ = 0; }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life
@@ -108,7 +108,7 @@ public:
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
     // More dofs differing from the factor's held set than this: refactor to the pattern's,
     // where a refactorization costs at most max_directions held solves; else the pattern is
-    // tried on the factor first (solve_pattern).
+    // tried on the factor first, until those detours cost a refactorization (solve_pattern).
     static constexpr int max_differing = 64;
     static constexpr int max_detour = 16;
 
@@ -181,6 +181,8 @@ private:
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
+    // Held solves made on the current factor for patterns it does not hold (solve_pattern).
+    long detour_solves_ = 0;
     long solves_ = 0, krylov_iterations_ = 0, rounds_ = 0;
 };
 

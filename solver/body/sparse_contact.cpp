@@ -241,23 +241,23 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
     // solves (where the body is stiff, as in the load paths, the differing dofs' system
     // converges slowly). Except where a refactorization costs more held solves than GCR may
-    // take (tetrahedral bodies: 125 at 2.7k nodes, 1,400 at 111k): there a pattern that
-    // differs in more is tried on the factor too, with up to max_directions solves, until the
-    // solves of such detours on this factor have come to what a refactorization costs (as in
-    // renting until the rent would have bought: never much more than twice the better
-    // choice). The static start's frictionless load path from rest then solves on the unheld
+    // take (tetrahedral bodies: 125 at 2.7k nodes, 1,400 at 111k): there a detour may take up
+    // to max_directions solves, and a pattern that differs in more dofs is tried on the
+    // factor too, until the solves of such detours on this factor have come to what a
+    // refactorization costs (as in renting until the rent would have bought: never much more
+    // than twice the better choice). The static start's frictionless load path from rest then solves on the unheld
     // factor (the 12.6k hemisphere: 4 refactorizations before, none now, the same state);
     // sliding, whose patterns last, refactors after a few substeps. The detours' count
     // restarts with each factor and each communication step (forget), so that a restored
     // state replays.
     const double refactorization = K.refactorization_in_solves();
+    const bool costly = refactorization > max_directions;
     if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
-    const bool renting = differing > max_differing && refactorization > max_directions &&
-                         detour_solves_ < refactorization;
+    const bool renting = differing > max_differing && costly && detour_solves_ < refactorization;
     if (differing > max_differing && !renting) K.hold(held_);
     const bool detour = K.held() != held_;
     const long before = solves_;
-    if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !renting ? max_detour : max_directions, detour)) {
+    if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions, detour)) {
         K.hold(held_);
         solve_coupled(K, p, rhs, scale, tolerance, max_directions, false);
     } else if (renting) {

@@ -240,18 +240,21 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // A pattern that differs from the factor's held set in more than max_differing dofs is
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
     // solves (where the body is stiff, as in the load paths, the differing dofs' system
-    // converges slowly). Except where a refactorization costs more held solves than GCR may
-    // take (tetrahedral bodies: 125 at 2.7k nodes, 1,400 at 111k): there a detour may take up
-    // to max_directions solves, and a pattern that differs in more dofs is tried on the
-    // factor too, until the solves of such detours on this factor have come to what a
+    // converges slowly). Except on a factor that holds nothing (a body from rest: the static
+    // start's load path) where a refactorization costs more held solves than GCR may take
+    // (tetrahedral bodies: 125 at 2.7k nodes, 1,400 at 111k): there a detour may take up to
+    // max_directions solves, and a pattern that differs in more dofs is tried on the factor
+    // too, until the solves of such detours on this factor have come to what a
     // refactorization costs (as in renting until the rent would have bought: never much more
-    // than twice the better choice). The static start's frictionless load path from rest then solves on the unheld
-    // factor (the 12.6k hemisphere: 4 refactorizations before, none now, the same state);
-    // sliding, whose patterns last, refactors after a few substeps. The detours' count
+    // than twice the better choice). The frictionless load path from rest then solves on its
+    // unheld factor (the 12.6k hemisphere: 4 refactorizations before, none now, the same
+    // state). A factor held at a pattern was made for it, and patterns last there (sliding):
+    // renting on it made 3D sliding refactor later and solve more. The detours' count
     // restarts with each factor and each communication step (forget), so that a restored
     // state replays.
     const double refactorization = K.refactorization_in_solves();
-    const bool costly = refactorization > max_directions;
+    const bool costly = refactorization > max_directions &&
+                        std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });
     if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
     const bool renting = differing > max_differing && costly && detour_solves_ < refactorization;
     if (differing > max_differing && !renting) K.hold(held_);

@@ -6,7 +6,8 @@ Three scenes per mesh:
 * pressed: F = 0, the static start under a clamp displacement of -0.2 mm (Hertz's load), then
   held (the sparse contact solve);
 * sliding: the same with F = 0.3 (isotropic friction). Not on the 111k-node mesh: its static
-  start with friction takes ten load increments, each refactoring (hours there);
+  start with friction takes ten load increments on a body whose factorization takes 20 minutes
+  there (not measured);
 * lifted: F = 0, the same body 1 mm above the foundation (no contact: the floor).
 
 For each: the set-up (discretization, factors and the static start), one substep (mean over 30
@@ -18,11 +19,10 @@ Writes benchmarks/results/cost3d.json and cost3d.md.
 
     .venv/bin/python benchmarks/cost3d.py [--build build] [--meshes 0,1] [--scenes pressed,lifted]
 
-By default the two smaller meshes; --meshes 2 the 111k-node one (up to 14 GB: run it alone;
-its lifted scene takes 35 minutes, its pressed one hours: its static start was still
-refactoring the load path's body for its held sets after 65 minutes of one core, when it was
-stopped). --meshes and --scenes run those only (indices into MESHES, names of SCENES) and keep the other
-rows of the results file, which is written after each case.
+By default the two smaller meshes; --meshes 2 the 111k-node one (17 GB: run it alone; its
+lifted scene takes 35 minutes, its pressed one 62). --meshes and --scenes run those only
+(indices into MESHES, names of SCENES) and keep the other rows of the results file, which is
+written after each case.
 """
 import argparse
 import json
@@ -45,7 +45,7 @@ def main():
     parser.add_argument("--build", default=str(ROOT / "build"))
     parser.add_argument("--meshes", default="0,1",
                         help="which meshes (indices into MESHES, smallest first; 2, the 111k-node "
-                             "one, takes hours and up to 14 GB)")
+                             "one, takes 1.6 hours and 17 GB)")
     parser.add_argument("--scenes", default=",".join(SCENES), help="which scenes")
     parser.add_argument("--out", default=str(OUT), help="the results folder")
     args = parser.parse_args()
@@ -85,8 +85,8 @@ def write(rows, out=OUT):
              "`.venv/bin/python benchmarks/cost3d.py`: tetrahedral hemispheres (R = 50 mm), "
              "beta = 4e-6 s, 1e-6 s substeps, the foundation at 20 m/s; pressed: F = 0, static start "
              "under -0.2 mm, then held; sliding: the same with F = 0.3; lifted: F = 0, 1 mm above the "
-             "foundation (no sliding scene on the largest: its static start with friction refactors ten "
-             "times). One process per case. The set-up is the simulation's construction (the "
+             "foundation (no sliding scene on the largest: its static start with friction is ten load "
+             "increments, not measured there). One process per case. The set-up is the simulation's construction (the "
              "discretization and the static start, whose load path has a factor of its own); the body's "
              "own factor is made in the first step, which is not timed. *One solve* is with the run's own last factor (the sparse "
              "contact solve's, its held dofs the identity's), whose kernel, analysis flops and "

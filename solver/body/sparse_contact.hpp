@@ -107,8 +107,9 @@ public:
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
     // More dofs differing from the factor's held set than this: refactor to the pattern's,
-    // where a refactorization costs at most max_directions held solves; else the pattern is
-    // tried on the factor first, until those detours cost a refactorization (solve_pattern).
+    // unless the factor holds nothing and a refactorization costs more than max_directions
+    // held solves: then the pattern is tried on the factor first, until such detours have
+    // cost a refactorization (solve_pattern).
     static constexpr int max_differing = 64;
     static constexpr int max_detour = 16;
 

@@ -342,7 +342,7 @@ FmuState deserialize(const char* bytes, size_t size) {
         f.pattern.resize(static_cast<size_t>(pattern));
         for (signed char& x : f.pattern) {
             x = r.value<int8_t>("contact factorization node state");
-            if (x != 0 && x != 1 && x != 2 && x != -2) r.fail("invalid contact factorization node state");
+            if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3) r.fail("invalid contact factorization node state");
         }
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");

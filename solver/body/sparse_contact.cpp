@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "build_features.hpp"
+#include "pattern_lu.hpp"
 #include "text.hpp"
 #include "trailing_cholesky.hpp"
 
@@ -18,7 +19,7 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
     lower_.makeCompressed();
     held_lower_ = lower_;
     const Eigen::Index m = unknowns(), nf = K_.rows();
-    std::vector<int> unknown_of(static_cast<size_t>(nf), -1);
+    std::vector<int> unknown_of(static_cast<size_t>(nf), -1);  // kept: unknown_of_
     for (Eigen::Index j = 0; j < m; ++j) unknown_of[static_cast<size_t>(dof(j))] = static_cast<int>(j);
     positions_.assign(static_cast<size_t>(m), {});
     diagonal_.assign(static_cast<size_t>(m), -1);
@@ -46,9 +47,39 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
     factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{}, true);
     held_.assign(static_cast<size_t>(m), 0);
     held_dof_.assign(static_cast<size_t>(nf), 0);
+    // For slipping rows: each contact unknown's row entries in K_ (by symmetry, its column's
+    // rows' columns), found in each column's sorted rows; a node's x and y columns must share
+    // their rows, so that K_x + sf K_y keeps K's pattern.
+    unknown_of_ = std::move(unknown_of);
+    row_positions_.assign(static_cast<size_t>(m), {});
+    full_diagonal_.assign(static_cast<size_t>(m), -1);
+    const int* outer = K_.outerIndexPtr();
+    const int* inner = K_.innerIndexPtr();
+    for (Eigen::Index j = 0; j < m; ++j) {
+        const int c = dof(j);
+        for (int k = outer[c]; k < outer[c + 1]; ++k) {
+            const int r = inner[k];
+            const int* at = std::lower_bound(inner + outer[r], inner + outer[r + 1], c);
+            row_positions_[static_cast<size_t>(j)].push_back(static_cast<int>(at - inner));
+            if (r == c) full_diagonal_[static_cast<size_t>(j)] = k;
+        }
+    }
+    slips_allowed_ = m % 2 == 0;
+    for (Eigen::Index i = 0; slips_allowed_ && i < m / 2; ++i) {
+        const int y = dof(i), x = dof(m / 2 + i);
+        slips_allowed_ = outer[x + 1] - outer[x] == outer[y + 1] - outer[y] &&
+                         std::equal(inner + outer[x], inner + outer[x + 1], inner + outer[y]);
+    }
+    slip_.assign(static_cast<size_t>(m / 2), 0);
 }
 
 HeldOperator::~HeldOperator() = default;
+
+void HeldOperator::set_slip_coefficient(double friction) {
+    if (friction == slip_coefficient_) return;
+    slip_coefficient_ = friction;
+    if (lu_held_) factor_held();
+}
 
 double HeldOperator::factor_nonzeros() const { return factor_->factor_nonzeros(); }
 
@@ -56,32 +87,84 @@ double HeldOperator::refactorization_in_solves() const {
     return factor_->factor_flops() / (4 * factor_->factor_nonzeros());
 }
 
-void HeldOperator::hold(const std::vector<char>& held) {
-    if (held == held_) return;
+void HeldOperator::hold(const std::vector<char>& held, const std::vector<signed char>& slip) {
+    const bool slips = slip_coefficient() > 0 && std::any_of(slip.begin(), slip.end(), [](signed char s) { return s != 0; });
+    if (held == held_ && (slips ? slip == slip_ : !lu_held_)) return;
+    held_ = held;
+    if (slips) slip_ = slip;
+    else std::fill(slip_.begin(), slip_.end(), 0);
+    for (size_t j = 0; j < held.size(); ++j) held_dof_[static_cast<size_t>(dofs_[j])] = held[j];
+    factor_held();
+}
+
+void HeldOperator::factor_held() {
+    ++refactorizations_;
+    lu_held_ = std::any_of(slip_.begin(), slip_.end(), [](signed char s) { return s != 0; });
+    if (lu_held_) {
+        if (!lu_) {
+            std::vector<int> position(static_cast<size_t>(size()));
+            for (Eigen::Index u = 0; u < size(); ++u) position[static_cast<size_t>(u)] = factor_->position(static_cast<int>(u));
+            lu_ = std::make_unique<PatternLu>(K_, position);
+        }
+        const double* k = K_.valuePtr();
+        lu_values_.assign(k, k + K_.nonZeros());
+        const size_t n = slip_.size();
+        for (size_t i = 0; i < n; ++i) {  // K_x - sf K_y
+            if (!slip_[i]) continue;
+            const double sf = slip_[i] * slip_coefficient_;
+            const std::vector<int>& x = row_positions_[n + i];
+            const std::vector<int>& y = row_positions_[i];
+            for (size_t e = 0; e < x.size(); ++e) lu_values_[static_cast<size_t>(x[e])] -= sf * k[y[e]];
+        }
+        for (size_t j = 0; j < held_.size(); ++j) {
+            if (!held_[j]) continue;
+            const int c = dofs_[j];
+            std::fill(lu_values_.begin() + K_.outerIndexPtr()[c], lu_values_.begin() + K_.outerIndexPtr()[c + 1], 0.0);
+            for (int p : row_positions_[j]) lu_values_[static_cast<size_t>(p)] = 0;
+            lu_values_[static_cast<size_t>(full_diagonal_[j])] = 1;
+        }
+        if (lu_->factor(lu_values_.data())) return;
+        // No pivot without pivoting: the slips stay GCR's (sparse_contact.cpp), on K's Cholesky.
+        slips_allowed_ = false;
+        lu_held_ = false;
+        std::fill(slip_.begin(), slip_.end(), 0);
+    }
     std::copy(lower_.valuePtr(), lower_.valuePtr() + lower_.nonZeros(), held_lower_.valuePtr());
-    for (size_t j = 0; j < held.size(); ++j) {
-        held_dof_[static_cast<size_t>(dofs_[j])] = held[j];
-        if (!held[j]) continue;
+    for (size_t j = 0; j < held_.size(); ++j) {
+        if (!held_[j]) continue;
         for (int k : positions_[j]) held_lower_.valuePtr()[k] = 0;
         held_lower_.valuePtr()[diagonal_[j]] = 1;
     }
     factor_->refactor(held_lower_);
-    held_ = held;
-    ++refactorizations_;
 }
 
 void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const {
+    const size_t n = slip_.size();
+    if (lu_held_)  // a slipping row's right-hand side, from its y row's before that is held
+        for (size_t i = 0; i < n; ++i)
+            if (slip_[i]) b[dofs_[n + i]] -= slip_[i] * slip_coefficient_ * b[dofs_[i]];
     for (size_t j = 0; j < held_.size(); ++j) {
         if (!held_[j] || values[static_cast<Eigen::Index>(j)] == 0) continue;
         const double v = values[static_cast<Eigen::Index>(j)];
-        for (SparseMatrix::InnerIterator it(K_, dofs_[j]); it; ++it)
-            if (!held_dof_[static_cast<size_t>(it.row())]) b[it.row()] -= it.value() * v;
+        for (SparseMatrix::InnerIterator it(K_, dofs_[j]); it; ++it) {
+            const size_t r = static_cast<size_t>(it.row());
+            if (!held_dof_[r]) {
+                b[it.row()] -= it.value() * v;
+            } else if (lu_held_) {  // a held y row's share in its node's slipping row
+                const int u = unknown_of_[r];
+                if (u >= 0 && static_cast<size_t>(u) < n && slip_[static_cast<size_t>(u)])
+                    b[dofs_[n + static_cast<size_t>(u)]] += slip_[static_cast<size_t>(u)] * slip_coefficient_ * it.value() * v;
+            }
+        }
     }
     for (size_t j = 0; j < held_.size(); ++j)
         if (held_[j]) b[dofs_[j]] = values[static_cast<Eigen::Index>(j)];
 }
 
-void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) { factor_->solve(b, x); }
+void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if (lu_held_) lu_->solve(b, x);
+    else factor_->solve(b, x);
+}
 
 namespace {
 // A 3D body's isotropic friction (the disc), which a 2D-only build leaves out (build_features.hpp).
@@ -150,15 +233,26 @@ void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem&
     }
 }
 
-void SparseContactSolver::held_set(bool friction) {
+void SparseContactSolver::held_set(bool friction, bool slips) {
     const Eigen::Index n = pattern_.size();
     const Eigen::Index tangents = static_cast<Eigen::Index>(held_.size()) / n - 1;
+    slip_.assign(static_cast<size_t>(n), 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         held_[static_cast<size_t>(i)] = pattern_[i] != 0;
         for (Eigen::Index c = 1; c <= tangents; ++c)
             held_[static_cast<size_t>(c * n + i)] = friction && pattern_[i] == 1;
+        if (slips && friction && (pattern_[i] == 2 || pattern_[i] == -2)) slip_[static_cast<size_t>(i)] = pattern_[i] > 0 ? 1 : -1;
     }
 }
+
+namespace {
+// The friction coefficient that K's factor gives contact unknown j's row (sf of a slipping x
+// row), else 0.
+double factor_slip(const HeldOperator& K, Eigen::Index j, Eigen::Index n) {
+    if (j < n || j >= 2 * n || K.slip().empty()) return 0.0;
+    return K.slip()[static_cast<size_t>(j - n)] * K.slip_coefficient();
+}
+}  // namespace
 
 void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
                                      const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x) {
@@ -230,13 +324,14 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     int differing = 0;
-    held_set(friction);
+    held_set(friction, K.slip_coefficient() > 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
         for (Eigen::Index c = 1; c < m / n; ++c)
             targets_[c * n + i] = friction ? p.slip_origin[(c - 1) * n + i] : 0.0;
     }
     for (Eigen::Index j = 0; j < m; ++j) differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
+    for (size_t i = 0; i < slip_.size(); ++i) differing += slip_[i] != K.slip()[i];
     // A pattern that differs from the factor's held set in more than max_differing dofs is
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
     // solves (where the body is stiff, as in the load paths, the differing dofs' system
@@ -257,11 +352,11 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
                         std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });
     if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
     const bool renting = differing > max_differing && costly && detour_solves_ < refactorization;
-    if (differing > max_differing && !renting) K.hold(held_);
-    const bool detour = K.held() != held_;
+    if (differing > max_differing && !renting) K.hold(held_, slip_);
+    const bool detour = !K.holds(held_, slip_);
     const long before = solves_;
     if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions, detour)) {
-        K.hold(held_);
+        K.hold(held_, slip_);
         solve_coupled(K, p, rhs, scale, tolerance, max_directions, false);
     } else if (renting) {
         detour_solves_ += solves_ - before;
@@ -376,9 +471,11 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const double sf = !slips ? 0.0
                           : isotropic(p) ? p.friction[i] * direction_[(j / n - 1) * n + i]
                                             : slip_sign(p, i, pattern_[i]);
+        // A slipping row that the factor has (a 2D body's) is in K's solve already, unless
+        // its coefficient differs (the static one, or another node state).
         if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
         else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
-        else if (!wants && slips) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
+        else if (!wants && sf != factor_slip(K, j, n)) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
     }
     for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
     for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
@@ -395,9 +492,10 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     for (Eigen::Index k = 0; k < q; ++k) {
         const Coupling& c = coupling_[static_cast<size_t>(k)];
         const Eigen::Index i = c.unknown % n;
-        double guess = 0;
+        double guess = 0;  // the reaction wanted, less what the factor's slipping row gives
         if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
         else if (c.kind == load) guess = c.sf * -lambda_trial_[i];
+        if (c.kind == load) guess -= factor_slip(K, c.unknown, n) * -lambda_trial_[i];
         xi_[k] = guess;
         force_scale = std::max(force_scale, std::abs(guess));
     }
@@ -554,8 +652,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         }
     }
     if (fresh_factor) {
-        held_set(friction);
-        K.hold(held_);
+        held_set(friction, K.slip_coefficient() > 0);
+        K.hold(held_, slip_);
         forget();
     }
     lambda_trial_ = lambda;

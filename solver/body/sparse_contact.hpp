@@ -34,6 +34,7 @@
 namespace contactbody {
 
 class TrailingCholesky;
+class PatternLu;
 
 // K on the free dofs for one substep size, with a set of contact unknowns held.
 class HeldOperator {
@@ -54,13 +55,27 @@ public:
     double row_product(Eigen::Index j, const Eigen::VectorXd& x) const {
         return rows_.row(j).dot(x);
     }
-    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed).
-    void hold(const std::vector<char>& held);
+    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed), and of a 2D
+    // body (2 n unknowns) loads each node i with slip[i] != 0 along x by sf = slip[i] times
+    // the slip coefficient times its held y dof's reaction (the pressure's sign: r_x = sf r_y,
+    // as SparseContactSolver's slip law): that x dof's row of K_H becomes K_x - sf K_y, its
+    // right-hand side b_x - sf b_y (factored by PatternLu). Without slips (empty or zero) K_H
+    // is symmetric: K's Cholesky.
+    void hold(const std::vector<char>& held, const std::vector<signed char>& slip = {});
     const std::vector<char>& held() const { return held_; }
-    // b <- b - K(:, held) values(held) on the rows not held, and values on the held rows: the
-    // right-hand side whose held solve has x = values on the held dofs.
+    const std::vector<signed char>& slip() const { return slip_; }
+    bool holds(const std::vector<char>& held, const std::vector<signed char>& slip) const {
+        return held == held_ && slip == slip_;
+    }
+    // F of the held slips (the kinetic coefficient: the stepper's), 0 where slips are not held
+    // (a 3D body, or a factor whose LU found no pivot: then never again). A new one refactors.
+    double slip_coefficient() const { return slips_allowed_ ? slip_coefficient_ : 0.0; }
+    void set_slip_coefficient(double friction);
+    // b <- b - K_H(:, held) values(held) on the rows not held, and values on the held rows: the
+    // right-hand side whose held solve has x = values on the held dofs (a slipping row's
+    // right-hand side is b_x - sf b_y).
     void impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const;
-    // x = K_H^-1 b (K_H: K with the held rows and columns the identity's).
+    // x = K_H^-1 b (K_H: K with the held rows and columns the identity's, and the slipping rows).
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
     long refactorizations() const { return refactorizations_; }
     double factor_nonzeros() const;
@@ -82,6 +97,17 @@ private:
     std::unique_ptr<TrailingCholesky> factor_;
     std::vector<char> held_, held_dof_;  // per contact unknown, per free dof
     long refactorizations_ = 0;
+    // The slipping rows' factor: K's values (both triangles) as held, and per contact unknown
+    // the positions of its row's entries (aligned with its column's: x's and y's of a node
+    // match) and of its diagonal; each free dof's contact unknown (or -1).
+    std::unique_ptr<PatternLu> lu_;
+    bool lu_held_ = false, slips_allowed_ = false;
+    double slip_coefficient_ = 0;
+    std::vector<signed char> slip_;
+    std::vector<double> lu_values_;
+    std::vector<std::vector<int>> row_positions_;
+    std::vector<int> full_diagonal_, unknown_of_;
+    void factor_held();
 };
 
 class SparseContactSolver {
@@ -114,8 +140,9 @@ public:
     static constexpr int max_detour = 16;
 
 private:
-    // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction.
-    void held_set(bool friction);
+    // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction; and
+    // slip_ (where the factor may hold slips): slipping nodes' signs.
+    void held_set(bool friction, bool slips);
     void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
                        double scale, double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took
@@ -164,6 +191,7 @@ private:
     Eigen::VectorXd ratio_, trial_ratio_, newton_shift_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;
     std::vector<char> held_;
+    std::vector<signed char> slip_;
     // The iterate and the pattern step's result (new_), the backtracking trial.
     Eigen::VectorXd w_new_, lambda_new_, w_trial_, lambda_trial_, phi_, phi_new_;
     Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values

@@ -166,6 +166,12 @@ void Stepper::set_friction_coefficient(double friction) {
     }
     params_.friction_coefficient = friction;
     problem_factor_ = 0;  // the problem's size may change: rebuild W on next use
+    for (auto& f : cache_)
+        if (f && f->held) f->held->set_slip_coefficient(slip_coefficient());
+}
+
+double Stepper::slip_coefficient() const {
+    return disc_.mesh.dim == 2 ? params_.friction_coefficient : 0.0;
 }
 
 int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
@@ -262,9 +268,11 @@ ContactFactorization Stepper::contact_factorization() const {
     if (!f || !f->held) return {};
     const Eigen::Index nc = num_contact_nodes();
     ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc))};
-    for (Eigen::Index i = 0; i < nc; ++i)
+    for (Eigen::Index i = 0; i < nc; ++i) {
+        const signed char slip = f->held->slip()[static_cast<size_t>(i)];
         out.pattern[static_cast<size_t>(i)] = static_cast<signed char>(
-            !f->held->held()[static_cast<size_t>(i)] ? 0 : f->held->held()[static_cast<size_t>(nc + i)] ? 1 : 2);
+            !f->held->held()[static_cast<size_t>(i)] ? 0 : f->held->held()[static_cast<size_t>(nc + i)] ? 1 : slip ? 3 * slip : 2);
+    }
     return out;
 }
 
@@ -276,13 +284,15 @@ void Stepper::set_contact_factorization(const ContactFactorization& saved) {
         if (!c || !c->held || c->dt != saved.substep) continue;
         const Eigen::Index nc = num_contact_nodes();
         std::vector<char> held(static_cast<size_t>(c->held->unknowns()));
+        std::vector<signed char> slip(static_cast<size_t>(nc));
         for (Eigen::Index i = 0; i < nc; ++i) {
             const signed char x = saved.pattern[static_cast<size_t>(i)];
             held[static_cast<size_t>(i)] = x != 0;
             for (size_t j = static_cast<size_t>(nc + i); j < held.size(); j += static_cast<size_t>(nc))
                 held[j] = x == 1;  // the tangential dofs of a sticking node
+            slip[static_cast<size_t>(i)] = x == 3 ? 1 : x == -3 ? -1 : 0;  // a slipping row's sign
         }
-        c->held->hold(held);
+        c->held->hold(held, slip);
         current_factor_ = c->id;
     }
 }
@@ -342,6 +352,7 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
         const bool isotropic_friction = disc_.mesh.dim == 3 && params_.friction_coefficient > 0;
         contact_dofs.resize(static_cast<size_t>((isotropic_friction ? 3 : 2) * nc));
         f->held = std::make_unique<HeldOperator>(K, contact_dofs);
+        f->held->set_slip_coefficient(slip_coefficient());
         return f;
     }
     f->cholesky = std::make_unique<TrailingCholesky>(K, contact_dofs);

@@ -226,6 +226,9 @@ public:
     void to_full(const State& s, State& full) const override { full = s; }
     // Friction coefficient is tunable between substeps (F = 0 drops the tangential unknowns).
     void set_friction_coefficient(double friction) override;
+    // The coefficient of the slipping rows a held factor may have: the kinetic F of a 2D body
+    // (a 3D body's slip law is linearized at each iterate: its slips stay GCR's).
+    double slip_coefficient() const;
 
     SubstepReport substep(State& s, double dt, const SubstepLoad& load) override;
     const ContactSnapshot& last_contact() const override { return snapshot_; }
@@ -277,7 +280,8 @@ public:
     // identity's, or the condensed solve's Cholesky factor): its size and one solve with it,
     // the floor of a substep, for benchmarks. Throws std::logic_error before the first substep.
     TrailingCholesky& last_factor();
-    // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held) of the
+    // The sparse solve's held set (as a node pattern: 0 free, 2 y held, 1 x and y held, +-3 y
+    // held and x slipping with +-F) of the
     // current factor: a saved state keeps it, so that a restored one solves on the same.
     ContactFactorization contact_factorization() const override;
     void set_contact_factorization(const ContactFactorization& f) override;

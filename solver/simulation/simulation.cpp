@@ -688,7 +688,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     if (!f.pattern.empty() && f.pattern.size() != static_cast<size_t>(nc))
         throw std::invalid_argument("the contact factorization does not fit this mesh");
     for (signed char x : f.pattern)
-        if (x != 0 && x != 1 && x != 2 && x != -2)
+        if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3)
             throw std::invalid_argument("invalid node state in the contact factorization");
     body_->set_cached_substeps(snapshot.factor_substeps);
     body_->set_contact_factorization(f);

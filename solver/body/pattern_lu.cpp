@@ -1,0 +1,140 @@
+#include "pattern_lu.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace contactbody {
+
+PatternLu::PatternLu(const SparseMatrix& pattern, const std::vector<int>& position) : n_(pattern.cols()) {
+    if (!pattern.isCompressed() || pattern.rows() != n_ || static_cast<Eigen::Index>(position.size()) != n_)
+        throw std::logic_error("PatternLu: a compressed square pattern and a position per unknown");
+    const size_t n = static_cast<size_t>(n_);
+    order_.assign(n, 0);
+    for (size_t u = 0; u < n; ++u) order_[static_cast<size_t>(position[u])] = static_cast<int>(u);
+    // P A P^T by columns, each entry the place of A's value it is.
+    const int* outer = pattern.outerIndexPtr();
+    const int* inner = pattern.innerIndexPtr();
+    column_start_.assign(n + 1, 0);
+    for (size_t c = 0; c < n; ++c) column_start_[static_cast<size_t>(position[c]) + 1] = outer[c + 1] - outer[c];
+    for (size_t j = 0; j < n; ++j) column_start_[j + 1] += column_start_[j];
+    column_rows_.resize(static_cast<size_t>(pattern.nonZeros()));
+    value_of_.resize(column_rows_.size());
+    for (size_t c = 0; c < n; ++c) {
+        int place = column_start_[static_cast<size_t>(position[c])];
+        for (int k = outer[c]; k < outer[c + 1]; ++k, ++place) {
+            column_rows_[static_cast<size_t>(place)] = position[static_cast<size_t>(inner[k])];
+            value_of_[static_cast<size_t>(place)] = k;
+        }
+    }
+    // The elimination tree (Liu's, with path compression), then each row's pattern in L as the
+    // reach of its entries left of the diagonal up that tree.
+    std::vector<int> parent(n, -1), ancestor(n, -1);
+    for (size_t j = 0; j < n; ++j) {
+        for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
+            for (int i = column_rows_[static_cast<size_t>(p)]; i != -1 && i < static_cast<int>(j);) {
+                const int next = ancestor[static_cast<size_t>(i)];
+                ancestor[static_cast<size_t>(i)] = static_cast<int>(j);
+                if (next == -1) parent[static_cast<size_t>(i)] = static_cast<int>(j);
+                i = next;
+            }
+        }
+    }
+    std::vector<int> mark(n, -1), row_pattern, row_start(n + 1, 0), count(n, 0);
+    for (size_t j = 0; j < n; ++j) {
+        mark[j] = static_cast<int>(j);
+        const size_t first = row_pattern.size();
+        for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
+            for (int k = column_rows_[static_cast<size_t>(p)]; k >= 0 && k < static_cast<int>(j) && mark[static_cast<size_t>(k)] != static_cast<int>(j);
+                 k = parent[static_cast<size_t>(k)]) {
+                mark[static_cast<size_t>(k)] = static_cast<int>(j);
+                row_pattern.push_back(k);
+                ++count[static_cast<size_t>(k)];
+            }
+        }
+        std::sort(row_pattern.begin() + static_cast<std::ptrdiff_t>(first), row_pattern.end());
+        row_start[j + 1] = static_cast<int>(row_pattern.size());
+    }
+    start_.assign(n + 1, 0);
+    for (size_t k = 0; k < n; ++k) start_[k + 1] = start_[k] + count[k];
+    rows_.resize(row_pattern.size());
+    across_.resize(row_pattern.size());
+    across_start_ = row_start;
+    std::vector<int> next(start_.begin(), start_.end() - 1);
+    for (size_t j = 0; j < n; ++j) {  // rows ascending in each column
+        for (int q = row_start[j]; q < row_start[j + 1]; ++q) {
+            const int place = next[static_cast<size_t>(row_pattern[static_cast<size_t>(q)])]++;
+            rows_[static_cast<size_t>(place)] = static_cast<int>(j);
+            across_[static_cast<size_t>(q)] = place;
+        }
+    }
+    column_of_.resize(rows_.size());
+    for (size_t k = 0; k < n; ++k)
+        for (int p = start_[k]; p < start_[k + 1]; ++p) column_of_[static_cast<size_t>(p)] = static_cast<int>(k);
+    lower_.assign(rows_.size(), 0.0);
+    upper_.assign(rows_.size(), 0.0);
+    diagonal_.assign(n, 0.0);
+    work_.setZero(n_);
+}
+
+// Left-looking, a column at a time: column j of L^-1 (P A P^T) by a sparse triangular solve
+// over the columns k < j that row j of L reaches (ascending), then U's column and L's.
+bool PatternLu::factor(const double* values) {
+    double* w = work_.data();
+    for (Eigen::Index jj = 0; jj < n_; ++jj) {
+        const size_t j = static_cast<size_t>(jj);
+        double largest = 0;
+        for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
+            const double a = values[value_of_[static_cast<size_t>(p)]];
+            w[column_rows_[static_cast<size_t>(p)]] = a;
+            largest = std::max(largest, std::abs(a));
+        }
+        for (int q = across_start_[j]; q < across_start_[j + 1]; ++q) {
+            const int place = across_[static_cast<size_t>(q)];
+            const int k = column_of_[static_cast<size_t>(place)];
+            const double ukj = w[k];
+            w[k] = 0;
+            upper_[static_cast<size_t>(place)] = ukj;
+            if (ukj == 0) continue;
+            for (int p = start_[static_cast<size_t>(k)]; p < start_[static_cast<size_t>(k) + 1]; ++p)
+                w[rows_[static_cast<size_t>(p)]] -= lower_[static_cast<size_t>(p)] * ukj;
+        }
+        const double d = w[j];
+        w[j] = 0;
+        if (!(std::abs(d) > 1e-12 * largest)) {
+            work_.setZero();
+            return false;
+        }
+        diagonal_[j] = d;
+        for (int p = start_[j]; p < start_[j + 1]; ++p) {
+            double& x = w[rows_[static_cast<size_t>(p)]];
+            lower_[static_cast<size_t>(p)] = x / d;
+            x = 0;
+        }
+    }
+    return true;
+}
+
+void PatternLu::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    double* y = work_.data();
+    for (Eigen::Index k = 0; k < n_; ++k) y[k] = b[order_[static_cast<size_t>(k)]];
+    for (Eigen::Index k = 0; k < n_; ++k) {  // L (unit diagonal)
+        const double yk = y[k];
+        if (yk == 0) continue;
+        for (int p = start_[static_cast<size_t>(k)]; p < start_[static_cast<size_t>(k) + 1]; ++p)
+            y[rows_[static_cast<size_t>(p)]] -= lower_[static_cast<size_t>(p)] * yk;
+    }
+    for (Eigen::Index k = n_ - 1; k >= 0; --k) {  // U, by its rows (L's columns)
+        double s = y[k];
+        for (int p = start_[static_cast<size_t>(k)]; p < start_[static_cast<size_t>(k) + 1]; ++p)
+            s -= upper_[static_cast<size_t>(p)] * y[rows_[static_cast<size_t>(p)]];
+        y[k] = s / diagonal_[static_cast<size_t>(k)];
+    }
+    x.resize(n_);
+    for (Eigen::Index k = 0; k < n_; ++k) {
+        x[order_[static_cast<size_t>(k)]] = y[k];
+        y[k] = 0;
+    }
+}
+
+}  // namespace contactbody

@@ -1,0 +1,41 @@
+// An LU factor without pivoting of a matrix whose pattern is symmetric (its values need not
+// be), in a fixed fill-reducing order: the sparse contact solve's held operator with slipping
+// rows (sparse_contact.hpp), whose row of a slipping node's tangential dof is that dof's row of
+// K plus the friction coefficient times its normal dof's row. Its fill is the Cholesky
+// factor's of the same pattern and order, and a solve costs what a Cholesky solve costs.
+// Written here because CHOLMOD's LU-free modules factor symmetric matrices only and Eigen's
+// SparseLU solves 2-3x slower at these sizes (docs/decisions.md).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "assembly.hpp"
+
+namespace contactbody {
+
+class PatternLu {
+public:
+    // pattern: the matrix's (CSC, compressed, both triangles, a symmetric pattern with every
+    // diagonal entry); position: each unknown's position in the factor order.
+    PatternLu(const SparseMatrix& pattern, const std::vector<int>& position);
+    // Factors the matrix whose values (in pattern's order) are given. False where a pivot is
+    // not above 1e-12 times the largest entry of its column (no pivoting: then another
+    // factor is wanted).
+    bool factor(const double* values);
+    // x = A^-1 b (b and x may not alias). Allocates nothing.
+    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+    double nonzeros() const { return static_cast<double>(rows_.size()); }
+
+private:
+    Eigen::Index n_ = 0;
+    std::vector<int> order_;       // factor position -> unknown
+    std::vector<int> column_start_, column_rows_, value_of_;  // P A P^T's columns, from A's values
+    // The strictly lower part's pattern, by columns (rows ascending): L(i, k) and U(k, i) at the
+    // same place. across_: per row j, the places of its entries L(j, k), k < j ascending.
+    std::vector<int> start_, rows_, column_of_, across_start_, across_;
+    std::vector<double> lower_, upper_, diagonal_;
+    Eigen::VectorXd work_;
+};
+
+}  // namespace contactbody

@@ -6,7 +6,9 @@
 #include <memory>
 #include <string>
 
+#include "pattern_lu.hpp"
 #include "simulation.hpp"
+#include "sparse_contact.hpp"
 #include "trailing_cholesky.hpp"
 
 using namespace contactbody;
@@ -172,3 +174,73 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 }  // namespace
+
+// A structurally symmetric matrix with other values below and above the diagonal, in a given
+// order: the LU solves it to round-off, and says where a pivot is missing.
+TEST(PatternLu, SolvesAMatrixOfSymmetricPatternInAGivenOrder) {
+    const int n = 60;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 10 + std::sin(i));
+    for (int k = 0; k < 150; ++k) {
+        const int i = (37 * k) % n, j = (11 * k + 5) % n;
+        if (i == j) continue;
+        entries.emplace_back(i, j, std::cos(k));
+        entries.emplace_back(j, i, std::sin(3 * k));
+    }
+    SparseMatrix A(n, n);
+    A.setFromTriplets(entries.begin(), entries.end());
+    A.makeCompressed();
+    std::vector<int> position(n);
+    for (int i = 0; i < n; ++i) position[static_cast<size_t>(i)] = (7 * i) % n;  // 7 and 60 coprime
+    PatternLu lu(A, position);
+    ASSERT_TRUE(lu.factor(A.valuePtr()));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1, 2);
+    Eigen::VectorXd x;
+    lu.solve(b, x);
+    EXPECT_LT((Eigen::MatrixXd(A) * x - b).norm(), 1e-13 * b.norm());
+    SparseMatrix singular = A;
+    singular.coeffRef(0, 0) = 0;  // position 0 is factored first: no pivot there
+    EXPECT_FALSE(lu.factor(singular.valuePtr()));
+}
+
+// The held operator with slipping rows: a held solve satisfies every equation of its system,
+// K's rows where free, the held values, and r_x = sf r_y on each slipping node (r = K x - b),
+// which is what the sparse contact solve reads of it.
+TEST(HeldOperator, SlippingRowsHoldTheirSlipLaw) {
+    SceneParameters p;
+    p.nx = p.ny = 6;
+    p.friction_coefficient = 0.3;
+    const Stepper body(p);
+    const Discretization& d = body.discretization();
+    const double dt = 1e-6;
+    const SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
+    HeldOperator held(K, d.contact_unknowns());
+    held.set_slip_coefficient(0.3);
+    const Eigen::Index n = held.unknowns() / 2;
+    std::vector<char> hold(static_cast<size_t>(2 * n), 0);
+    std::vector<signed char> slip(static_cast<size_t>(n), 0);
+    for (Eigen::Index i = 0; i < n; ++i) {  // open, sticking, slipping either way, pressed
+        hold[static_cast<size_t>(i)] = i % 4 != 0;
+        hold[static_cast<size_t>(n + i)] = i % 4 == 1;
+        slip[static_cast<size_t>(i)] = i % 4 == 2 ? 1 : i % 4 == 3 ? -1 : 0;
+    }
+    held.hold(hold, slip);
+    ASSERT_EQ(held.slip(), slip);  // the LU found its pivots
+    Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1e3, 2e3), values(2 * n), x;
+    for (Eigen::Index j = 0; j < 2 * n; ++j) values[j] = 1e-6 * (j % 5 - 2);
+    const Eigen::VectorXd rhs = b;
+    held.impose(b, values);
+    held.solve(b, x);
+    const Eigen::VectorXd r = K * x - rhs;
+    std::vector<char> contact(static_cast<size_t>(K.rows()), 0);
+    for (Eigen::Index j = 0; j < 2 * n; ++j) contact[static_cast<size_t>(held.dof(j))] = 1;
+    for (Eigen::Index k = 0; k < K.rows(); ++k)
+        if (!contact[static_cast<size_t>(k)]) EXPECT_NEAR(r[k], 0, 1e-9 * rhs.norm()) << "free row " << k;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const int y = held.dof(i), xdof = held.dof(n + i);
+        if (hold[static_cast<size_t>(i)]) EXPECT_DOUBLE_EQ(x[y], values[i]);
+        else EXPECT_NEAR(r[y], 0, 1e-9 * rhs.norm());
+        if (hold[static_cast<size_t>(n + i)]) EXPECT_DOUBLE_EQ(x[xdof], values[n + i]);
+        else EXPECT_NEAR(r[xdof] - slip[static_cast<size_t>(i)] * 0.3 * r[y], 0, 1e-9 * rhs.norm()) << "node " << i;
+    }
+}

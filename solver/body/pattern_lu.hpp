@@ -34,6 +34,7 @@ private:
     // The strictly lower part's pattern, by columns (rows ascending): L(i, k) and U(k, i) at the
     // same place. across_: per row j, the places of its entries L(j, k), k < j ascending.
     std::vector<int> start_, rows_, column_of_, across_start_, across_;
+    std::vector<char> paired_;  // column k solved with k + 1 (solve)
     std::vector<double> lower_, upper_, diagonal_;
     Eigen::VectorXd work_;
 };

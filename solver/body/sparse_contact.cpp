@@ -351,8 +351,15 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const bool costly = refactorization > max_directions &&
                         std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });
     if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
-    const bool renting = differing > max_differing && costly && detour_solves_ < refactorization;
-    if (differing > max_differing && !renting) K.hold(held_, slip_);
+    // A factor that can hold the pattern's slips (a 2D body's) leaves GCR only what differs,
+    // about a solve for each differing dof from scratch: more than its refactorization costs
+    // (an LU: twice the Cholesky's flops), and it is refactored (a body of few contact nodes
+    // whose factor still held the static start's sticking nodes took ten solves at each
+    // communication step for ever).
+    const int most = K.slip_coefficient() > 0 ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
+                                              : max_differing;
+    const bool renting = differing > most && costly && detour_solves_ < refactorization;
+    if (differing > most && !renting) K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);
     const long before = solves_;
     if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions, detour)) {
@@ -513,7 +520,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const double goal = 0.5 * tolerance * force_scale;
         // The kept directions hold while the factor does (what a held solve gives them). Each
         // keeps its held solve's responses at every contact unknown, so that where the
-        // pattern changed (its unknowns: eliminate_uncoupled) or only the coefficients did
+        // pattern changed (its unknowns: eliminate_uncoupled) or the coefficients did
         // (the friction, a 3D slip direction and its rho: every Newton iteration of a 3D slip)
         // its image is made again without a solve, and the images orthonormalized again.
         // The directions stay as made; combinations_ says which of them each orthonormal
@@ -526,7 +533,10 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         } else if (!same_pattern || kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
                    kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
                    kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
-            if (!same_pattern) eliminate_uncoupled();
+            // The unknowns follow the pattern and, where the factor holds slipping rows, the
+            // friction too (a node slipping with the static coefficient is coupled, with the
+            // kinetic one not): entries at unknowns no longer coupled go first.
+            eliminate_uncoupled();
             remake_images(K, p, 0);
         }
         kept_pattern_ = pattern_;

@@ -3,7 +3,7 @@
 // substep's wall time (the mean over SUBSTEPS after the first step), one sparse solve of the
 // same body (K in its fill-reducing order, the floor of a substep: the run's own last factor),
 // that factor's flops, nonzeros and kernel, the solve's counts and the peak memory.
-//   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse) [SUBSTEPS] [F]
+//   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
 //                         [DIMENSION [TOP [GAP]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
 // initial gap (0; a large one lifts the body).
@@ -39,9 +39,10 @@ int main(int argc, char** argv) {
     if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
-    const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0 ? Stepper::ContactPath::sparse
-                                      : std::strcmp(argv[3], "condensed") == 0 ? Stepper::ContactPath::condensed
-                                                                               : Stepper::ContactPath::automatic;
+    const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0       ? Stepper::ContactPath::sparse
+                                      : std::strcmp(argv[3], "sparse_gcr") == 0  ? Stepper::ContactPath::sparse_gcr
+                                      : std::strcmp(argv[3], "condensed") == 0   ? Stepper::ContactPath::condensed
+                                                                                 : Stepper::ContactPath::automatic;
     auto t0 = Clock::now();
     std::unique_ptr<Body> body;
     Stepper* stepper = nullptr;

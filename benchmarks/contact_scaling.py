@@ -6,8 +6,10 @@ beta = 4e-6 s, 1e-6 s substeps) from the static start. Per N and body, in a proc
 substeps after the first step), one sparse solve of the same body (its floor), the contact
 solve's counts and the process's peak memory. The full body as the FMU takes it (the cost
 model's choice), the condensed contact solve it had before (up to --condensed-max nodes: it
-took 356 ms a substep and 130 s to start at 1,586), and the reduced body (40 modes, up to
---reduced-max: 2.5 GB at 1,586).
+took 356 ms a substep and 130 s to start at 1,586), the sparse solve with a slipping node's
+friction left to GCR instead of its factor's slipping rows (from --gcr-min nodes: the sparse
+solve as it was before those rows), and the reduced body (40 modes, up to --reduced-max:
+2.5 GB at 1,586).
 
 Writes benchmarks/results/contact_scaling.json and contact_scaling.md.
 
@@ -46,6 +48,7 @@ def main():
     parser.add_argument("--counts", type=int, nargs="+", default=[101, 201, 401, 801, 1601, 3201])
     parser.add_argument("--condensed-max", type=int, default=801)
     parser.add_argument("--reduced-max", type=int, default=801)
+    parser.add_argument("--gcr-min", type=int, default=401)
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     args = parser.parse_args()
     rows = []
@@ -53,6 +56,8 @@ def main():
         for n in args.counts:
             mesh = pad_mesh(tmp, n)
             cases = [("full", 0, "automatic")]
+            if n >= args.gcr_min:
+                cases.append(("full, slips by GCR", 0, "sparse_gcr"))
             if n <= args.condensed_max:
                 cases.append(("full, condensed", 0, "condensed"))
             if n <= args.reduced_max:
@@ -65,6 +70,11 @@ def main():
     for a, b in zip(full, full[1:]):
         b["substep_ratio_to_previous"] = b["substep_seconds"] / a["substep_seconds"]
         b["solve_ratio_to_previous"] = b["sparse_solve_seconds"] / a["sparse_solve_seconds"]
+    for r in full:  # the factor's slipping rows against GCR's, in this run
+        gcr = [g for g in rows if g["body"] == "full, slips by GCR" and g["requested"] == r["requested"]]
+        if gcr:
+            r["gcr_substep_ratio"] = gcr[0]["substep_seconds"] / r["substep_seconds"]
+            r["gcr_held_solves_ratio"] = gcr[0]["held_solves"] / r["held_solves"]
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS,
                                                          "rows": rows}, indent=1))
@@ -73,7 +83,8 @@ def main():
              "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
              "FMU takes it (the sparse contact solve from about 250 contact nodes on), *condensed* "
-             "the solve it had before, *reduced* the reduced body (40 modes). The static start's load "
+             "the solve it had before, *slips by GCR* the sparse solve without its factor's slipping "
+             "rows (as it was before them), *reduced* the reduced body (40 modes). The static start's load "
              "paths take the cost model's solve in every row.", "",
              "| contact nodes | unknowns | body | contact solve | static start [s] | one substep [ms] "
              "| × previous | one sparse solve [ms] | substep / solve | held solves a substep "

@@ -171,7 +171,7 @@ void Stepper::set_friction_coefficient(double friction) {
 }
 
 double Stepper::slip_coefficient() const {
-    return disc_.mesh.dim == 2 ? params_.friction_coefficient : 0.0;
+    return disc_.mesh.dim == 2 && contact_path_ != ContactPath::sparse_gcr ? params_.friction_coefficient : 0.0;
 }
 
 int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
@@ -305,7 +305,7 @@ long Stepper::sparse_refactorizations() const {
 }
 
 bool Stepper::wants_sparse() const {
-    if (contact_path_ != ContactPath::automatic) return contact_path_ == ContactPath::sparse;
+    if (contact_path_ != ContactPath::automatic) return contact_path_ != ContactPath::condensed;
     return !rate_law(params_).active() &&
            sparse_contact_pays(num_contact_nodes(), disc_.expand.cols(), params_.friction_coefficient);
 }

@@ -257,7 +257,9 @@ public:
     // (variant 0): the same mass and K, so the static start's load path and its settling
     // substep share one body and its factor. Throws std::logic_error for the other variants.
     void set_contact_at_end_of_step(bool at_end);
-    enum class ContactPath { automatic, condensed, sparse };
+    // sparse_gcr: the sparse solve with no slipping rows in its factors (a slipping node's
+    // friction left to GCR: the solve before the factor held them; benchmarks compare).
+    enum class ContactPath { automatic, condensed, sparse, sparse_gcr };
     void set_contact_path(ContactPath path);
     // Whether the last substep's factor solves the contact on the sparse system.
     bool sparse_contact() const;

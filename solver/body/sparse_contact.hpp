@@ -15,9 +15,12 @@
 //                  rho = F p / |z| (a spring across t: Newton in t, not a fixed point),
 //   open node:     unloaded.
 // The held factor is the Cholesky factor of K with a set of contact dofs held (their rows and
-// columns the identity's), in K's own fill-reducing ordering and symbolic analysis. A pattern
+// columns the identity's), in K's own fill-reducing ordering and symbolic analysis; a 2D body's
+// factor holds its slipping nodes too, their x rows K_x - sf K_y (r_x = sf r_y: the slip law),
+// which makes it an LU on the same order and pattern (PatternLu). A pattern
 // is solved on the factor of a nearby held set: what differs (dofs held now but free in the
-// factor, dofs free now but held in it, and the slipping nodes' loads) are the unknowns of a
+// factor, dofs free now but held in it, and the slipping nodes' loads that the factor does not
+// hold) are the unknowns of a
 // small linear system solved by GCR, one held solve an iteration, whose directions are kept
 // while the factor holds (a substep like the last needs none; where a node changes state, the
 // directions' entries at what is no longer an unknown are eliminated between them). The factor is rebuilt (a

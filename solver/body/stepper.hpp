@@ -265,15 +265,16 @@ public:
     bool sparse_contact() const;
     // The cost model: the sparse solve where the condensed one's dense work per substep,
     // about (2 n_c)^2, exceeds kappa(F) = kappa_0 + kappa_F F times the unknowns n_f (a sparse
-    // solve's work grows with them, and its slipping nodes' friction costs held solves in
-    // proportion to F), the constants fitted to benchmarks/contact_crossover.py's bounds. The
+    // solve's work grows with them, and the friction costs it held solves, fewer since a 2D
+    // body's factor holds its slipping rows: 150 F before), the constants fitted to
+    // benchmarks/contact_crossover.py's bounds. The
     // choice is made when a factor is made. A slip-rate law keeps the condensed solve (its full
     // Jacobian and exact node solves need W).
     static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns, double friction);
     static double sparse_contact_kappa(double friction) {
         return sparse_contact_kappa_0 + sparse_contact_kappa_F * friction;
     }
-    static constexpr double sparse_contact_kappa_0 = 20, sparse_contact_kappa_F = 150;
+    static constexpr double sparse_contact_kappa_0 = 8, sparse_contact_kappa_F = 35;
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     // Which contact solve the body takes, and why (the log's).
     std::string summary() const override;

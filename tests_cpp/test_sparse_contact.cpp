@@ -111,6 +111,8 @@ TEST(SparseContactSolve, ReplaysBitForBit) {
     for (int k = 0; k < 15; ++k) a.do_step(1e-5, inputs(k));
     const SimulationSnapshot saved = a.snapshot();
     ASSERT_FALSE(saved.contact_factorization.pattern.empty());
+    const std::vector<signed char>& held = saved.contact_factorization.pattern;  // slipping rows too
+    ASSERT_TRUE(std::any_of(held.begin(), held.end(), [](signed char x) { return x == 3 || x == -3; }));
     for (int k = 15; k < 40; ++k) a.do_step(1e-5, inputs(k));
     Simulation b(stepper_on(p, Stepper::ContactPath::sparse), top);
     b.do_step(1e-5, inputs(7));  // another history: another held set and kept directions

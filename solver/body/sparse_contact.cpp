@@ -49,7 +49,8 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
     held_dof_.assign(static_cast<size_t>(nf), 0);
     // For slipping rows: each contact unknown's row entries in K_ (by symmetry, its column's
     // rows' columns), found in each column's sorted rows; a node's x and y columns must share
-    // their rows, so that K_x + sf K_y keeps K's pattern.
+    // their rows (unknowns j and m/2 + j: a 2D body's), so that K_x - sf K_y keeps K's
+    // pattern. A 3D body's operator fails that (its stepper gives it no slip coefficient).
     unknown_of_ = std::move(unknown_of);
     row_positions_.assign(static_cast<size_t>(m), {});
     full_diagonal_.assign(static_cast<size_t>(m), -1);
@@ -124,7 +125,7 @@ void HeldOperator::factor_held() {
             lu_values_[static_cast<size_t>(full_diagonal_[j])] = 1;
         }
         if (lu_->factor(lu_values_.data())) return;
-        // No pivot without pivoting: the slips stay GCR's (sparse_contact.cpp), on K's Cholesky.
+        // No pivot without pivoting: the slips stay GCR's (SparseContactSolver), on K's Cholesky.
         slips_allowed_ = false;
         lu_held_ = false;
         std::fill(slip_.begin(), slip_.end(), 0);

@@ -25,7 +25,6 @@ public:
     bool factor(const double* values);
     // x = A^-1 b (b and x may not alias). Allocates nothing.
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
-    double nonzeros() const { return static_cast<double>(rows_.size()); }
 
 private:
     Eigen::Index n_ = 0;

@@ -404,6 +404,8 @@ void SparseContactSolver::remake_images(const HeldOperator& K, const ContactProb
         if (kept != j) {
             directions_.col(kept) = directions_.col(j);
             responses_.col(kept) = responses_.col(j);
+            solutions_.col(kept) = solutions_.col(j);
+            solution_size_[kept] = solution_size_[j];
         }
         coupled_responses(kept, n, response_.head(3 * q));
         equations(K, p, response_.head(3 * q), true, images_.col(kept).head(q));
@@ -412,13 +414,17 @@ void SparseContactSolver::remake_images(const HeldOperator& K, const ContactProb
     kept_ = kept;
 }
 
-// xi += the kept directions combined by coefficients_ (over the directions as made).
-void SparseContactSolver::add_directions(Eigen::Index q) {
+// xi += the kept directions combined by coefficients_ (over the directions as made), and with
+// `solutions` w_new_ += their solutions combined alike (combined_: the sizes added, for the
+// digits lost); without, w_new_ is left to be solved again (combined_ infinite).
+void SparseContactSolver::add_directions(Eigen::Index q, bool solutions) {
     for (int j = 0; j < kept_; ++j) {
         const double a = coefficients_[j];
         if (a == 0) continue;
         for (Eigen::Index k = 0; k < q; ++k)
             xi_[k] += a * directions_(coupling_[static_cast<size_t>(k)].unknown, j);
+        if (solutions) w_new_ += a * solutions_.col(j);
+        combined_ += solutions ? std::abs(a) * solution_size_[j] : std::numeric_limits<double>::infinity();
         coefficients_[j] = 0;
     }
 }
@@ -456,6 +462,8 @@ void SparseContactSolver::eliminate_uncoupled() {
             const double f = directions_(u, j) / directions_(u, pivot);
             directions_.col(j) -= f * directions_.col(pivot);
             responses_.col(j) -= f * responses_.col(pivot);
+            solutions_.col(j) -= f * solutions_.col(pivot);
+            solution_size_[j] += std::abs(f) * solution_size_[pivot];
             directions_(u, j) = 0;
         }
         directions_.col(pivot).setZero();  // dropped by remake_images (no image)
@@ -508,6 +516,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         force_scale = std::max(force_scale, std::abs(guess));
     }
     held_solve(K, rhs, true, xi_, w_new_);
+    combined_ = 0;
     if (q > 0) {
         auto r = krylov_residual_.head(q);
         auto response = response_.head(3 * q);
@@ -546,12 +555,11 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         kept_ratio_ = ratio_;
         // GCR: the kept directions' images c_j are orthonormal, so the residual's part in
         // their span goes at no solve; each new direction costs one held solve. Directions
-        // are kept as loads and values (per contact unknown), not as solutions: w is solved
-        // once more at the end, which costs less than updating n_f-sized solutions with each.
-        // The solution is solved once more with the final xi, and its residual checked: the
-        // directions are combined from the directions as made, whose round-off GCR's own
-        // residual does not see where they are near dependent (F = 1.2). Where it is above
-        // the goal, GCR goes on from it (a round); the third round's solution is taken.
+        // are kept as loads and values (per contact unknown) with their solutions; the
+        // solution's residual is checked at the end of a round: the directions are combined
+        // from the directions as made, whose round-off GCR's own residual does not see where
+        // they are near dependent (F = 1.2). Where it is above the goal, GCR goes on from it
+        // (a round); the third round's solution is taken.
         int iterations = 0;
         for (int round = 0;; ++round) {
             bool changed = false;
@@ -565,7 +573,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             while (r.lpNorm<Eigen::Infinity>() > goal) {
                 if (iterations >= max_iterations) {
                     if (detour) {
-                        add_directions(q);
+                        add_directions(q, false);
                         return false;
                     }
                     Text msg;
@@ -575,7 +583,7 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                     throw ContactSolveError(msg.str());
                 }
                 if (kept_ == max_directions) {  // the older half goes (the rest orthonormalized again)
-                    add_directions(q);
+                    add_directions(q, true);
                     remake_images(K, p, max_directions / 2);
                 }
                 const int slot = kept_;
@@ -583,6 +591,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 auto c = images_.col(slot).head(q);
                 v = r;
                 held_solve(K, rhs, false, v, z_);
+                solutions_.col(slot) = z_;
+                solution_size_[slot] = z_.lpNorm<Eigen::Infinity>();
                 directions_.col(slot).setZero();
                 for (Eigen::Index k = 0; k < q; ++k) directions_(coupling_[static_cast<size_t>(k)].unknown, slot) = v[k];
                 for (Eigen::Index j = 0; j < m; ++j) {  // its responses at every contact unknown
@@ -601,9 +611,17 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 ++iterations;
                 ++krylov_iterations_;
             }
-            add_directions(q);
+            // The solution: the directions' solutions combined where that costs less than a
+            // held solve (an axpy of n_f per direction against 4 flops per factor nonzero),
+            // and solved again where it costs more or may have lost digits that a solve keeps
+            // (its terms much larger than it).
+            const Eigen::Index used = (coefficients_.head(kept_).array() != 0).count();
+            add_directions(q, static_cast<double>(used * K.size()) <= 2 * K.factor_nonzeros());
             if (!changed) break;
-            held_solve(K, rhs, true, xi_, w_new_);
+            if (combined_ > max_cancellation * w_new_.lpNorm<Eigen::Infinity>()) {
+                held_solve(K, rhs, true, xi_, w_new_);
+                combined_ = 0;
+            }
             if (round == 2) break;
             solution_residual();
             if (!(r.lpNorm<Eigen::Infinity>() > goal)) break;
@@ -638,8 +656,10 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
     direction_coupled_.resize(m2);
+    if (solutions_.rows() != nf) solutions_.resize(nf, max_directions), kept_ = 0;
     if (images_.rows() != m2) {
         responses_.resize(2 * m2, max_directions);
+        solution_size_.resize(max_directions);
         images_.resize(m2, max_directions);
         directions_.resize(m2, max_directions);
         combinations_.setZero(max_directions, max_directions);

@@ -141,6 +141,9 @@ public:
     // cost a refactorization (solve_pattern).
     static constexpr int max_differing = 64;
     static constexpr int max_detour = 16;
+    // The solutions combined after GCR are solved again where the sizes combined exceed the
+    // combination's by this (digits lost to cancellation that a solve would keep).
+    static constexpr double max_cancellation = 100;
 
 private:
     // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction; and
@@ -180,7 +183,7 @@ private:
                    Eigen::Ref<Eigen::VectorXd> e) const;
     bool orthonormalize(int slot, Eigen::Index q, double dependent);
     void remake_images(const HeldOperator& K, const ContactProblem& p, int first);
-    void add_directions(Eigen::Index q);
+    void add_directions(Eigen::Index q, bool solutions);
     void coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const;
     void eliminate_uncoupled();
 
@@ -206,6 +209,12 @@ private:
     // pattern and coefficients, and which combination of the directions each one's is
     // (combinations_: upper triangular). coefficients_: GCR's step in the directions as made.
     Eigen::MatrixXd directions_, images_, responses_, combinations_;
+    // The directions' held solves (n_f each), so that the solution after GCR is their
+    // combination, not one more held solve; their sizes (max norms, bounds after
+    // elimination) and the sizes combined into w_new_ since it was last solved.
+    Eigen::MatrixXd solutions_;
+    Eigen::VectorXd solution_size_;
+    double combined_ = 0;
     Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
     int kept_ = 0;

@@ -1,8 +1,11 @@
 // One case of benchmarks/contact_scaling.py: a mesh body sliding from the static start, its
 // contact solved by the path asked for. Prints one JSON object: the static start's and one
 // substep's wall time (the mean over SUBSTEPS after the first step), one sparse solve of the
-// same body (K in its fill-reducing order, the floor of a substep: the run's own last factor),
-// that factor's flops, nonzeros and kernel, the solve's counts and the peak memory.
+// same body (K in its fill-reducing order, the floor of a substep: the run's own factor),
+// timed beside the substeps (as many solves after each communication step as it had
+// substeps, so that both see the same machine: the ratio is what this run measured, on a
+// machine whose speed drifts between runs), that factor's flops, nonzeros and kernel, the
+// solve's counts (held solves over the timed substeps too) and the peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
 //                         [DIMENSION [TOP [GAP]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
@@ -60,24 +63,8 @@ int main(int argc, char** argv) {
     in.foundation_velocity = velocity;
     in.top_displacement = top;
     sim.do_step(step, in);  // factors what the others reuse
-    const int per_step = static_cast<int>(std::lround(step / p.internal_step));
-    const int steps = std::max(1, substeps / per_step);
-    t0 = Clock::now();
-    int iterations = 0;
-    for (int k = 0; k < steps; ++k) {
-        sim.do_step(step, in);
-        iterations += sim.statistics().contact_iterations;
-    }
-    const double substep = seconds_since(t0) / (steps * per_step);
-    const Observables o = sim.observables();
-    const int contact_nodes = sim.body().num_contact_nodes();
-    const bool sparse = stepper && stepper->sparse_contact();
-    const long held_solves = stepper ? stepper->sparse_solver().solves() : 0L;
-    const long krylov_iterations = stepper ? stepper->sparse_solver().krylov_iterations() : 0L;
-    const long gcr_rounds = stepper ? stepper->sparse_solver().gcr_rounds() : 0L;
-    const long held_refactorizations = stepper ? stepper->sparse_refactorizations() : 0L;
     // The floor: one solve with K's factor in its fill-reducing order. The full body's is its own
-    // last factor (the sparse contact solve's, its held set's rows the identity's: the same
+    // factor (the sparse contact solve's, its held set's rows the identity's: the same
     // cost); the reduced body's K is factored beside it with the kernel the full body's would
     // take (TrailingCholesky's rule).
     const Discretization& d = sim.body().discretization();
@@ -88,22 +75,42 @@ int main(int argc, char** argv) {
     TrailingCholesky& factor = stepper ? stepper->last_factor() : *reduced_floor;
     Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows()), x(K.rows());
     factor.solve(b, x);
-    t0 = Clock::now();
-    const int solves = 50;
-    for (int k = 0; k < solves; ++k) factor.solve(b, x);
-    const double solve = seconds_since(t0) / solves;
+    const int per_step = static_cast<int>(std::lround(step / p.internal_step));
+    const int steps = std::max(1, substeps / per_step);
+    const long solves_before = stepper ? stepper->sparse_solver().solves() : 0L;
+    int iterations = 0;
+    double stepping = 0, solving = 0;
+    for (int k = 0; k < steps; ++k) {
+        t0 = Clock::now();
+        sim.do_step(step, in);
+        stepping += seconds_since(t0);
+        iterations += sim.statistics().contact_iterations;
+        t0 = Clock::now();
+        for (int j = 0; j < per_step; ++j) factor.solve(b, x);
+        solving += seconds_since(t0);
+    }
+    const double substep = stepping / (steps * per_step), solve = solving / (steps * per_step);
+    const Observables o = sim.observables();
+    const int contact_nodes = sim.body().num_contact_nodes();
+    const bool sparse = stepper && stepper->sparse_contact();
+    const long held_solves = stepper ? stepper->sparse_solver().solves() : 0L;
+    const double held_solves_per_substep = static_cast<double>(held_solves - solves_before) / (steps * per_step);
+    const long krylov_iterations = stepper ? stepper->sparse_solver().krylov_iterations() : 0L;
+    const long gcr_rounds = stepper ? stepper->sparse_solver().gcr_rounds() : 0L;
+    const long held_refactorizations = stepper ? stepper->sparse_refactorizations() : 0L;
     const double peak_memory = peak_rss_mb();
     std::printf("{\"contact_nodes\": %d, \"unknowns\": %ld, \"modes\": %d, \"sparse\": %s, "
                 "\"static_start_seconds\": %.6g, \"substep_seconds\": %.6g, "
                 "\"sparse_solve_seconds\": %.6g, \"substep_per_solve\": %.4g, "
                 "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
+                "\"held_solves_per_substep\": %.4g, "
                 "\"krylov_iterations\": %ld, \"gcr_rounds\": %ld, \"held_refactorizations\": %ld, "
                 "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
                 "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
                 "\"factor_kernel\": \"%s\"}\n",
                 contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start,
                 substep, solve, substep / solve, static_cast<double>(iterations) / (steps * per_step),
-                held_solves, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force, o.kinetic_energy,
+                held_solves, held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force, o.kinetic_energy,
                 o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
                 factor.supernodal() ? "supernodal_lu" : "simplicial");
 }

@@ -2,9 +2,13 @@
 wide, its two contact faces 66 mm together) whose cells along the contact faces shrink so that
 it has about N contact nodes, growing away from them; damped sliding at 20 m/s (F = 0.3,
 beta = 4e-6 s, 1e-6 s substeps) from the static start. Per N and body, in a process of its own
-(build/bench_contact_scaling): the static start's wall time, one substep's (the mean over 60
-substeps after the first step), one sparse solve of the same body (its floor), the contact
-solve's counts and the process's peak memory. The full body as the FMU takes it (the cost
+(build/bench_contact_scaling): the static start's wall time, one substep's (the mean over 300
+substeps after the first step: sliding, past the start's changes of pattern), one sparse solve
+of the same body (its floor, timed beside the substeps in the same process), the contact
+solve's counts and the process's peak memory. Each case runs --repeat times, the cases in
+turn, and a row gives the median of its runs' times (each run's are kept): this machine's speed
+drifts by 2-4x between runs, and a doubling's ratio compares two processes. The counts must
+agree between runs (the solve is deterministic). The full body as the FMU takes it (the cost
 model's choice), the condensed contact solve it had before (up to --condensed-max nodes: it
 took 356 ms a substep and 130 s to start at 1,586), the sparse solve with a slipping node's
 friction left to GCR instead of its factor's slipping rows (from --gcr-min nodes: the sparse
@@ -18,6 +22,7 @@ Writes benchmarks/results/contact_scaling.json and contact_scaling.md.
 import argparse
 import json
 import pathlib
+import statistics
 import subprocess
 import tempfile
 
@@ -26,7 +31,8 @@ OUT = ROOT / "benchmarks" / "results"
 CONTACT_LENGTH = 0.066  # m: the two contact faces of an 80 mm pad with 4 mm chamfers and a 6 mm slot
 SCENE = {"initial_state": 1, "friction_coefficient": 0.3, "damping_stiffness": 4e-6,
          "internal_step": 1e-6, "foundation_velocity": 20.0, "top_displacement": -5e-6}
-SUBSTEPS = 60
+SUBSTEPS = 300
+TIMES = ("static_start_seconds", "substep_seconds", "sparse_solve_seconds", "substep_per_solve")
 
 
 def pad_mesh(folder, n):
@@ -49,23 +55,36 @@ def main():
     parser.add_argument("--condensed-max", type=int, default=801)
     parser.add_argument("--reduced-max", type=int, default=801)
     parser.add_argument("--gcr-min", type=int, default=401)
+    parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     args = parser.parse_args()
-    rows = []
+    runs = {}
     with tempfile.TemporaryDirectory() as tmp:
+        cases = []
         for n in args.counts:
             mesh = pad_mesh(tmp, n)
-            cases = [("full", 0, "automatic")]
+            cases.append((n, "full", mesh, 0, "automatic"))
             if n >= args.gcr_min:
-                cases.append(("full, slips by GCR", 0, "sparse_gcr"))
+                cases.append((n, "full, slips by GCR", mesh, 0, "sparse_gcr"))
             if n <= args.condensed_max:
-                cases.append(("full, condensed", 0, "condensed"))
+                cases.append((n, "full, condensed", mesh, 0, "condensed"))
             if n <= args.reduced_max:
-                cases.append(("reduced", 40, "automatic"))
-            for body, modes, path in cases:
-                r = {"requested": n, "body": body, **measure(args.build, mesh, modes, path)}
-                print(json.dumps(r), flush=True)
-                rows.append(r)
+                cases.append((n, "reduced", mesh, 40, "automatic"))
+        for _ in range(args.repeat):
+            for n, body, mesh, modes, path in cases:
+                r = measure(args.build, mesh, modes, path)
+                print(json.dumps({"requested": n, "body": body, **r}), flush=True)
+                runs.setdefault((n, body), []).append(r)
+    rows = []
+    for (n, body), measured in runs.items():
+        row = {"requested": n, "body": body, **measured[0]}
+        for key, value in measured[0].items():
+            if key not in TIMES and key != "peak_memory_mb" and any(m[key] != value for m in measured):
+                raise SystemExit(f"{n} {body}: {key} differs between runs: {[m[key] for m in measured]}")
+        for key in TIMES + ("peak_memory_mb",):
+            row[key + "_runs"] = [m[key] for m in measured]
+            row[key] = statistics.median(row[key + "_runs"])
+        rows.append(row)
     full = [r for r in rows if r["body"] == "full"]
     for a, b in zip(full, full[1:]):
         b["substep_ratio_to_previous"] = b["substep_seconds"] / a["substep_seconds"]
@@ -76,11 +95,12 @@ def main():
             r["gcr_substep_ratio"] = gcr[0]["substep_seconds"] / r["substep_seconds"]
             r["gcr_held_solves_ratio"] = gcr[0]["held_solves"] / r["held_solves"]
     OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS,
+    (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS, "repeat": args.repeat,
                                                          "rows": rows}, indent=1))
     lines = ["# What a refined contact boundary costs", "",
              "`.venv/bin/python benchmarks/contact_scaling.py`: the pad, damped sliding at 20 m/s "
-             "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times and the "
+             "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times (the median "
+             f"of {args.repeat} runs; a sparse solve timed beside the substeps in each) and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
              "FMU takes it (the sparse contact solve from about 250 contact nodes on), *condensed* "
              "the solve it had before, *slips by GCR* the sparse solve without its factor's slipping "
@@ -92,7 +112,7 @@ def main():
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         ratio = r.get("substep_ratio_to_previous")
-        solves = r["held_solves"] / (SUBSTEPS + 10) if r["sparse"] else None
+        solves = r["held_solves_per_substep"] if r["sparse"] else None
         lines.append(
             f"| {r['contact_nodes']} | {r['unknowns']} | {r['body']} | "
             f"{'sparse' if r['sparse'] else 'condensed'} | {r['static_start_seconds']:.2f} | "

@@ -631,6 +631,24 @@ def test_the_stability_warning_does_not_claim_a_mesh(tmp_path, unzipped_fmu):
     assert not any("stability maps" in m for m in messages)
 
 
+def test_the_reduced_body_on_a_long_contact_edge_is_warned_about(tmp_path, unzipped_fmu):
+    """The reduced body keeps its contact edge dense: on the pad refined to 398 contact nodes,
+    where (2 n_c)^2 is 108 times the unknowns, the full body was as fast (contact_scaling.md),
+    so the initialization names modes = 0; at 200 contact nodes (53 times), or for the full
+    body, it says nothing."""
+    def warned(n, modes):
+        path = meshes.pad(tmp_path / f"pad_{n}.msh", width=0.08, size=2e-3, contact_size=0.066 / (n - 2))
+        error, messages = fmu_log({"mesh": str(path), "modes": modes, "friction_coefficient": 0.3,
+                                   "damping_stiffness": 4e-6}, unzipped_fmu)
+        assert error is None, error
+        return [m for m in messages if "on a long contact edge" in m]
+    long_edge = warned(401, 40)
+    assert len(long_edge) == 1 and "consider modes = 0" in long_edge[0], long_edge
+    assert "796 contact unknowns" in long_edge[0], long_edge
+    assert not warned(201, 40)
+    assert not warned(401, 0)
+
+
 def test_a_mesh_file_changed_between_runs_is_read_again(tmp_path):
     """The body built from a file is kept over a reset only while the file is unchanged: a file
     rewritten in place (the same path) gives the new body, as a new instance would."""

@@ -295,6 +295,19 @@ std::string massless_edge_warning(const SceneParameters& p) {
     return msg.str();
 }
 
+std::string long_reduced_edge_warning(const SceneParameters& p, long contact_unknowns, long unknowns) {
+    const double ratio = static_cast<double>(contact_unknowns) * static_cast<double>(contact_unknowns) / static_cast<double>(unknowns);
+    if (p.modes == 0 || !(ratio >= reduced_edge_ratio)) return "";
+    Text msg;
+    msg << "modes = " << p.modes << " on a long contact edge: the reduced body keeps its " << contact_unknowns
+        << " contact unknowns' operators dense (" << contact_unknowns << "^2 entries each), and where (contact "
+        << "unknowns)^2 reaches " << reduced_edge_ratio << " times the full body's unknowns (here "
+        << ratio << " times its " << unknowns << ") the full body, modes = 0, was as fast on the measured "
+        << "pad and faster beyond, in a fraction of the memory and start time (docs/meshes.md, \"A refined "
+        << "contact boundary\"): consider modes = 0";
+    return msg.str();
+}
+
 std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
     if (!p.mesh.empty()) {  // the maps place a body by the rectangle's cells: none for a mesh
         if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped() && p.dimension == 3)

@@ -30,6 +30,16 @@ std::string scheme_warning(const SceneParameters& p, double sliding_speed = 0);
 // where none of this applies.
 std::string massless_edge_warning(const SceneParameters& p);
 
+// The reduced body on a long contact edge: its edge's operators are dense in the contact
+// unknowns (Craig-Bampton keeps the edge physical), and on the pad that
+// benchmarks/contact_scaling.py measured, the full body's sparse contact solve was as fast
+// where (contact unknowns)^2 reached reduced_edge_ratio times the full body's unknowns (398
+// contact nodes), and faster beyond, in a fraction of the memory and start time
+// (docs/meshes.md, "A refined contact boundary"). Names modes = 0; empty for the full body or
+// a shorter edge.
+constexpr double reduced_edge_ratio = 100;
+std::string long_reduced_edge_warning(const SceneParameters& p, long contact_unknowns, long unknowns);
+
 // The smallest friction coefficient from which the damped stability map found no steady
 // sliding state (the clamped body wedges) on the mesh nearest this body's; inf where none.
 double wedging_friction(const SceneParameters& p);

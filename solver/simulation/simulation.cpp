@@ -70,6 +70,10 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
         warnings_.push_back(std::move(why));
     }
     if (std::string why = massless_edge_warning(params); !why.empty()) warnings_.push_back(std::move(why));
+    const Discretization& d = body_->discretization();
+    if (std::string why = long_reduced_edge_warning(params, static_cast<long>(d.contact_unknowns().size()), static_cast<long>(d.A_free.rows()));
+        !why.empty())
+        warnings_.push_back(std::move(why));
 }
 
 // A quasi-static load path: the top displacement goes from `start` to `top` in `increments`

@@ -644,7 +644,7 @@ def test_the_reduced_body_on_a_long_contact_edge_is_warned_about(tmp_path, unzip
         return [m for m in messages if "on a long contact edge" in m]
     long_edge = warned(401, 40)
     assert len(long_edge) == 1 and "consider modes = 0" in long_edge[0], long_edge
-    assert "796 contact unknowns" in long_edge[0], long_edge
+    assert "796 contact unknowns" in long_edge[0] and "here 107.9" in long_edge[0], long_edge
     assert not warned(201, 40)
     assert not warned(401, 0)
 

@@ -615,8 +615,9 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             // held solve (an axpy of n_f per direction against 4 flops per factor nonzero),
             // and solved again where it costs more or may have lost digits that a solve keeps
             // (its terms much larger than it).
-            const Eigen::Index used = (coefficients_.head(kept_).array() != 0).count();
-            add_directions(q, static_cast<double>(used * K.size()) <= 2 * K.factor_nonzeros());
+            int used = 0;
+            for (int j = 0; j < kept_; ++j) used += coefficients_[j] != 0;
+            add_directions(q, static_cast<double>(used) * static_cast<double>(K.size()) <= 2 * K.factor_nonzeros());
             if (!changed) break;
             if (combined_ > max_cancellation * w_new_.lpNorm<Eigen::Infinity>()) {
                 held_solve(K, rhs, true, xi_, w_new_);

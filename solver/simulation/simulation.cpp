@@ -70,8 +70,9 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
         warnings_.push_back(std::move(why));
     }
     if (std::string why = massless_edge_warning(params); !why.empty()) warnings_.push_back(std::move(why));
-    const Discretization& d = body_->discretization();
-    if (std::string why = long_reduced_edge_warning(params, static_cast<long>(d.contact_unknowns().size()), static_cast<long>(d.A_free.rows()));
+    const Discretization& d = body_->discretization();  // a contact node's unknowns: one per dimension
+    if (std::string why = long_reduced_edge_warning(params, static_cast<long>(d.mesh.dim) * body_->num_contact_nodes(),
+                                                    static_cast<long>(d.A_free.rows()));
         !why.empty())
         warnings_.push_back(std::move(why));
 }

@@ -7,9 +7,9 @@
 // machine whose speed drifts between runs), that factor's flops, nonzeros and kernel, the
 // solve's counts (held solves over the timed substeps too) and the peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
-//                         [DIMENSION [TOP [GAP]]]
+//                         [DIMENSION [TOP [GAP [STEP]]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
-// initial gap (0; a large one lifts the body).
+// initial gap (0; a large one lifts the body), STEP the communication step (1e-5 s).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
     p.internal_step = 1e-6;
     p.static_initial_state = true;
     if (argc > 6) p.dimension = std::atoi(argv[6]);
-    const double top = argc > 7 ? std::atof(argv[7]) : -5e-6, velocity = 20, step = 1e-5;
+    const double top = argc > 7 ? std::atof(argv[7]) : -5e-6, velocity = 20;
+    const double step = argc > 9 ? std::atof(argv[9]) : 1e-5;
     if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);

@@ -20,6 +20,7 @@ solve as it was before those rows), and the reduced body (40 modes, up to --redu
 Writes benchmarks/results/contact_scaling.json and contact_scaling.md.
 
     .venv/bin/python benchmarks/contact_scaling.py [--counts 101 ... 3201] [--build DIR]
+                                                   [--repeat 3] [--analyze-only]
 """
 import argparse
 import json
@@ -62,7 +63,13 @@ def main():
     parser.add_argument("--gcr-min", type=int, default=401)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
+    parser.add_argument("--analyze-only", action="store_true",
+                        help="derive the ratios and tables again from the results file")
     args = parser.parse_args()
+    if args.analyze_only:
+        saved = json.loads((OUT / "contact_scaling.json").read_text())
+        write(saved["rows"], saved["repeat"])
+        return
     runs = {}
     with tempfile.TemporaryDirectory() as tmp:
         cases = []
@@ -91,11 +98,21 @@ def main():
             row[key + "_runs"] = [m[key] for m in measured]
             row[key] = statistics.median(row[key + "_runs"])
         rows.append(row)
+    write(rows, args.repeat)
+
+
+def write(rows, repeat):
+    """The ratios between rows, then contact_scaling.json and .md."""
     for body in ("full", "full, 1e-4 s steps"):
         same = [r for r in rows if r["body"] == body]
         for a, b in zip(same, same[1:]):
             b["substep_ratio_to_previous"] = b["substep_seconds"] / a["substep_seconds"]
             b["solve_ratio_to_previous"] = b["sparse_solve_seconds"] / a["sparse_solve_seconds"]
+            # The same without the machine's drift between the two processes: the substep in
+            # solves (timed beside each other) times what one solve streams, its factor's
+            # nonzeros.
+            b["work_ratio_to_previous"] = (b["substep_per_solve"] / a["substep_per_solve"]) * (
+                b["factor_nonzeros"] / a["factor_nonzeros"])
     full = [r for r in rows if r["body"] == "full"]
     for r in full:  # the factor's slipping rows against GCR's, in this run
         gcr = [g for g in rows if g["body"] == "full, slips by GCR" and g["requested"] == r["requested"]]
@@ -103,12 +120,12 @@ def main():
             r["gcr_substep_ratio"] = gcr[0]["substep_seconds"] / r["substep_seconds"]
             r["gcr_held_solves_ratio"] = gcr[0]["held_solves"] / r["held_solves"]
     OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS, "repeat": args.repeat,
+    (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS, "repeat": repeat,
                                                          "rows": rows}, indent=1))
     lines = ["# What a refined contact boundary costs", "",
              "`.venv/bin/python benchmarks/contact_scaling.py`: the pad, damped sliding at 20 m/s "
              "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times (the median "
-             f"of {args.repeat} runs; a sparse solve timed beside the substeps in each) and the "
+             f"of {repeat} runs; a sparse solve timed beside the substeps in each) and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
              "FMU takes it (the sparse contact solve from about 100 contact nodes on), with communication "
              "steps of 1e-5 s (10 substeps), *1e-4 s steps* the same with steps of 1e-4 s (GCR's kept "
@@ -117,17 +134,18 @@ def main():
              "rows (as it was before them), *reduced* the reduced body (40 modes). The static start's load "
              "paths take the cost model's solve in every row.", "",
              "| contact nodes | unknowns | body | contact solve | static start [s] | one substep [ms] "
-             "| × previous | one sparse solve [ms] | substep / solve | held solves a substep "
-             "| peak memory [MB] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| × previous | one sparse solve [ms] | substep / solve | × previous in solves × "
+             "factor nonzeros | held solves a substep | peak memory [MB] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        ratio = r.get("substep_ratio_to_previous")
+        ratio, work = r.get("substep_ratio_to_previous"), r.get("work_ratio_to_previous")
         solves = r["held_solves_per_substep"] if r["sparse"] else None
         lines.append(
             f"| {r['contact_nodes']} | {r['unknowns']} | {r['body']} | "
             f"{'sparse' if r['sparse'] else 'condensed'} | {r['static_start_seconds']:.2f} | "
             f"{1e3 * r['substep_seconds']:.3g} | {'' if ratio is None else f'{ratio:.1f}'} | "
             f"{1e3 * r['sparse_solve_seconds']:.3g} | {r['substep_per_solve']:.1f} | "
+            f"{'' if work is None else f'{work:.1f}'} | "
             f"{'' if solves is None else f'{solves:.1f}'} | {r['peak_memory_mb']:.0f} |")
     (OUT / "contact_scaling.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -302,7 +302,7 @@ std::string long_reduced_edge_warning(const SceneParameters& p, long contact_unk
     msg << "modes > 0 on a long contact edge: the reduced body keeps the operators of its " << m
         << " contact unknowns dense, and where (contact unknowns)^2 reached 100 times the full body's "
            "unknowns (here " << ratio << " times its " << static_cast<double>(unknowns)
-        << ") the full body (modes = 0) was as fast on the measured pad and faster beyond, in a "
+        << ") the full body (modes = 0) was about as fast on the measured pad and faster beyond, in a "
            "fraction of the memory and start time (docs/meshes.md, \"A refined contact boundary\"): "
            "consider modes = 0";
     return msg.str();

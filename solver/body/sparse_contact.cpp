@@ -657,7 +657,10 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
     direction_coupled_.resize(m2);
-    if (solutions_.rows() != nf) solutions_.resize(nf, max_directions), kept_ = 0;
+    if (solutions_.rows() != nf) {  // another body size: the kept directions are not its
+        solutions_.resize(nf, max_directions);
+        kept_ = 0;
+    }
     if (images_.rows() != m2) {
         responses_.resize(2 * m2, max_directions);
         solution_size_.resize(max_directions);

@@ -300,8 +300,8 @@ std::string long_reduced_edge_warning(const SceneParameters& p, long contact_unk
     if (p.modes == 0 || !(ratio >= reduced_edge_ratio)) return "";
     Text msg;  // numbers as doubles: one formatting routine (the FMU's size, docs/building.md)
     msg << "modes > 0 on a long contact edge: the reduced body keeps the operators of its " << m
-        << " contact unknowns dense, and where (contact unknowns)^2 reached 100 times the full body's "
-           "unknowns (here " << ratio << " times its " << static_cast<double>(unknowns)
+        << " contact unknowns dense, and where (contact unknowns)^2 reached " << reduced_edge_ratio
+        << " times the full body's unknowns (here " << ratio << " times its " << static_cast<double>(unknowns)
         << ") the full body (modes = 0) was about as fast on the measured pad and faster beyond, in a "
            "fraction of the memory and start time (docs/meshes.md, \"A refined contact boundary\"): "
            "consider modes = 0";

@@ -89,9 +89,9 @@ TEST_P(SparseAgainstCondensed, SameSolutions) {
     EXPECT_FALSE(dynamic_cast<const Stepper&>(condensed.body()).sparse_contact());
 }
 
-// The held factor's set and the kept GCR directions decide a sparse solve's last bits: a
-// saved state keeps the one, a communication step drops the other, and a new factor starts at
-// the state's own. So a restored state replays bit for bit in another simulation, and a
+// The held factor's set and the kept GCR directions (and the last patterns) decide a sparse
+// solve's last bits: a saved state keeps the one, saving or restoring a state drops the
+// other, and a new factor starts at the state's own. So a restored state replays bit for bit in another simulation, and a
 // restarted one computes a new one's bits.
 TEST(SparseContactSolve, ReplaysBitForBit) {
     SceneParameters p;
@@ -248,15 +248,17 @@ TEST(HeldOperator, SlippingRowsHoldTheirSlipLaw) {
     }
 }
 
-// A 2D body's factor holds its slipping rows: steady sliding leaves GCR only what differs
-// from the factor's pattern. On the 40 x 40 rectangle (forced onto the sparse solve) it made
-// 161 held solves against 693 with the slips left to GCR (bench_contact_scaling rect:40 0
-// sparse|sparse_gcr 100 0.3); the same states either way. And a Newton iteration costs one
-// held solve and one for each GCR iteration: the solution after GCR is its directions'
-// solutions combined, not solved again (it was: 161 = 113 iterations + 8 GCR + 40 such solves
-// in the 11 steps, now 121; with the slips left to GCR 693, now 577 = 117 + 460), except where
-// the combination would lose digits (allowed here in a tenth of the iterations).
-TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
+namespace {
+// Steady sliding on the 40 x 40 rectangle (forced onto the sparse solve), 11 steps of 10
+// substeps from a static start; with snapshots, a state saved before each step (as an importer
+// that can go back a step does), which drops GCR's kept directions there.
+struct SlidingRun {
+    long solves = 0, iterations = 0, krylov = 0;  // over the steps
+    Eigen::VectorXd lambda;
+    std::vector<signed char> factor_pattern;
+};
+
+SlidingRun slide_rectangle(Stepper::ContactPath path, bool snapshots) {
     SceneParameters p;
     p.nx = p.ny = 40;
     p.friction_coefficient = 0.3;
@@ -267,28 +269,57 @@ TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
     StepInputs in;
     in.foundation_velocity = 20;
     in.top_displacement = top;
-    long solves[2] = {0, 0};
-    Eigen::VectorXd lambda[2];
+    auto owned = stepper_on(p, path);
+    const Stepper& body = *owned;
+    Simulation sim(std::move(owned), top);
+    SlidingRun run;
+    const long solves = body.sparse_solver().solves(), krylov = body.sparse_solver().krylov_iterations();
+    for (int step = 0; step < 11; ++step) {
+        if (snapshots) sim.snapshot();
+        sim.do_step(1e-5, in);
+        run.iterations += sim.statistics().contact_iterations;
+    }
+    run.solves = body.sparse_solver().solves() - solves;
+    run.krylov = body.sparse_solver().krylov_iterations() - krylov;
+    run.lambda = sim.state().lambda;
+    run.factor_pattern = body.contact_factorization().pattern;
+    return run;
+}
+}  // namespace
+
+// A 2D body's factor holds its slipping rows: steady sliding leaves GCR only what differs
+// from the factor's pattern. Where GCR's directions go at every step (a state saved at each),
+// the rectangle made 121 held solves in its 11 steps against 577 with the slips left to GCR;
+// the same states either way. And a Newton iteration costs one held solve and one for each
+// GCR iteration: the solution after GCR is its directions' solutions combined, not solved
+// again (it was: 161 = 113 iterations + 8 GCR + 40 such solves, and 693 with the slips left to
+// GCR; now 121 = 113 + 8, and 577 = 117 + 460), except where the combination would lose
+// digits (allowed here in a tenth of the iterations).
+TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
+    SlidingRun runs[2];
     int k = 0;
     for (const auto path : {Stepper::ContactPath::sparse, Stepper::ContactPath::sparse_gcr}) {
-        auto owned = stepper_on(p, path);
-        const Stepper& body = *owned;
-        Simulation sim(std::move(owned), top);
-        const long started = body.sparse_solver().solves(), krylov = body.sparse_solver().krylov_iterations();
-        long iterations = 0;
-        for (int step = 0; step < 11; ++step) {
-            sim.do_step(1e-5, in);
-            iterations += sim.statistics().contact_iterations;
-        }
-        const long stepped = body.sparse_solver().solves() - started;
-        EXPECT_GE(stepped, iterations + body.sparse_solver().krylov_iterations() - krylov);
-        EXPECT_LE(10 * (stepped - iterations - (body.sparse_solver().krylov_iterations() - krylov)), iterations);
-        solves[k] = body.sparse_solver().solves();
-        lambda[k++] = sim.state().lambda;
-        const std::vector<signed char> pattern = body.contact_factorization().pattern;
+        const SlidingRun& run = runs[k++] = slide_rectangle(path, true);
+        EXPECT_GE(run.solves, run.iterations + run.krylov);
+        EXPECT_LE(10 * (run.solves - run.iterations - run.krylov), run.iterations);
+        const std::vector<signed char>& pattern = run.factor_pattern;
         EXPECT_EQ(std::any_of(pattern.begin(), pattern.end(), [](signed char x) { return x == 3 || x == -3; }),
                   path == Stepper::ContactPath::sparse);
     }
-    EXPECT_LT(2 * solves[0], solves[1]);
-    EXPECT_LE((lambda[0] - lambda[1]).cwiseAbs().maxCoeff(), 10 * p.contact_tolerance * lambda[1].cwiseAbs().maxCoeff());
+    EXPECT_LT(2 * runs[0].solves, runs[1].solves);
+    EXPECT_LE((runs[0].lambda - runs[1].lambda).cwiseAbs().maxCoeff(),
+              10 * SceneParameters{}.contact_tolerance * runs[1].lambda.cwiseAbs().maxCoeff());
+}
+
+// GCR's kept directions outlast a communication step: they go only where a state is saved or
+// restored, which replays the same way (ReplaysBitForBit). Left with the slips (most of its
+// directions), GCR made 577 held solves in the 11 steps with a state saved before each (460 in
+// GCR), and 155 without (42 in GCR), to the same state within the contact tolerance.
+TEST(SparseContactSolve, KeptDirectionsOutlastCommunicationSteps) {
+    const SlidingRun kept = slide_rectangle(Stepper::ContactPath::sparse_gcr, false);
+    const SlidingRun dropped = slide_rectangle(Stepper::ContactPath::sparse_gcr, true);
+    EXPECT_LT(2 * kept.solves, dropped.solves);
+    EXPECT_LT(2 * kept.krylov, dropped.krylov);
+    EXPECT_LE((kept.lambda - dropped.lambda).cwiseAbs().maxCoeff(),
+              10 * SceneParameters{}.contact_tolerance * dropped.lambda.cwiseAbs().maxCoeff());
 }

@@ -84,9 +84,11 @@ public:
     // setting it makes the next substep of its size start from it.
     virtual ContactFactorization contact_factorization() const { return {}; }
     virtual void set_contact_factorization(const ContactFactorization&) {}
-    // A communication step begins: what the body keeps from substep to substep only to go
-    // faster, and that is no part of a saved state, goes (so that a restored state replays).
-    virtual void begin_step() {}
+    // What the body keeps from substep to substep only to go faster, and that is no part of a
+    // saved state, goes: what follows depends on the State alone. Where a state is saved
+    // (Simulation::snapshot) or restored, and after a failed step, so that a restored state
+    // replays the bits that followed its saving.
+    virtual void forget_kept() {}
     virtual int modes() const { return 0; }  // 0: the full body
     // What the step operator is ("factorized 4/dt^2 M + A" and the like), for the log.
     virtual const char* operator_name() const = 0;

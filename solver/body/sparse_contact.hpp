@@ -126,8 +126,9 @@ public:
                            const ContactSolverOptions& options, const Eigen::VectorXd& rhs,
                            const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
                            Eigen::VectorXd& w, bool fresh_factor);
-    // Drops the kept directions (they make a solve faster, and change its last bits).
-    void forget() { kept_ = 0; kept_operator_ = nullptr; detour_solves_ = 0; }
+    // Drops what the solver keeps from solve to solve (GCR's directions, the last patterns:
+    // they make a solve faster, and change its last bits).
+    void forget() { history_ = 0; kept_ = parked_ = 0; kept_operator_ = nullptr; detour_solves_ = 0; }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life
@@ -186,6 +187,8 @@ private:
     void add_directions(Eigen::Index q, bool solutions);
     void coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const;
     void eliminate_uncoupled();
+    void unpark();
+    void move_direction(int from, int to);
 
     using Pattern = Eigen::Matrix<signed char, Eigen::Dynamic, 1>;
     Pattern pattern_, trial_pattern_;
@@ -217,13 +220,16 @@ private:
     double combined_ = 0;
     Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
-    int kept_ = 0;
+    int kept_ = 0, parked_ = 0;  // parked_: eliminate_uncoupled's, in the last slots
     Pattern kept_pattern_;
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
     // Held solves made on the current factor for patterns it does not hold (solve_pattern).
     long detour_solves_ = 0;
+    // The last three solves' final patterns (the latest first), history_ of them valid.
+    Pattern last_patterns_[3];
+    int history_ = 0;
     long solves_ = 0, krylov_iterations_ = 0, rounds_ = 0;
 };
 

@@ -277,7 +277,6 @@ ContactFactorization Stepper::contact_factorization() const {
 }
 
 void Stepper::set_contact_factorization(const ContactFactorization& saved) {
-    sparse_solver_.forget();
     current_factor_ = 0;  // none: the next factor used starts at the state's held set
     if (saved.pattern.empty()) return;
     for (const auto& c : cache_) {

@@ -288,7 +288,7 @@ public:
     // current factor: a saved state keeps it, so that a restored one solves on the same.
     ContactFactorization contact_factorization() const override;
     void set_contact_factorization(const ContactFactorization& f) override;
-    void begin_step() override { sparse_solver_.forget(); }
+    void forget_kept() override { sparse_solver_.forget(); }
     void enable_timing(bool on) { timing_ = on; }
     const SubstepTimings& timings() const { return timings_; }
     ContactSolverOptions& contact_options() override { return options_; }

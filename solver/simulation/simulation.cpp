@@ -379,7 +379,6 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const double dt = h / n, t0 = state_.time;
     saved_ = state_;
     const Works saved_works = works_;
-    body_->begin_step();
 
     StepSums sums;
     Observables& avg = sums.avg;
@@ -419,6 +418,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
         warn_refinements(stats);
     } catch (...) {
         state_ = saved_;
+        body_->forget_kept();  // what the failed step kept is not the saved state's
         works_ = saved_works;
         observables_ = saved_observables;
         energies_current_ = false;
@@ -696,6 +696,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
         if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3)
             throw std::invalid_argument("invalid node state in the contact factorization");
     body_->set_cached_substeps(snapshot.factor_substeps);
+    body_->forget_kept();
     body_->set_contact_factorization(f);
     state_ = s;
     works_ = snapshot.works;

@@ -7,9 +7,11 @@
 // machine whose speed drifts between runs), that factor's flops, nonzeros and kernel, the
 // solve's counts (held solves over the timed substeps too) and the peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
-//                         [DIMENSION [TOP [GAP [STEP]]]]
+//                         [DIMENSION [TOP [GAP [STEP [SAVE]]]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
-// initial gap (0; a large one lifts the body), STEP the communication step (1e-5 s).
+// initial gap (0; a large one lifts the body), STEP the communication step (1e-5 s); SAVE 1
+// saves a state before each step (untimed), as an importer that can go back a step does:
+// what the contact solve keeps from step to step goes at each (Body::forget_kept).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
     if (argc > 6) p.dimension = std::atoi(argv[6]);
     const double top = argc > 7 ? std::atof(argv[7]) : -5e-6, velocity = 20;
     const double step = argc > 9 ? std::atof(argv[9]) : 1e-5;
+    const bool save = argc > 10 && std::atoi(argv[10]) != 0;
     if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
@@ -82,6 +85,7 @@ int main(int argc, char** argv) {
     int iterations = 0;
     double stepping = 0, solving = 0;
     for (int k = 0; k < steps; ++k) {
+        if (save) sim.snapshot();
         t0 = Clock::now();
         sim.do_step(step, in);
         stepping += seconds_since(t0);

@@ -6,8 +6,9 @@ beta = 4e-6 s, 1e-6 s substeps) from the static start. Per N and body, in a proc
 substeps after the first step: sliding, past the start's changes of pattern), one sparse solve
 of the same body (its floor, timed beside the substeps in the same process), the contact
 solve's counts and the process's peak memory. Communication steps of 1e-5 s (10 substeps);
-from --gcr-min nodes on also of 1e-4 s (GCR's kept directions are dropped at each step, so
-that a restored state replays: a longer step keeps them longer). Each case runs --repeat times, the cases in
+from --gcr-min nodes on also with a state saved before each step, as an importer that can go
+back a step does (what the contact solve keeps from step to step, GCR's directions above all,
+goes where a state is saved, so that a restored one replays). Each case runs --repeat times, the cases in
 turn, and a row gives the median of its runs' times (each run's are kept): this machine's speed
 drifts by 2-4x between runs, and a doubling's ratio compares two processes. The counts must
 agree between runs (the solve is deterministic). The full body as the FMU takes it (the cost
@@ -35,8 +36,8 @@ CONTACT_LENGTH = 0.066  # m: the two contact faces of an 80 mm pad with 4 mm cha
 SCENE = {"initial_state": 1, "friction_coefficient": 0.3, "damping_stiffness": 4e-6,
          "internal_step": 1e-6, "foundation_velocity": 20.0, "top_displacement": -5e-6}
 SUBSTEPS = 300
-STEP = 1e-5  # s: the communication step (GCR's kept directions are dropped at each)
-LONG_STEP = 1e-4
+STEP = 1e-5  # s: the communication step
+SAVED = "full, a state saved each step"
 TIMES = ("static_start_seconds", "substep_seconds", "sparse_solve_seconds", "substep_per_solve")
 
 
@@ -47,11 +48,11 @@ def pad_mesh(folder, n):
 
 
 def measure(build, mesh, modes, path, substeps=SUBSTEPS, friction=SCENE["friction_coefficient"],
-            step=STEP):
+            save=False):
     """One case in a process of its own: bench_contact_scaling's JSON."""
     out = subprocess.run([str(build / "bench_contact_scaling"), str(mesh), str(modes), path,
                           str(substeps), repr(friction), "2", repr(SCENE["top_displacement"]), "0",
-                          repr(step)], capture_output=True, text=True, check=True)
+                          repr(STEP), str(int(save))], capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
 
 
@@ -75,17 +76,17 @@ def main():
         cases = []
         for n in args.counts:
             mesh = pad_mesh(tmp, n)
-            cases.append((n, "full", mesh, 0, "automatic", STEP))
+            cases.append((n, "full", mesh, 0, "automatic", False))
             if n >= args.gcr_min:
-                cases.append((n, "full, slips by GCR", mesh, 0, "sparse_gcr", STEP))
-                cases.append((n, "full, 1e-4 s steps", mesh, 0, "automatic", LONG_STEP))
+                cases.append((n, "full, slips by GCR", mesh, 0, "sparse_gcr", False))
+                cases.append((n, SAVED, mesh, 0, "automatic", True))
             if n <= args.condensed_max:
-                cases.append((n, "full, condensed", mesh, 0, "condensed", STEP))
+                cases.append((n, "full, condensed", mesh, 0, "condensed", False))
             if n <= args.reduced_max:
-                cases.append((n, "reduced", mesh, 40, "automatic", STEP))
+                cases.append((n, "reduced", mesh, 40, "automatic", False))
         for _ in range(args.repeat):
-            for n, body, mesh, modes, path, step in cases:
-                r = measure(args.build, mesh, modes, path, step=step)
+            for n, body, mesh, modes, path, save in cases:
+                r = measure(args.build, mesh, modes, path, save=save)
                 print(json.dumps({"requested": n, "body": body, **r}), flush=True)
                 runs.setdefault((n, body), []).append(r)
     rows = []
@@ -103,7 +104,7 @@ def main():
 
 def write(rows, repeat):
     """The ratios between rows, then contact_scaling.json and .md."""
-    for body in ("full", "full, 1e-4 s steps"):
+    for body in ("full", SAVED):
         same = [r for r in rows if r["body"] == body]
         for a, b in zip(same, same[1:]):
             b["substep_ratio_to_previous"] = b["substep_seconds"] / a["substep_seconds"]
@@ -128,8 +129,9 @@ def write(rows, repeat):
              f"of {repeat} runs; a sparse solve timed beside the substeps in each) and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
              "FMU takes it (the sparse contact solve from about 100 contact nodes on), with communication "
-             "steps of 1e-5 s (10 substeps), *1e-4 s steps* the same with steps of 1e-4 s (GCR's kept "
-             "directions are dropped at each step), *condensed* "
+             "steps of 1e-5 s (10 substeps), *a state saved each step* the same with a state saved "
+             "before each step (what the contact solve keeps from step to step, GCR's directions "
+             "above all, goes where a state is saved), *condensed* "
              "the solve it had before, *slips by GCR* the sparse solve without its factor's slipping "
              "rows (as it was before them), *reduced* the reduced body (40 modes). The static start's load "
              "paths take the cost model's solve in every row.", "",

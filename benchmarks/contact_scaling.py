@@ -18,10 +18,14 @@ friction left to GCR instead of its factor's slipping rows (from --gcr-min nodes
 solve as it was before those rows), and the reduced body (40 modes, up to --reduced-max:
 2.5 GB at 1,586).
 
-Writes benchmarks/results/contact_scaling.json and contact_scaling.md.
+Writes benchmarks/results/contact_scaling.json and contact_scaling.md (--output names
+others: `--substeps 1000 --output contact_scaling_long --condensed-max 0 --reduced-max 0
+--gcr-min 100000` measures the full body's substep over 1,000 substeps, past the transient
+that a longer contact edge still has at 300).
 
     .venv/bin/python benchmarks/contact_scaling.py [--counts 101 ... 3201] [--build DIR]
-                                                   [--repeat 3] [--analyze-only]
+                                                   [--repeat 3] [--substeps 300] [--output NAME]
+                                                   [--analyze-only]
 """
 import argparse
 import json
@@ -62,14 +66,17 @@ def main():
     parser.add_argument("--condensed-max", type=int, default=801)
     parser.add_argument("--reduced-max", type=int, default=801)
     parser.add_argument("--gcr-min", type=int, default=401)
+    parser.add_argument("--saved-min", type=int, default=401)
+    parser.add_argument("--substeps", type=int, default=SUBSTEPS)
+    parser.add_argument("--output", default="contact_scaling")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     parser.add_argument("--analyze-only", action="store_true",
                         help="derive the ratios and tables again from the results file")
     args = parser.parse_args()
     if args.analyze_only:
-        saved = json.loads((OUT / "contact_scaling.json").read_text())
-        write(saved["rows"], saved["repeat"])
+        saved = json.loads((OUT / f"{args.output}.json").read_text())
+        write(saved["rows"], saved["repeat"], saved["substeps"], args.output)
         return
     runs = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -79,6 +86,7 @@ def main():
             cases.append((n, "full", mesh, 0, "automatic", False))
             if n >= args.gcr_min:
                 cases.append((n, "full, slips by GCR", mesh, 0, "sparse_gcr", False))
+            if n >= args.saved_min:
                 cases.append((n, SAVED, mesh, 0, "automatic", True))
             if n <= args.condensed_max:
                 cases.append((n, "full, condensed", mesh, 0, "condensed", False))
@@ -86,7 +94,7 @@ def main():
                 cases.append((n, "reduced", mesh, 40, "automatic", False))
         for _ in range(args.repeat):
             for n, body, mesh, modes, path, save in cases:
-                r = measure(args.build, mesh, modes, path, save=save)
+                r = measure(args.build, mesh, modes, path, args.substeps, save=save)
                 print(json.dumps({"requested": n, "body": body, **r}), flush=True)
                 runs.setdefault((n, body), []).append(r)
     rows = []
@@ -99,10 +107,10 @@ def main():
             row[key + "_runs"] = [m[key] for m in measured]
             row[key] = statistics.median(row[key + "_runs"])
         rows.append(row)
-    write(rows, args.repeat)
+    write(rows, args.repeat, args.substeps, args.output)
 
 
-def write(rows, repeat):
+def write(rows, repeat, substeps, output):
     """The ratios between rows, then contact_scaling.json and .md."""
     for body in ("full", SAVED):
         same = [r for r in rows if r["body"] == body]
@@ -121,11 +129,12 @@ def write(rows, repeat):
             r["gcr_substep_ratio"] = gcr[0]["substep_seconds"] / r["substep_seconds"]
             r["gcr_held_solves_ratio"] = gcr[0]["held_solves"] / r["held_solves"]
     OUT.mkdir(parents=True, exist_ok=True)
-    (OUT / "contact_scaling.json").write_text(json.dumps({"scene": SCENE, "substeps": SUBSTEPS, "repeat": repeat,
+    (OUT / f"{output}.json").write_text(json.dumps({"scene": SCENE, "substeps": substeps, "repeat": repeat,
                                                          "rows": rows}, indent=1))
     lines = ["# What a refined contact boundary costs", "",
-             "`.venv/bin/python benchmarks/contact_scaling.py`: the pad, damped sliding at 20 m/s "
-             "(F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall times (the median "
+             f"`.venv/bin/python benchmarks/contact_scaling.py` ({substeps} substeps): the pad, damped "
+             "sliding at 20 m/s (F = 0.3, β = 4e-6 s, 1e-6 s substeps) from the static start; wall "
+             "times (the median "
              f"of {repeat} runs; a sparse solve timed beside the substeps in each) and the "
              "process's peak memory, each case in a process of its own. *full* is the body as the "
              "FMU takes it (the sparse contact solve from about 100 contact nodes on), with communication "
@@ -149,7 +158,7 @@ def write(rows, repeat):
             f"{1e3 * r['sparse_solve_seconds']:.3g} | {r['substep_per_solve']:.1f} | "
             f"{'' if work is None else f'{work:.1f}'} | "
             f"{'' if solves is None else f'{solves:.1f}'} | {r['peak_memory_mb']:.0f} |")
-    (OUT / "contact_scaling.md").write_text("\n".join(lines) + "\n")
+    (OUT / f"{output}.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 

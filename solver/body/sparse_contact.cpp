@@ -346,8 +346,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // unheld factor (the 12.6k hemisphere: 4 refactorizations before, none now, the same
     // state). A factor held at a pattern was made for it, and patterns last there (sliding):
     // renting on it made 3D sliding refactor later and solve more. The detours' count
-    // restarts with each factor and each communication step (forget), so that a restored
-    // state replays.
+    // restarts with each factor and where a state is saved or restored (forget), so that a
+    // restored state replays.
     const double refactorization = K.refactorization_in_solves();
     const bool costly = refactorization > max_directions &&
                         std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });

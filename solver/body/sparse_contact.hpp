@@ -117,9 +117,10 @@ class SparseContactSolver {
 public:
     // Solves K w = rhs + B^T lambda with the contact conditions of `problem` (its gap limits,
     // slip origins and friction coefficients; its W and a are not used), from the multipliers
-    // of the last substep in lambda and its stick memory `sticking` (the first pattern: so the
-    // result depends on the State and K's held set; with fresh_factor, K is first held at that
-    // pattern and the kept directions dropped). Throws ContactSolveError where Newton or GCR
+    // of the last substep in lambda and its stick memory `sticking` (the first pattern, but
+    // where a node chattered over the last solves: so the result depends on the State, K's
+    // held set and what the solver kept since forget(); with fresh_factor, K is first held at
+    // that pattern and all that is dropped). Throws ContactSolveError where Newton or GCR
     // fail.
     // B: N_i = -e_y(i), T_i = +e_x(i) (the full stepper's).
     ContactSolveInfo solve(HeldOperator& K, const ContactProblem& problem,

@@ -6,7 +6,7 @@ beta = 4e-6 s, 1e-6 s substeps) from the static start. Per N and body, in a proc
 substeps after the first step: sliding, past the start's changes of pattern), one sparse solve
 of the same body (its floor, timed beside the substeps in the same process), the contact
 solve's counts and the process's peak memory. Communication steps of 1e-5 s (10 substeps);
-from --gcr-min nodes on also with a state saved before each step, as an importer that can go
+from --saved-min nodes on also with a state saved before each step, as an importer that can go
 back a step does (what the contact solve keeps from step to step, GCR's directions above all,
 goes where a state is saved, so that a restored one replays). Each case runs --repeat times, the cases in
 turn, and a row gives the median of its runs' times (each run's are kept): this machine's speed

@@ -91,8 +91,8 @@ TEST_P(SparseAgainstCondensed, SameSolutions) {
 
 // The held factor's set and the kept GCR directions (and the last patterns) decide a sparse
 // solve's last bits: a saved state keeps the one, saving or restoring a state drops the
-// other, and a new factor starts at the state's own. So a restored state replays bit for bit in another simulation, and a
-// restarted one computes a new one's bits.
+// other, and a new factor starts at the state's own. So a restored state replays bit for bit
+// in another simulation, and a restarted one computes a new one's bits.
 TEST(SparseContactSolve, ReplaysBitForBit) {
     SceneParameters p;
     p.nx = p.ny = 12;

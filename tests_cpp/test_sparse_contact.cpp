@@ -206,6 +206,48 @@ TEST(PatternLu, SolvesAMatrixOfSymmetricPatternInAGivenOrder) {
     EXPECT_FALSE(lu.factor(singular.valuePtr()));
 }
 
+// Factoring again after a few values changed redoes only their columns and the columns above
+// them in the elimination tree, and gives the bits that factoring all of them gives; after a
+// factor that failed, all columns are factored again.
+TEST(PatternLu, FactorsAgainOnlyWhatTheChangedValuesReach) {
+    const int n = 400;  // a path graph in natural order: column j's ancestors are j + 1, ...
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i) {
+        entries.emplace_back(i, i, 4 + std::sin(i));
+        if (i + 1 < n) entries.emplace_back(i, i + 1, std::cos(i)), entries.emplace_back(i + 1, i, std::sin(2 * i));
+    }
+    SparseMatrix A(n, n);
+    A.setFromTriplets(entries.begin(), entries.end());
+    A.makeCompressed();
+    std::vector<int> position(n);
+    for (int i = 0; i < n; ++i) position[static_cast<size_t>(i)] = i;
+    PatternLu lu(A, position);
+    ASSERT_TRUE(lu.factor(A.valuePtr()));
+    EXPECT_EQ(lu.columns_factored(), n);
+    ASSERT_TRUE(lu.factor(A.valuePtr()));
+    EXPECT_EQ(lu.columns_factored(), 0);
+    SparseMatrix changed = A;
+    changed.coeffRef(n - 10, n - 11) *= 1.5;  // column n - 11 of A: it and the 10 after it
+    ASSERT_TRUE(lu.factor(changed.valuePtr()));
+    EXPECT_EQ(lu.columns_factored(), 11);
+    PatternLu fresh(A, position);
+    ASSERT_TRUE(fresh.factor(changed.valuePtr()));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1, 2);
+    Eigen::VectorXd x, y;
+    lu.solve(b, x);
+    fresh.solve(b, y);
+    EXPECT_EQ(x, y);
+    SparseMatrix singular = changed;
+    singular.coeffRef(n - 1, n - 1) = 0;  // the last pivot: L and U all made before it fails
+    singular.coeffRef(n - 1, n - 2) = 0;
+    singular.coeffRef(n - 2, n - 1) = 0;
+    EXPECT_FALSE(lu.factor(singular.valuePtr()));
+    ASSERT_TRUE(lu.factor(changed.valuePtr()));
+    EXPECT_EQ(lu.columns_factored(), n);
+    lu.solve(b, x);
+    EXPECT_EQ(x, y);
+}
+
 // The held operator with slipping rows: a held solve satisfies every equation of its system,
 // K's rows where free, the held values, and r_x = sf r_y on each slipping node (r = K x - b),
 // which is what the sparse contact solve reads of it.

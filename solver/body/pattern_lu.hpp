@@ -21,8 +21,11 @@ public:
     PatternLu(const SparseMatrix& pattern, const std::vector<int>& position);
     // Factors the matrix whose values (in pattern's order) are given. False where a pivot is
     // not above 1e-12 times the largest entry of its column (no pivoting: then another
-    // factor is wanted).
+    // factor is wanted). After a factor that succeeded, only the columns whose values changed
+    // and their ancestors in the elimination tree are factored again: the others' columns of
+    // L and U depend on nothing that changed (the same bits as factoring all).
     bool factor(const double* values);
+    Eigen::Index columns_factored() const { return columns_factored_; }  // by the last factor()
     // x = A^-1 b (b and x may not alias). Allocates nothing.
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
@@ -34,6 +37,11 @@ private:
     // same place. across_: per row j, the places of its entries L(j, k), k < j ascending.
     std::vector<int> start_, rows_, column_of_, across_start_, across_;
     std::vector<char> paired_;  // column k solved with k + 1 (solve)
+    std::vector<int> parent_;   // the elimination tree (-1 at a root)
+    std::vector<double> factored_;  // the values last factored, by P A P^T's columns
+    std::vector<char> stale_;       // per column: to factor again
+    bool factored_all_ = false;     // the last factor succeeded: factored_ is its values
+    Eigen::Index columns_factored_ = 0;
     std::vector<double> lower_, upper_, diagonal_;
     Eigen::VectorXd work_;
 };

@@ -514,6 +514,12 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                                         double tolerance, int max_iterations, bool detour) {
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
+    // A Newton iteration after the first on the factor of the last (the same right-hand side
+    // and targets) starts from the last one's solution: the unknowns coupled there stay
+    // coupled, held to their values or unloaded where the pattern no longer couples them, and
+    // GCR moves them there, most often in the kept directions, instead of a held solve of
+    // the new guesses (one held solve fewer for each Newton iteration after the first).
+    const bool warm = newton_iteration_ > 1 && last_operator_ == &K && last_refactorizations_ == K.refactorizations();
     // The unknowns: what the pattern asks that the factor's held set does not give.
     coupling_.clear();
     for (Eigen::Index j = 0; j < m; ++j) {
@@ -530,6 +536,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
         else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
         else if (!wants && sf != factor_slip(K, j, n)) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
+        else if (warm && !std::isnan(last_xi_[j]))  // coupled at the last iteration: held to its value, or unloaded
+            coupling_.push_back({static_cast<int>(j), has ? value : load, has ? 0.0 : sf, has, -1});
     }
     for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
     for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
@@ -540,21 +548,30 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 c.partner = coupling_of_[static_cast<size_t>(c.unknown < 2 * n ? 2 * n + i : n + i)];
         }
     }
-    // Their first values from the iterate's multipliers (a held value from rest).
+    // Their first values from the iterate's multipliers (a held value from rest); warm, the
+    // last iteration's (its solution is theirs: no held solve).
     const Eigen::Index q = static_cast<Eigen::Index>(coupling_.size());
     double force_scale = scale;
     for (Eigen::Index k = 0; k < q; ++k) {
         const Coupling& c = coupling_[static_cast<size_t>(k)];
         const Eigen::Index i = c.unknown % n;
         double guess = 0;  // the reaction wanted, less what the factor's slipping row gives
-        if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
+        if (warm) guess = std::isnan(last_xi_[c.unknown]) ? (c.kind == value ? targets_[c.unknown] * K.stiffness(c.unknown) : 0.0)
+                                                          : last_xi_[c.unknown];
+        else if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
         else if (c.kind == load) guess = c.sf * -lambda_trial_[i];
-        if (c.kind == load) guess -= factor_slip(K, c.unknown, n) * -lambda_trial_[i];
+        if (c.kind == load && !warm) guess -= factor_slip(K, c.unknown, n) * -lambda_trial_[i];
         xi_[k] = guess;
-        force_scale = std::max(force_scale, std::abs(guess));
+        if (c.kind == load) force_scale = std::max(force_scale, std::abs(guess));
     }
-    held_solve(K, rhs, true, xi_, w_new_);
-    combined_ = 0;
+    if (warm) {
+        ++warm_starts_;
+        w_new_ = last_w_;
+        combined_ = last_combined_;
+    } else {
+        held_solve(K, rhs, true, xi_, w_new_);
+        combined_ = 0;
+    }
     if (q > 0) {
         auto r = krylov_residual_.head(q);
         auto response = response_.head(3 * q);
@@ -573,7 +590,10 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         // its image is made again without a solve, and the images orthonormalized again.
         // The directions stay as made; combinations_ says which of them each orthonormal
         // image's direction is.
-        const bool same_pattern = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_;
+        // (The same pattern couples the same unknowns, but where a warm start kept some.)
+        bool same_pattern = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_ &&
+                            kept_unknowns_.size() == coupling_.size();
+        for (size_t k = 0; k < coupling_.size() && same_pattern; ++k) same_pattern = kept_unknowns_[k] == coupling_[k].unknown;
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) {
             kept_ = parked_ = 0;
             kept_operator_ = &K;
@@ -589,6 +609,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             remake_images(K, p, 0);
         }
         kept_pattern_ = pattern_;
+        kept_unknowns_.resize(coupling_.size());
+        for (size_t k = 0; k < coupling_.size(); ++k) kept_unknowns_[k] = coupling_[k].unknown;
         kept_friction_ = p.friction;
         kept_direction_ = direction_;
         kept_ratio_ = ratio_;
@@ -668,6 +690,14 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             ++rounds_;
         }
     }
+    // What the next Newton iteration starts from on this factor (solve: the same right-hand
+    // side and targets).
+    last_xi_.setConstant(std::numeric_limits<double>::quiet_NaN());
+    for (Eigen::Index k = 0; k < q; ++k) last_xi_[coupling_[static_cast<size_t>(k)].unknown] = xi_[k];
+    last_w_ = w_new_;
+    last_combined_ = combined_;
+    last_operator_ = &K;
+    last_refactorizations_ = K.refactorizations();
     return true;
 }
 
@@ -687,11 +717,13 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     const Eigen::Index m2 = K.unknowns();
     held_.resize(static_cast<size_t>(m2));
     coupling_.reserve(static_cast<size_t>(m2));
+    kept_unknowns_.reserve(static_cast<size_t>(m2));
     values_.resize(m2);
     targets_.resize(m2);
     xi_.resize(m2);
     krylov_residual_.resize(m2);
-    for (Eigen::VectorXd* v : {&w, &w_new_, &w_trial_, &b_, &z_}) v->resize(nf);
+    for (Eigen::VectorXd* v : {&w, &w_new_, &w_trial_, &b_, &z_, &last_w_}) v->resize(nf);
+    last_xi_.resize(m2);
     for (Eigen::VectorXd* v : {&lambda_new_, &lambda_trial_}) v->resize(m);
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
@@ -757,7 +789,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                 << options.tolerance << ")";
             throw ContactSolveError(msg.str());
         }
-        ++info.iterations;
+        newton_iteration_ = ++info.iterations;
         if (isotropic(p)) {  // the iterate's rho (I - t t^T) q0 (equations)
             for (Eigen::Index i = 0; i < n; ++i) {
                 const double rT = tangential_stiffness(K, n, i);

@@ -129,12 +129,18 @@ public:
                            Eigen::VectorXd& w, bool fresh_factor);
     // Drops what the solver keeps from solve to solve (GCR's directions, the last patterns:
     // they make a solve faster, and change its last bits).
-    void forget() { history_ = 0; kept_ = parked_ = 0; kept_operator_ = nullptr; detour_solves_ = 0; }
+    void forget() {
+        history_ = 0;
+        kept_ = parked_ = 0;
+        kept_operator_ = last_operator_ = nullptr;
+        detour_solves_ = 0;
+    }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life
     long krylov_iterations() const { return krylov_iterations_; }
     long gcr_rounds() const { return rounds_; }  // GCR's rounds after the first (solve_coupled)
+    long warm_starts() const { return warm_starts_; }  // Newton iterations without a held solve of their own
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
     // More dofs differing from the factor's held set than this: refactor to the pattern's,
@@ -223,15 +229,23 @@ private:
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
     int kept_ = 0, parked_ = 0;  // parked_: eliminate_uncoupled's, in the last slots
     Pattern kept_pattern_;
+    std::vector<int> kept_unknowns_;  // the coupled unknowns the images are of
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
     // Held solves made on the current factor for patterns it does not hold (solve_pattern).
     long detour_solves_ = 0;
+    // The last solve_coupled's result on its factor: the coupled unknowns' values (NaN where
+    // not coupled), its solution and the sizes combined into it; this solve's Newton iteration.
+    Eigen::VectorXd last_xi_, last_w_;
+    double last_combined_ = 0;
+    const HeldOperator* last_operator_ = nullptr;
+    long last_refactorizations_ = -1;
+    int newton_iteration_ = 0;
     // The last three solves' final patterns (the latest first), history_ of them valid.
     Pattern last_patterns_[3];
     int history_ = 0;
-    long solves_ = 0, krylov_iterations_ = 0, rounds_ = 0;
+    long solves_ = 0, krylov_iterations_ = 0, rounds_ = 0, warm_starts_ = 0;
 };
 
 }  // namespace contactbody

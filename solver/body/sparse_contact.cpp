@@ -590,21 +590,21 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         // its image is made again without a solve, and the images orthonormalized again.
         // The directions stay as made; combinations_ says which of them each orthonormal
         // image's direction is.
-        // (The same pattern couples the same unknowns, but where a warm start kept some.)
-        bool same_pattern = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_ &&
-                            kept_unknowns_.size() == coupling_.size();
-        for (size_t k = 0; k < coupling_.size() && same_pattern; ++k) same_pattern = kept_unknowns_[k] == coupling_[k].unknown;
+        // The same pattern couples the same unknowns, but where a warm start kept some: both.
+        bool same_coupling = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_ &&
+                             kept_unknowns_.size() == coupling_.size();
+        for (size_t k = 0; k < coupling_.size() && same_coupling; ++k) same_coupling = kept_unknowns_[k] == coupling_[k].unknown;
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) {
             kept_ = parked_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
-        } else if (!same_pattern || kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
+        } else if (!same_coupling || kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
                    kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
                    kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
             // The unknowns follow the pattern and, where the factor holds slipping rows, the
             // friction too (a node slipping with the static coefficient is coupled, with the
             // kinetic one not): entries at unknowns no longer coupled go first.
-            if (!same_pattern) unpark();
+            if (!same_coupling) unpark();
             eliminate_uncoupled();
             remake_images(K, p, 0);
         }

@@ -37,10 +37,12 @@ def write(gmsh, path, version="4.1", binary=False):
     return path
 
 
-def rectangle(path, width=0.1, height=0.1, nx=20, ny=20, shift=(0.0, 0.0), version="4.1"):
+def rectangle(path, width=0.1, height=0.1, nx=20, ny=20, shift=(0.0, 0.0), version="4.1",
+              clamp_right=False):
     """The FMU's own rectangle (solver/mesh/mesh.cpp: nodes numbered row by row from the bottom,
     cells split as GetFEM's regular simplices), moved by `shift`, as a Gmsh file: bottom edge
-    "contact", top edge "clamp". Given to `mesh`, it is the body of mesh = "" (shift (0, 0))."""
+    "contact", top edge "clamp". Given to `mesh`, it is the body of mesh = "" (shift (0, 0)).
+    `clamp_right`: the right edge is the clamp's too (a clamp that spans several heights)."""
     node = lambda i, j: j * (nx + 1) + i + 1  # Gmsh tags from 1
     coords, tris = [], []
     for j in range(ny + 1):
@@ -51,8 +53,9 @@ def rectangle(path, width=0.1, height=0.1, nx=20, ny=20, shift=(0.0, 0.0), versi
             n00, n10, n01, n11 = node(i, j), node(i + 1, j), node(i, j + 1), node(i + 1, j + 1)
             tris += [n00, n10, n11, n00, n11, n01] if (i + j) % 2 == 0 else [n00, n10, n01, n10, n11, n01]
     lines = lambda j: [t for i in range(nx) for t in (node(i, j), node(i + 1, j))]
+    right = [t for j in range(ny) for t in (node(nx, j), node(nx, j + 1))] if clamp_right else []
     with session("rectangle") as gmsh:
-        discrete_mesh(gmsh, coords, tris, {"contact": lines(0), "clamp": lines(ny)})
+        discrete_mesh(gmsh, coords, tris, {"contact": lines(0), "clamp": lines(ny) + right})
         return write(gmsh, path, version)
 
 

@@ -367,8 +367,13 @@ def test_a_byte_order_mark_and_nul_bytes_are_shown(tmp_path, unzipped_fmu):
     text = path.read_bytes()
     path.write_bytes(b"\xef\xbb\xbf" + text)
     refused({"mesh": str(path)}, unzipped_fmu, "line 1: the file starts with a UTF-8 byte-order mark")
+    # A NUL byte is refused as the file is read, with its line (an ASCII file holds none).
     path.write_bytes(text.replace(b"$EndMeshFormat", b"$End\0MeshFormat"))
-    refused({"mesh": str(path)}, unzipped_fmu, 'found "$End\\x00MeshFormat"')
+    byte = text.index(b"$EndMeshFormat") + 4
+    refused({"mesh": str(path)}, unzipped_fmu, f"line 3: byte {byte} is a NUL byte (\\x00)")
+    # Another control byte is shown escaped in the token quoted.
+    path.write_bytes(text.replace(b"$EndMeshFormat", b"$End\x01MeshFormat"))
+    refused({"mesh": str(path)}, unzipped_fmu, 'found "$End\\x01MeshFormat"')
 
 
 def test_a_clamp_below_the_contact_group_is_refused(tmp_path, unzipped_fmu):
@@ -685,3 +690,99 @@ def test_a_configured_copy_carries_its_mesh(tmp_path):
     path.unlink()  # the copy needs the original no more
     again = run({}, fmu=copy)
     assert all(np.array_equal(again[n], direct[n]) for n in OUTPUTS)
+
+
+# ---- outside checks: numbers, groups and blocks that were read wrong or named wrong ----
+
+@pytest.mark.parametrize("version", ["4.1", "2.2"])
+@pytest.mark.parametrize("token", ["+-1", "+-1e-3", "-+1", "++1", "--1", "1e", "+"])
+def test_every_malformed_number_is_refused_as_written(tmp_path, unzipped_fmu, version, token):
+    """'+-1' was read as -1 (one contact node instead of 36 on a block); '++1' was refused
+    quoting "+1"."""
+    path = meshes.rectangle(tmp_path / "numbers.msh", nx=4, ny=4, version=version)
+    lines = path.read_text().splitlines()
+    at = next(k for k, l in enumerate(lines) if l.split()[-3:] == ["0.1", "0", "0"] or
+              l.split()[-3:] == ["0.1", "0.0", "0.0"])
+    fields = lines[at].split()
+    fields[-2] = token  # the node's y
+    lines[at] = " ".join(fields)
+    path.write_text("\n".join(lines) + "\n")
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {at + 1}: a node's y must be a number (got \"{token}\")")
+
+
+def test_a_number_with_one_plus_sign_is_read(tmp_path):
+    """'+0.1' is a number (from_chars takes no '+': the reader skips one)."""
+    path = meshes.rectangle(tmp_path / "plus.msh", nx=4, ny=4, version="2.2")
+    text = path.read_text()
+    lines = text.splitlines()
+    start, end = lines.index("$Nodes") + 2, lines.index("$EndNodes")
+    for k in range(start, end):
+        tag, x, y, z = lines[k].split()
+        lines[k] = f"{tag} +{x} {y} {z}"
+    path.write_text("\n".join(lines) + "\n")
+    twin = meshes.rectangle(tmp_path / "twin.msh", nx=4, ny=4, version="2.2")
+    a, b = run({"mesh": str(path)}, 2e-4, 1e-4), run({"mesh": str(twin)}, 2e-4, 1e-4)
+    assert relative_difference(a, b) == 0
+
+
+@pytest.mark.parametrize("kind, what", [("points", "point"), ("surface", "triangle")])
+def test_a_clamp_that_is_no_group_of_lines_is_refused(tmp_path, unzipped_fmu, kind, what):
+    """A 2D clamp of points held only those nodes, silently; a clamp surface group said 'every
+    node of the contact group is also the clamp's'. A contact group of surfaces was refused
+    clearly: the clamp is held to the same rule."""
+    with meshes.session("clamp_kind") as gmsh:
+        meshes.discrete_mesh(gmsh, SQUARE, [1, 2, 3, 1, 3, 4], {"contact": [1, 2]})
+        if kind == "points":
+            for n in (3, 4):
+                point = gmsh.model.addDiscreteEntity(0)
+                gmsh.model.mesh.addNodes(0, point, [], [])
+                gmsh.model.mesh.addElementsByType(point, 15, [], [n])
+            gmsh.model.addPhysicalGroup(0, [t for _, t in gmsh.model.getEntities(0)], name="clamp")
+        else:
+            gmsh.model.addPhysicalGroup(2, [gmsh.model.getEntities(2)[0][1]], name="clamp")
+        path = meshes.write(gmsh, tmp_path / "clamp_kind.msh")
+    refused({"mesh": str(path)}, unzipped_fmu, f'the physical group "clamp" holds {what}',
+            "it must be a group of boundary lines (dimension 1)")
+
+
+def test_a_negative_node_tag_is_named_at_its_line(tmp_path, unzipped_fmu):
+    """MSH 2.2: node tag -1 was reported at the first element that uses node 1."""
+    with meshes.session("negative") as gmsh:
+        meshes.discrete_mesh(gmsh, SQUARE, [1, 2, 3, 1, 3, 4], {"contact": [1, 2], "clamp": [3, 4]})
+        path = meshes.write(gmsh, tmp_path / "negative.msh", version="2.2")
+    lines = path.read_text().splitlines()
+    at = lines.index("$Nodes") + 2
+    assert lines[at].startswith("1 ")
+    lines[at] = "-1" + lines[at][1:]
+    path.write_text("\n".join(lines) + "\n")
+    refused({"mesh": str(path)}, unzipped_fmu, f"line {at + 1}: node tag -1: Gmsh's node tags are positive")
+
+
+def test_a_block_shorter_than_its_header_says_so(tmp_path, unzipped_fmu):
+    """MSH 4.1, one element line deleted: 'an element tag must be a whole number (got
+    "$EndElements")'."""
+    path = meshes.rectangle(tmp_path / "short.msh", nx=4, ny=4)
+    lines = path.read_text().splitlines()
+    end = lines.index("$EndElements")
+    del lines[end - 1]
+    path.write_text("\n".join(lines) + "\n")
+    refused({"mesh": str(path)}, unzipped_fmu, 'the section ends ("$EndElements") where an element',
+            "holds fewer entries than its header declares")
+
+
+def test_nul_bytes_after_a_valid_header_are_refused_at_once(tmp_path):
+    """A valid header followed by 600 MiB of NUL bytes was refused after 6 s (here 64 MiB, in a
+    process of its own with a deadline)."""
+    import subprocess
+    import sys
+    path = square_mesh(tmp_path, "nul", SQUARE, [1, 2, 3, 1, 3, 4])
+    head = path.read_bytes()
+    head = head[:head.index(b"$Nodes") + len(b"$Nodes\n")]
+    with open(path, "wb") as f:
+        f.write(head)
+        f.truncate(len(head) + (64 << 20))  # the rest reads as NUL bytes
+    result = subprocess.run([sys.executable, "-c", REFUSE_IN_A_PROCESS, str(FMU), str(path)],
+                            capture_output=True, text=True, timeout=60)
+    seconds, _, message = result.stdout.strip().partition(" ")
+    assert "is a NUL byte" in message, result.stdout + result.stderr
+    assert float(seconds) < 0.5, f"refused after {seconds} s"

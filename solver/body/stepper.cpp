@@ -146,8 +146,15 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     const Mesh& mesh = d.mesh;
     s.u.setZero(mesh.num_dofs());
     s.v.setZero(mesh.num_dofs());
-    for (int n = 0; n < mesh.num_nodes(); ++n)
-        s.u[mesh.dof(n, Mesh::normal)] = top_displacement * (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
+    // u_y grows linearly from the contact to the clamp's highest node, and no further: a body
+    // reaching above its clamp moves rigidly with it there.
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+        const double height = (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
+        s.u[mesh.dof(n, Mesh::normal)] = top_displacement * std::clamp(height, 0.0, 1.0);
+    }
+    // The clamp starts where it is driven, at every height it spans (a side face too): the
+    // first substep would otherwise move it there at once, with work no one counts.
+    for (int n : mesh.top_nodes) s.u[mesh.dof(n, Mesh::normal)] = top_displacement;
     for (int dof : d.moving_dofs)
         s.v[dof] = mesh.component(dof) == 0 ? p.initial_velocity_x
                    : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : p.initial_velocity_z;

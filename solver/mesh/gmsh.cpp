@@ -53,7 +53,7 @@ public:
         return pos_ >= text_.size();
     }
     int line() const { return line_; }
-    std::string_view next(const char* what) {
+    std::string_view next(const char* what, bool limited = true) {
         if (at_end()) fail(std::string("the file ends where ") + what + " should be");
         if (text_[pos_] == '"') {
             const size_t close = text_.find('"', pos_ + 1);
@@ -63,11 +63,18 @@ public:
             return t;
         }
         const size_t start = pos_;
-        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+            // Judged before the rest of a damaged line is read (a file of NUL bytes is one token).
+            if (limited && pos_ - start == max_token)
+                fail(std::string("more than ") + std::to_string(max_token) + " bytes without a blank where " +
+                     what + " should be (\"" + shown(text_.substr(start, 16)) + "...\"): a damaged file");
+            ++pos_;
+        }
         return std::string_view(text_.data() + start, pos_ - start);
     }
     long integer(const char* what) {
         const std::string_view t = next(what);
+        section_end(t, what);
         long value = 0;
         const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
         if (error != std::errc() || stop != t.data() + t.size())
@@ -86,12 +93,15 @@ public:
     // A coordinate: any number the format can write, nan and inf included (checked later,
     // with the node's tag).
     double real(const char* what) {
-        std::string_view t = next(what);
-        if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);
+        const std::string_view token = next(what);
+        // from_chars takes no '+': one is skipped, if a digit or a point follows (not "+-1").
+        std::string_view t = token;
+        if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
+        section_end(token, what);
         double value = 0;
         const auto [stop, error] = std::from_chars(t.data(), t.data() + t.size(), value);
         if ((error != std::errc() && error != std::errc::result_out_of_range) || stop != t.data() + t.size())
-            fail(std::string(what) + " must be a number (got \"" + shown(t) + "\")");
+            fail(std::string(what) + " must be a number (got \"" + shown(token) + "\")");
         return value;
     }
     void expect(std::string_view word) {
@@ -102,11 +112,18 @@ public:
     // Past "$End<name>" (a section this reader does not need).
     void skip_section(std::string_view name) {
         const std::string end = "$End" + std::string(name.substr(1));
-        while (next(end.c_str()) != end) {
+        while (next(end.c_str(), false) != end) {
         }
     }
 
 private:
+    static constexpr size_t max_token = 4096;
+    // A section's end where a number should be: a block holds fewer entries than its header says.
+    void section_end(std::string_view t, const char* what) const {
+        if (t.size() > 4 && t.substr(0, 4) == "$End")
+            fail("the section ends (\"" + shown(t) + "\") where " + what + " should be: a block or "
+                 "the section holds fewer entries than its header declares (a damaged file)");
+    }
     void skip_blanks() {
         while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
             if (text_[pos_] == '\n') ++line_;
@@ -124,7 +141,9 @@ constexpr uint64_t max_bytes_per_node = 256;
 
 // The whole file, which must be a regular one (a FIFO or a device would block or never end)
 // of at most `max_bytes`; every failure names the file, at line 0 (the file as a whole).
-std::string read_whole_file(const std::string& path, uint64_t max_bytes) {
+// `nul`, where given, stops the reading at the first NUL byte (an ASCII MSH file holds none, a
+// damaged or binary one may end in gigabytes of them) and says where it was.
+std::string read_whole_file(const std::string& path, uint64_t max_bytes, size_t* nul = nullptr) {
     const auto fail = [&](const std::string& what) {
         Text msg;
         msg << "mesh " << path << ", line 0: " << what;
@@ -152,6 +171,11 @@ std::string read_whole_file(const std::string& path, uint64_t max_bytes) {
         size_t n;
         while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) {
             if (text.size() + n > max_bytes) too_large(text.size() + n);  // it grew
+            if (const char* at = nul ? static_cast<const char*>(std::memchr(buffer, 0, n)) : nullptr) {
+                text.append(buffer, static_cast<size_t>(at - buffer));
+                *nul = text.size();
+                return text;
+            }
             text.append(buffer, n);
         }
     } catch (const std::bad_alloc&) {
@@ -257,6 +281,7 @@ void read_entities(Tokens& in, Entities& entities) {
 }
 
 void add_node(Tokens& in, RawMesh& m, long tag, int line, long max_nodes) {
+    if (tag <= 0) in.fail("node tag " + std::to_string(tag) + ": Gmsh's node tags are positive", line);
     RawNode node;
     node.line = line;
     node.x = in.real("a node's x");
@@ -311,7 +336,10 @@ void read_nodes_41(Tokens& in, RawMesh& m, long max_nodes) {
         const long parametric = in.count("a node block's parametric flag", 1);
         const long n = in.count("a node block's number of nodes", max_count);
         std::vector<long> tags(static_cast<size_t>(n));
-        for (long& t : tags) t = in.integer("a node tag");
+        for (long& t : tags) {
+            t = in.integer("a node tag");
+            if (t <= 0) in.fail("node tag " + std::to_string(t) + ": Gmsh's node tags are positive");
+        }
         for (long t : tags) {
             in.at_end();
             const int line = in.line();
@@ -401,10 +429,28 @@ uint64_t max_file_bytes(long max_nodes) {
 }
 
 RawMesh read_raw(const std::string& path, long max_nodes) {
-    std::string text = read_whole_file(path, max_file_bytes(max_nodes));
+    size_t nul = std::string::npos;
+    std::string text = read_whole_file(path, max_file_bytes(max_nodes), &nul);
     const uint64_t file_digest = digest(text);
     const bool has_byte_order_mark = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    const int nul_line = nul == std::string::npos ? 0 : 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
     Tokens in(path, std::move(text));
+    if (nul != std::string::npos) {  // a binary file is named as such (below), else the NUL
+        Tokens header = in;
+        bool binary = false;
+        try {
+            header.expect("$MeshFormat");
+            header.next("the format's version");
+            binary = header.next("the format's file type") != "0";
+        } catch (const std::invalid_argument&) {
+        }
+        if (!binary) {
+            Text msg;
+            msg << "byte " << nul << " is a NUL byte (\\x00), which an ASCII MSH file never holds (a "
+                << "damaged file)";
+            in.fail(msg.str(), nul_line);
+        }
+    }
     if (in.at_end()) in.fail("the file is empty (a Gmsh MSH file starts with $MeshFormat)");
     if (has_byte_order_mark)
         in.fail("the file starts with a UTF-8 byte-order mark (the bytes EF BB BF, invisible in "
@@ -502,8 +548,10 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
                      n.line);
         }
         if (dim == 2 && n.z != 0)
-            fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) +
-                     ": a mesh of triangles (a 2D body) must lie in the x-y plane (z = 0)", n.line);
+            fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) + ", but the file "
+                     "holds no tetrahedra: a 2D body (triangles) must lie in the x-y plane (z = 0), and "
+                     "a 3D body needs its tetrahedra in the file (Gmsh saves only the elements of "
+                     "physical groups once any is defined: give the volume a physical group)", n.line);
     }
     // The groups' tags by name, per dimension.
     std::map<std::string, std::vector<std::pair<int, long>>> groups;
@@ -639,11 +687,15 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
             if (c) contact[static_cast<size_t>(n)] = 1;
             if (k) clamp[static_cast<size_t>(n)] = 1;
         }
-        if (c && e.dim != 0 && e.dim != dim - 1)
-            fail("the physical group \"contact\" holds " + std::string(kinds[e.dim]) + " " +
-                     std::to_string(e.tag) + ": it must be a group of boundary " + w.facet_dimension +
-                     ", not of " + kinds_of[e.dim],
-                 e.line);
+        // Both groups are boundary facets (a contact group may add points): a clamp of edges
+        // or corners would hold only those nodes, a volume group every node.
+        const bool facet = e.dim == dim - 1, point = e.dim == 0;
+        for (const auto& [name, wrong] : {std::pair{"contact", c && !facet && !point}, std::pair{"clamp", k && !facet}})
+            if (wrong)
+                fail("the physical group \"" + std::string(name) + "\" holds " + kinds[e.dim] + " " +
+                         std::to_string(e.tag) + ": it must be a group of boundary " + w.facet_dimension +
+                         ", not of " + kinds_of[e.dim],
+                     e.line);
         if (c && e.dim == dim - 1) contact_facets.insert(contact_facets.end(), nodes.begin(), nodes.end());
         contact_elements += c;
         clamp_elements += k;
@@ -685,10 +737,14 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         }
 
     finish_mesh(m, contact_facets);
-    if (!(m.clamp_height() > 0)) {
+    // Above by more than round-off of the body's size: a rotated mesh puts a clamp edge that
+    // lies on the contact face one ulp above it.
+    const double size = std::max({m.x_max - m.x_min, m.y_max - m.y_min, m.z_max - m.z_min});
+    if (!(m.clamp_height() > 1e-6 * size)) {
         Text msg;
         msg << "the clamp group's highest node (y = " << m.clamp_y << " m) is not above the contact "
-            << "group's lowest (y = " << m.contact_y << " m): the foundation lies below the contact "
+            << "group's lowest (y = " << m.contact_y << " m) by more than 1e-6 of the body's size ("
+            << size << " m): the foundation lies below the contact "
             << "group and the clamp drives the body from above (are \"contact\" and \"clamp\" "
             << "swapped?)";
         fail(msg.str(), 0);

@@ -57,6 +57,9 @@ struct Mesh {
     double clamp_height() const { return clamp_y - contact_y; }
     double edge_share(size_t i) const { return contact_shares[i]; }
     bool is_rectangle() const { return nx > 0; }
+    // Messages' units: a 2D body's energies and forces are per metre of thickness.
+    const char* energy_unit() const { return dim == 2 ? "J/m" : "J"; }
+    const char* force_unit() const { return dim == 2 ? "N/m" : "N"; }
 };
 
 // Cells split as GetFEM's "regular simplices": diagonal (i,j)-(i+1,j+1) when i+j is even,

@@ -194,7 +194,8 @@ void Simulation::static_initial_state(double top, double force) {
     if (!(force > 0))
         throw std::invalid_argument(
             "initial_state = static with top_control = force needs top_force > 0 at the start "
-            "(it is " + std::to_string(force) + " N/m): only the contact holds the body; use "
+            "(it is " + std::to_string(force) + " " + body_->discretization().mesh.force_unit() +
+            "): only the contact holds the body; use "
             "initial_state = paper for a body that starts free");
     const Discretization& d = path_body->discretization();
     const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
@@ -224,8 +225,9 @@ void Simulation::static_initial_state(double top, double force) {
             if (iteration == 100) {
                 Text msg;
                 msg << "initial_state = static: the clamp's displacement for top_force = " << force
-                    << " N/m was not found in 100 load paths (the nearest, " << probe
-                    << " m, carries " << pressing << " N/m); use initial_state = paper";
+                    << " " << d.mesh.force_unit() << " was not found in 100 load paths (the nearest, "
+                    << probe << " m, carries " << pressing << " " << d.mesh.force_unit()
+                    << "); use initial_state = paper";
                 throw std::invalid_argument(msg.str());
             }
             if (pressing < force) {
@@ -278,7 +280,8 @@ void Simulation::check_static_balance() const {
     if (!(std::abs(normal + top) <= std::max(1e-9 * std::max(std::abs(normal), std::abs(top)), floor))) {
         Text msg;
         msg << "initial_state = static: the load path ended out of balance (the contact carries "
-            << normal << " N/m, the top " << -top << " N/m); use initial_state = paper";
+            << normal << " " << d.mesh.force_unit() << ", the top " << -top << " "
+            << d.mesh.force_unit() << "); use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
 }
@@ -468,28 +471,29 @@ void Simulation::check_plausible() {
     // Floored by the energy of a strain of 1e-12 over the body: where nothing was put in
     // (E(0) = 0, the gap never closes), round-off of 1e-28 J/m must not trip the ratio.
     const Mesh& mesh = body_->discretization().mesh;
+    const char* J = mesh.energy_unit();
     const double strain = 1e-12;
     const double floor = 0.5 * (p.lambda + 2 * p.mu) * strain * strain * mesh.width() * mesh.height();
     const double put_in = std::max(initial + std::abs(w.clamp) + std::abs(w.foundation), floor);
     const bool over_ratio = p.max_energy_ratio > 0 && energy > 0 && energy > p.max_energy_ratio * put_in;
     if (over_ratio || (p.max_energy > 0 && energy > p.max_energy)) {
         Text msg;
-        msg << "energy E = " << energy << " J/m at t = " << state_.time << " exceeds ";
+        msg << "energy E = " << energy << " " << J << " at t = " << state_.time << " exceeds ";
         if (over_ratio)
             msg << "max_energy_ratio x (E(0) + work put in" << (put_in == floor ? ", floored by "
                    "the energy of a strain of 1e-12 over the body" : "") << ") = "
-                << p.max_energy_ratio << " x " << put_in << " J/m";
+                << p.max_energy_ratio << " x " << put_in << " " << J;
         else
-            msg << "max_energy = " << p.max_energy << " J/m";
+            msg << "max_energy = " << p.max_energy << " " << J;
         msg << " (E(0) = " << initial << ", clamp_work = " << w.clamp << ", foundation_work = "
             << w.foundation << ", normal_contact_work = " << w.normal_contact
             << ", friction_work = " << w.friction << ", damping_work = " << w.damping
-            << " J/m): the solution grows without bound";
+            << " " << J << "): the solution grows without bound";
         // The likely cause: what the run itself shows (the contact creating energy), else the
         // measured map's region.
         if (w.normal_contact > contact_work_warning * put_in)
             msg << "; likely cause: the contact created normal_contact_work = " << w.normal_contact
-                << " J/m of it (the midpoint contact of mass_matrix = "
+                << " " << J << " of it (the midpoint contact of mass_matrix = "
                 << static_cast<int>(p.mass_matrix) << ")";
         else if (const std::string why = scheme_warning(p, sliding_speed_); !why.empty())
             msg << "; likely cause: " << why;
@@ -521,8 +525,8 @@ void Simulation::check_plausible() {
         contact_work_warned_ = true;
         Text msg;
         msg << "at t = " << state_.time << " the contact has created normal_contact_work = "
-            << w.normal_contact << " J/m, more than " << contact_work_warning
-            << " of E(0) + the work put in (" << put_in << " J/m): energy the scheme makes, not "
+            << w.normal_contact << " " << J << ", more than " << contact_work_warning
+            << " of E(0) + the work put in (" << put_in << " " << J << "): energy the scheme makes, not "
             << "physics. mass_matrix = 4 (redistributed_implicit_contact) cannot create it";
         if (p.friction_coefficient > 0) msg << "; with friction, also see damping_stiffness";
         warnings_.push_back(msg.str());
@@ -637,7 +641,8 @@ std::string Simulation::growth_advice() const {
                "the paper's scene);";
     if (!contact_at_end_of_step(p.mass_matrix) && (p.lambda >= 5 * p.mu || works_.normal_contact > 0))
         msg << " the midpoint contact gains energy (lambda/mu = " << p.lambda / p.mu
-            << "; normal_contact_work = " << works_.normal_contact << " J/m): mass_matrix = 4 "
+            << "; normal_contact_work = " << works_.normal_contact << " "
+            << body_->discretization().mesh.energy_unit() << "): mass_matrix = 4 "
             << "(redistributed_implicit_contact) cannot;";
     msg << " or reduce internal_step (now " << p.internal_step << " s)";
     return msg.str();
@@ -668,6 +673,19 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
                       "any step size (paper, section 6); use mass_matrix = 1 or a smaller F"
                     : ": the step is uniquely solvable only below a step size (paper, section 6);"
                       " reduce internal_step (by 10x to 1000x) or F");
+    } else if (p.friction_coefficient > 0 && p.stribeck_velocity > 0 && p.static_friction_ratio > 1) {
+        // Halving did not help: the law, not the substep's size (docs/contract.md, "Friction
+        // that depends on the slip rate").
+        msg << "Cause: friction that drops with the slip rate (static_friction_ratio = "
+            << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity
+            << " m/s): where the drop is steep against the normal force, a substep's problem can "
+               "lose its unique solution (the paper's open question for such laws), and halving "
+               "the substep did not restore it"
+            << (body_->discretization().mesh.dim == 3
+                    ? " (3D: the isotropic solve has no exact node-by-node fallback)" : "")
+            << ". Settings that run such scenes: mass_matrix = 4 (redistributed_implicit_contact) "
+               "or 3, or a softer drop (a larger stribeck_velocity, or static_friction_ratio "
+               "nearer 1)";
     } else {
         msg << "Reduce internal_step, or check contact_tolerance (" << p.contact_tolerance
             << ")";

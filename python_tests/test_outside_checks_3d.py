@@ -188,7 +188,8 @@ def lopsided(fmu, variant, steps, **extra):
     values = dict(mesh=str(DATA / "lopsided3d.msh"), mass_matrix=variant, initial_gap=2e-6,
                   friction_coefficient=0.3, static_friction_ratio=1.6, stribeck_velocity=0.3,
                   viscous_friction=0.05, damping_stiffness=1e-6, foundation_velocity=2.0,
-                  foundation_velocity_z=-1.5, input_interpolation=1, internal_step=4e-6, **extra)
+                  foundation_velocity_z=-1.5, input_interpolation=1, internal_step=4e-6)
+    values.update(extra)
     with Model(fmu, name="lopsided") as model:
         model.start(values)
         inst = model.instance

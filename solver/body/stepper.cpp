@@ -149,8 +149,8 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     // u_y grows linearly from the contact to the clamp's highest node, and no further: a body
     // reaching above its clamp moves rigidly with it there.
     for (int n = 0; n < mesh.num_nodes(); ++n) {
-        const double height = (mesh.point(n).y - mesh.contact_y) / mesh.clamp_height();
-        s.u[mesh.dof(n, Mesh::normal)] = top_displacement * std::clamp(height, 0.0, 1.0);
+        const double height = std::clamp(mesh.point(n).y - mesh.contact_y, 0.0, mesh.clamp_height());
+        s.u[mesh.dof(n, Mesh::normal)] = top_displacement * height / mesh.clamp_height();
     }
     // The clamp starts where it is driven, at every height it spans (a side face too): the
     // first substep would otherwise move it there at once, with work no one counts.

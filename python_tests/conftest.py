@@ -134,3 +134,39 @@ def instance(model_description, unzipped):
     inst = Instance(model_description, unzipped)
     yield inst
     inst.close()
+
+
+def fmu_log(start_values, unzipped):
+    """(raised error or None, every log message) of an initialization and a first step with
+    these values on the extracted FMU `unzipped` (its own model description), on an instance
+    of our own that is freed whatever happens."""
+    from fmpy.fmi1 import FMICallException
+    description = fmpy.read_model_description(unzipped)
+    types = {v.name: (v.type, v.valueReference) for v in description.modelVariables}
+    inst = Instance(description, unzipped, "mesh_log")
+    try:
+        inst.setDebugLogging(True, [])
+        inst.setupExperiment(startTime=0)
+        inst.enterInitializationMode()
+        for name, value in start_values.items():
+            kind, vr = types[name]
+            {"String": inst.setString, "Real": inst.setReal}.get(kind, inst.setInteger)([vr], [value])
+        try:
+            inst.exitInitializationMode()
+            inst.doStep(0, 1e-5)
+            error = None
+        except FMICallException as e:
+            error = e
+        return error, [m[2] for m in inst.messages]
+    finally:
+        inst.close()
+
+
+def refused(start_values, unzipped, *needles):
+    """The start fails, and its log holds every needle; returns the log."""
+    error, messages = fmu_log(start_values, unzipped)
+    assert error is not None, "initialization went through"
+    text = "\n".join(messages)
+    for needle in needles:
+        assert needle in text, text[-2000:]
+    return text

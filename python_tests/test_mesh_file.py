@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from conftest import FMU, PLATFORM, not_through_remoting
+from conftest import FMU, PLATFORM, fmu_log, not_through_remoting, refused
 from contactbody import meshes
 
 pytestmark = pytest.mark.skipif(PLATFORM != "linux64", reason="meshes are read alike on every platform")
@@ -133,51 +133,9 @@ def test_the_reduced_body_on_a_mesh_is_the_full_body_with_every_mode(tmp_path):
     assert relative_difference(after(reduced), after(full), [n for n in OUTPUTS if n != "active_contact_nodes"]) < 1e-8
 
 
-MODEL_DESCRIPTION = fmpy.read_model_description(str(FMU))
-
-
 @pytest.fixture(scope="module")
 def unzipped_fmu(tmp_path_factory):
     return fmpy.extract(str(FMU), str(tmp_path_factory.mktemp("unzipped")))
-
-
-def fmu_log(start_values, unzipped):
-    """(raised error or None, every log message) of an initialization with these values, on an
-    instance of our own that is freed whatever happens."""
-    from fmpy.fmi1 import FMICallException
-    from contactbody.fmu import Instance
-    types = {v.name: (v.type, v.valueReference) for v in MODEL_DESCRIPTION.modelVariables}
-    inst = Instance(MODEL_DESCRIPTION, unzipped, "mesh_log")
-    try:
-        inst.setDebugLogging(True, [])
-        inst.setupExperiment(startTime=0)
-        inst.enterInitializationMode()
-        for name, value in start_values.items():
-            kind, vr = types[name]
-            if kind == "String":
-                inst.setString([vr], [value])
-            elif kind == "Real":
-                inst.setReal([vr], [value])
-            else:
-                inst.setInteger([vr], [value])
-        try:
-            inst.exitInitializationMode()
-            inst.doStep(0, 1e-5)
-            error = None
-        except FMICallException as e:
-            error = e
-        return error, [m[2] for m in inst.messages]
-    finally:
-        inst.close()
-
-
-def refused(start_values, unzipped, *needles):
-    error, messages = fmu_log(start_values, unzipped)
-    assert error is not None, "initialization went through"
-    text = "\n".join(messages)
-    for needle in needles:
-        assert needle in text, text[-2000:]
-    return text
 
 
 def write_text(tmp_path, name, text):

@@ -10,7 +10,7 @@ from fmpy.fmi1 import FMICallException
 import numpy as np
 import pytest
 
-from conftest import FMU, PLATFORM, SANITIZED, Instance
+from conftest import FMU, PLATFORM, SANITIZED, refused
 from contactbody import meshes
 
 pytestmark = pytest.mark.skipif(PLATFORM != "linux64", reason="the scheme is the same on every platform")
@@ -39,29 +39,6 @@ def unzipped3d(tmp_path_factory):
     directory = tmp_path_factory.mktemp("ContactBody3D")
     fmpy.extract(str(FMU3D), str(directory))
     return str(directory)
-
-
-def refused(unzipped, start_values, *needles):
-    """Initialization (or the first step) fails, and its messages hold every needle."""
-    md = fmpy.read_model_description(unzipped)
-    refs = {v.name: (v.type, v.valueReference) for v in md.modelVariables}
-    inst = Instance(md, unzipped, "outside3d")
-    try:
-        inst.setDebugLogging(True, [])
-        inst.setupExperiment(startTime=0)
-        inst.enterInitializationMode()
-        for name, value in start_values.items():
-            kind, vr = refs[name]
-            {"String": inst.setString, "Real": inst.setReal}.get(kind, inst.setInteger)([vr], [value])
-        with pytest.raises(FMICallException):
-            inst.exitInitializationMode()
-            inst.doStep(0, 1e-5)
-        text = inst.text()
-    finally:
-        inst.close()
-    for needle in needles:
-        assert needle in text, text[-2000:]
-    return text
 
 
 # ---- a clamp that spans several heights ----
@@ -97,8 +74,8 @@ def test_contact_and_clamp_swapped_one_ulp_apart_are_refused(unzipped3d):
     """The clamp's top edge lies one ulp above the contact face (y = 0.10000000000000002):
     initialization gave E(0) = 1.6e29 J, and the first step failed with 'the body is 1.38778e-17
     m high'."""
-    refused(unzipped3d, {"mesh": str(DATA / "box3d_contact_top_clamp_side.msh"),
-                         "top_displacement": -1e-5},
+    refused({"mesh": str(DATA / "box3d_contact_top_clamp_side.msh"), "top_displacement": -1e-5},
+            unzipped3d,
             "is not above the contact group's lowest", "by more than 1e-6 of the body's size",
             "swapped?")
 
@@ -151,7 +128,7 @@ def test_a_clamp_that_is_no_group_of_surfaces_is_refused(tmp_path, unzipped3d, k
     1.26e-4 J against 1.49e-3 J for the face), with no word; a volume was 'every node of the
     contact group is also the clamp's'. Refused as a contact group of lines is."""
     path = block_with_clamp(tmp_path, kind)
-    refused(unzipped3d, {"mesh": str(path)}, f'the physical group "clamp" holds {what}',
+    refused({"mesh": str(path)}, unzipped3d, f'the physical group "clamp" holds {what}',
             "it must be a group of boundary surfaces (dimension 2)")
 
 
@@ -165,7 +142,7 @@ def test_a_file_without_tetrahedra_says_so(tmp_path, unzipped3d):
     triangles = [l for l in lines[first + 2:last] if l.split()[1] == "2"]
     lines[first + 1:last] = [str(len(triangles))] + triangles
     path.write_text("\n".join(lines) + "\n")
-    refused(unzipped3d, {"mesh": str(path)}, "the file holds no tetrahedra",
+    refused({"mesh": str(path)}, unzipped3d, "the file holds no tetrahedra",
             "give the volume a physical group")
 
 
@@ -173,7 +150,7 @@ def test_a_file_without_tetrahedra_says_so(tmp_path, unzipped3d):
 
 def test_3d_energies_in_messages_are_in_joules(unzipped3d):
     """The blow-up guard and the contact-work warning printed "J/m" for a 3D body."""
-    text = refused(unzipped3d, {"max_energy": 1e-9, "top_displacement": -1e-4}, "max_energy = 1e-09 J")
+    text = refused({"max_energy": 1e-9, "top_displacement": -1e-4}, unzipped3d, "max_energy = 1e-09 J")
     assert "J/m" not in text and "N/m" not in text, text
 
 

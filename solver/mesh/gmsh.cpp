@@ -53,7 +53,7 @@ public:
         return pos_ >= text_.size();
     }
     int line() const { return line_; }
-    std::string_view next(const char* what, bool limited = true) {
+    std::string_view next(const char* what) {
         if (at_end()) fail(std::string("the file ends where ") + what + " should be");
         if (text_[pos_] == '"') {
             const size_t close = text_.find('"', pos_ + 1);
@@ -63,13 +63,7 @@ public:
             return t;
         }
         const size_t start = pos_;
-        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) {
-            // Judged before the rest of a damaged line is read (a file of NUL bytes is one token).
-            if (limited && pos_ - start == max_token)
-                fail(std::string("more than ") + std::to_string(max_token) + " bytes without a blank where " +
-                     what + " should be (\"" + shown(text_.substr(start, 16)) + "...\"): a damaged file");
-            ++pos_;
-        }
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
         return std::string_view(text_.data() + start, pos_ - start);
     }
     long integer(const char* what) {
@@ -80,6 +74,12 @@ public:
         if (error != std::errc() || stop != t.data() + t.size())
             fail(std::string(what) + " must be a whole number (got \"" + shown(t) + "\")");
         return value;
+    }
+    // A node's tag, positive as Gmsh writes them (refused at its own line).
+    long node_tag() {
+        const long tag = integer("a node tag");
+        if (tag <= 0) fail("node tag " + std::to_string(tag) + ": Gmsh's node tags are positive");
+        return tag;
     }
     long count(const char* what, long limit) {
         const long n = integer(what);
@@ -112,12 +112,11 @@ public:
     // Past "$End<name>" (a section this reader does not need).
     void skip_section(std::string_view name) {
         const std::string end = "$End" + std::string(name.substr(1));
-        while (next(end.c_str(), false) != end) {
+        while (next(end.c_str()) != end) {
         }
     }
 
 private:
-    static constexpr size_t max_token = 4096;
     // A section's end where a number should be: a block holds fewer entries than its header says.
     void section_end(std::string_view t, const char* what) const {
         if (t.size() > 4 && t.substr(0, 4) == "$End")
@@ -281,7 +280,6 @@ void read_entities(Tokens& in, Entities& entities) {
 }
 
 void add_node(Tokens& in, RawMesh& m, long tag, int line, long max_nodes) {
-    if (tag <= 0) in.fail("node tag " + std::to_string(tag) + ": Gmsh's node tags are positive", line);
     RawNode node;
     node.line = line;
     node.x = in.real("a node's x");
@@ -336,10 +334,7 @@ void read_nodes_41(Tokens& in, RawMesh& m, long max_nodes) {
         const long parametric = in.count("a node block's parametric flag", 1);
         const long n = in.count("a node block's number of nodes", max_count);
         std::vector<long> tags(static_cast<size_t>(n));
-        for (long& t : tags) {
-            t = in.integer("a node tag");
-            if (t <= 0) in.fail("node tag " + std::to_string(t) + ": Gmsh's node tags are positive");
-        }
+        for (long& t : tags) t = in.node_tag();
         for (long t : tags) {
             in.at_end();
             const int line = in.line();
@@ -360,7 +355,7 @@ void read_nodes_22(Tokens& in, RawMesh& m, long max_nodes) {
     for (long k = 0; k < n; ++k) {
         in.at_end();
         const int line = in.line();
-        const long tag = in.integer("a node tag");
+        const long tag = in.node_tag();
         add_node(in, m, tag, line, max_nodes);
     }
     in.expect("$EndNodes");

@@ -156,7 +156,7 @@ def test_3d_energies_in_messages_are_in_joules(unzipped3d):
 
 # ---- the slip-rate law on a body with no symmetry ----
 
-def lopsided(fmu, variant, steps, **extra):
+def lopsided(fmu, variant, steps):
     """lopsided3d.msh pressed by a top displacement -2.5e-4 sin(2 pi t / 4e-4) m (set before
     each 1e-5 s step, ramped), sliding along (2, -1.5) m/s under the slip-rate law. Returns the
     failure's message (None if every step ran)."""
@@ -166,7 +166,6 @@ def lopsided(fmu, variant, steps, **extra):
                   friction_coefficient=0.3, static_friction_ratio=1.6, stribeck_velocity=0.3,
                   viscous_friction=0.05, damping_stiffness=1e-6, foundation_velocity=2.0,
                   foundation_velocity_z=-1.5, input_interpolation=1, internal_step=4e-6)
-    values.update(extra)
     with Model(fmu, name="lopsided") as model:
         model.start(values)
         inst = model.instance
@@ -180,16 +179,11 @@ def lopsided(fmu, variant, steps, **extra):
     return None
 
 
-@pytest.mark.skipif(SANITIZED, reason="a minute of 3D substeps; the message's code runs in the main job")
-def test_a_slip_rate_law_that_loses_uniqueness_says_so_and_what_runs():
-    """Variant 2 on the lopsided hemisphere failed from t = 8e-5 s after twelve halvings on the
-    native gcc build (the isotropic Newton stagnates; 3D has no node-by-node fallback), where
-    the message said "Reduce internal_step", which does not help. The portable binary's bits
-    differ and run it: the message is checked where it fails. The settings it names run the
-    scene past that time on every build."""
-    message = lopsided(FMU3D, 2, 9)
-    if message is not None:
-        assert "Cause: friction that drops with the slip rate" in message, message
-        assert "mass_matrix = 4" in message and "Reduce internal_step" not in message, message
-    assert lopsided(FMU3D, 4, 9) is None
-    assert lopsided(FMU3D, 2, 9, stribeck_velocity=3.0) is None
+@pytest.mark.skipif(SANITIZED, reason="3D substeps of 12 s; the fallback's code runs in ctest")
+@pytest.mark.parametrize("variant", [1, 2, 4])
+def test_the_slip_rate_law_runs_the_lopsided_hemisphere(variant):
+    """Variant 2 failed from t = 8e-5 s after twelve halvings on the native gcc build: the
+    isotropic Newton stagnated and 3D had no node-by-node fallback, and the message said
+    "Reduce internal_step", which does not help. With the fallback it runs (the portable
+    binary's bits ran it before too: tests_cpp/test_contact.cpp shows the fallback itself)."""
+    assert lopsided(FMU3D, variant, 9) is None

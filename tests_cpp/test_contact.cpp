@@ -225,6 +225,68 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
     EXPECT_GT(sticking, 0);
 }
 
+// Isotropic friction (3D): where Newton fails (here: allowed no iteration), the node-by-node
+// fallback solves the disc problem exactly, with Coulomb's law and with the slip-rate law at
+// each node's own slip; both give Newton's multipliers. Before, a failed 3D Newton had no
+// fallback: the substep was halved, and where halving did not help, the step failed.
+TEST(ContactSolver, DiscProblemSolvedByNewtonAndNodeByNode) {
+    const int n = 6, m = 3 * n;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    Eigen::MatrixXd R(m, m);
+    for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j) R(i, j) = u(rng);
+    for (const bool rate : {false, true}) {
+        SCOPED_TRACE(rate);
+        ContactProblem p;
+        p.tangents = 2;
+        p.W = 0.1 * R * R.transpose() + Eigen::MatrixXd::Identity(m, m);
+        p.a.resize(m);
+        for (int i = 0; i < n; ++i) {
+            p.a[i] = 0.5 + 0.2 * u(rng);  // pressed
+            const double size = i % 3 == 0 ? 0.05 : 2.0;  // some stick, most slip
+            p.a[n + i] = size * u(rng);
+            p.a[2 * n + i] = size * u(rng);
+        }
+        p.gap_limit = Eigen::VectorXd::Zero(n);
+        p.slip_origin = Eigen::VectorXd::Zero(2 * n);
+        p.friction = Eigen::VectorXd::Constant(n, 0.3);
+        if (rate) {
+            p.rate.excess = 0.2;
+            p.rate.stribeck_velocity = 0.5;
+            p.rate.viscous = 0.05;
+            p.rate.slip_time = 0.1;
+        }
+        ASSERT_EQ(p.rate_dependent(), rate);
+        ContactSolver newton_solver, node_solver;
+        Eigen::VectorXd newton = Eigen::VectorXd::Zero(m), nodes = newton;
+        const ContactSolveInfo a = newton_solver.solve(p, ContactSolverOptions{1e-13, 100, 0}, newton);
+        EXPECT_EQ(a.sweeps, 0);
+        const ContactSolveInfo b = node_solver.solve(p, ContactSolverOptions{1e-13, 0, 100000}, nodes);
+        EXPECT_GT(b.sweeps, 0);
+        EXPECT_LE(b.residual, 1e-13);
+        EXPECT_LE((newton - nodes).lpNorm<Eigen::Infinity>(), 1e-10 * newton.lpNorm<Eigen::Infinity>());
+        const Eigen::VectorXd uh = p.a + p.W * nodes;
+        int slipping = 0, sticking = 0;
+        for (int i = 0; i < n; ++i) {
+            const double N = -nodes[i];
+            const Eigen::Vector2d T(nodes[n + i], nodes[2 * n + i]), slip(uh[n + i], uh[2 * n + i]);
+            ASSERT_GT(N, 0);
+            EXPECT_NEAR(uh[i], 0, 1e-12);
+            if (slip.norm() > 1e-12) {
+                ++slipping;
+                EXPECT_NEAR(T.norm(), p.coefficient(i, slip.norm()) * N, 1e-11);
+                EXPECT_NEAR(T.dot(slip), -T.norm() * slip.norm(), 1e-11);  // opposite the slip
+            } else {
+                ++sticking;
+                EXPECT_LE(T.norm(), p.coefficient(i, 0) * N + 1e-11);
+            }
+        }
+        EXPECT_GT(slipping, 0);
+        EXPECT_GT(sticking, 0);
+    }
+}
+
 // Solves that follow each other as in a substep sequence (one W, the load drifting so that
 // a few nodes change state between solves): the solver that updates its factorization
 // (update_factorization) reaches the same multipliers as the one that refactors, in as many

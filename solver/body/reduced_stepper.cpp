@@ -88,8 +88,6 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     mu_cc_ = all_e.dot(d.M * all_e);
     mass_tt_ = mu_ss_ + 2 * mu_cs_ + mu_cc_;
     s_ss_ = S.dot(AS);
-    e_cc_ = all_e.dot(d.A * all_e);
-    stiffness_tt_ = e_cc_ - s_ss_;
 
     // The clamped x (and a 3D body's z) dofs' rows against the basis, the lift and the clamp
     // (residual massless).
@@ -216,9 +214,9 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
                            0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) +
                            0.5 * plate_mass_ * tc * tc;
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
-    // + 1/2 (e^T A_cc e - S^T A_ff S) top^2.
+    // (the lift and clamp moving together, a translation, store none).
     const double strain = 0.5 * (z.cwiseAbs2().dot(omega2_) + tail_strain) + z.dot(a_s_) * gap +
-                          0.5 * s_ss_ * gap * gap + 0.5 * stiffness_tt_ * top * top;
+                          0.5 * s_ss_ * gap * gap;
     // Both are positive semi-definite forms, here expanded into terms that cancel for a body
     // moving rigidly: what is left below zero is round-off (an outside check reported
     // E = -2.7e-13 J/m; not reproduced here), and
@@ -505,7 +503,7 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     if (params_.damped())
         report.work.damping = (du_.cwiseAbs2().dot(damping_) + tail_damping_form(du_) +
                                2 * du_t * alpha * m_t_.dot(du_) +
-                               (alpha * mass_tt_ + beta * stiffness_tt_) * du_t * du_t) / dt;
+                               alpha * mass_tt_ * du_t * du_t) / dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the
     // residual of the reduced equations' rows of both (lift and clamp), less the contact
@@ -513,9 +511,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // energy balance; with every finite mode the lift's row is zero and this is the clamped
     // rows' residual, as in the full body.
     double r = m_t_.dot(c1 * w_ - c2 * zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
-               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate) + stiffness_tt_ * (top + w_t);
+               (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate);
     if (params_.damped())
-        r += 0.5 * c2 * (alpha * (m_t_.dot(du_) + mass_tt_ * du_t) + beta * stiffness_tt_ * du_t);
+        r += 0.5 * c2 * alpha * (m_t_.dot(du_) + mass_tt_ * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction_y = r;
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy

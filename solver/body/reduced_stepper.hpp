@@ -152,9 +152,12 @@ private:
     ClampRows clamp_x_;
     ClampRows clamp_z_;  // a 3D body's (empty in 2D)
     Eigen::Index nf_ = 0;  // free dofs
-    double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0, e_cc_ = 0;
+    double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0;
     double mass_tt_ = 0;   // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)
-    double stiffness_tt_ = 0;  // e_cc - s_ss: their stiffness (t^T A t)
+    // Their stiffness t^T A t is 0: the lift is the clamp's static response with nothing else
+    // holding the body, so with the clamp a rigid translation (e^T A_cc e - s_ss computed
+    // rounds |A|, and a far-translated body's strain energy with it: docs/decisions.md, "Far
+    // travel and the energy balance").
     std::array<std::unique_ptr<StepOperators>, 2> cache_;
     StepOperators& build_operators(double dt);
     void start_run();

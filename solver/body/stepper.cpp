@@ -88,6 +88,12 @@ void Stepper::start_run() {
     C_du_.resize(disc_.mesh.num_dofs());
     rhs_.resize(nf);
     w_free_.resize(nf);
+    // The unknowns a translation along y moves (the plate's too), and M of that translation.
+    normal_free_.setZero(nf);
+    for (int dof : disc_.free_dofs)
+        if (disc_.mesh.component(dof) == Mesh::normal) normal_free_[disc_.free_index[dof]] = 1;
+    if (disc_.plate_index >= 0) normal_free_[disc_.plate_index] = 1;
+    normal_mass_.noalias() = disc_.M_free_rows * (disc_.expand * normal_free_);
     clamped_half_.resize(static_cast<Eigen::Index>(disc_.clamped_dofs.size()));
     problem_.tangents = disc_.mesh.dim - 1;
     problem_.a.resize(disc_.mesh.dim * nc);
@@ -424,6 +430,15 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     if (d.plate_index >= 0) {  // the plate's own inertia and the force pressing it down
         rhs_[d.plate_index] += d.plate_mass * c2 * s.v[d.top_y_dof()] - load.top_force;
     }
+    // Under force control the body translates along y with the plate, as fast and as far as
+    // it is pulled: the solve is for w less the translation t = dt/2 v_plate on every y
+    // unknown, whose K t is exact ((4/dt^2 + 2 alpha/dt) M t, A t = 0). It then rounds
+    // |K| |w - t|, not |K| |w| (docs/decisions.md, "Far travel and the energy balance").
+    const double shift = d.plate_index >= 0 ? 0.5 * dt * s.v[d.top_y_dof()] : 0.0;
+    if (shift != 0) {
+        rhs_.noalias() -= (shift * (c1 + c2 * params_.damping_mass)) * normal_mass_;
+        rhs_[d.plate_index] -= c1 * d.plate_mass * shift;
+    }
     laps.lap(timings_.update);
     // The contact conditions on u^{k+1/2} (or, for the implicit-contact variants, on u^{k+1},
     // an affine map of it) shifted by B u^k.
@@ -437,8 +452,13 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         problem_.a.setZero();  // unknown here: every substep solves, and says who touched
         set_contact_conditions(problem_, params_, implicit, dt, load,
                                s.sticking, gap_old);
+        if (shift != 0) {  // the conditions on w - t: B (w - t) = B w + shift on the normal rows
+            snapshot_.gap_limit = problem_.gap_limit;
+            problem_.gap_limit.array() += shift;
+        }
         const ContactSolveInfo info = sparse_solver_.solve(*f.held, problem_, options_, rhs_, s.sticking,
                                                            s.lambda, w_free_, f.id != current_factor_);
+        if (shift != 0) problem_.gap_limit.swap(snapshot_.gap_limit);
         touching = sparse_solver_.touching();
         report.contact_iterations = info.iterations;
         report.contact_solved = touching;
@@ -451,6 +471,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const auto G = f.G.leftCols(unknowns);
         auto y_contact = y.tail(f.G.rows());
         problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
+        if (shift != 0) problem_.a.head(nc).array() -= shift;  // + B t (N = -e_y)
         touching = set_contact_conditions(problem_, params_, implicit, dt, load, s.sticking, gap_old);
         if (touching) {
             const ContactSolveInfo info = solver_.solve(problem_, options_, s.lambda);
@@ -465,12 +486,20 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         f.cholesky->backward(w_free_);
         laps.lap(timings_.solve);
     }
+    if (shift != 0) w_free_.noalias() += shift * normal_free_;  // w = (w - t) + t
 
     w_.noalias() = d.expand * w_free_;  // (the plate's w on every top y dof)
     for (size_t k = 0; k < d.clamped_dofs.size(); ++k) w_[d.clamped_dofs[k]] = clamped_half_[k];
     if (params_.damped()) {
-        du_ = 2 * w_;  // u^{k+1} - u^k on all dofs
-        C_du_.noalias() = d.C * du_;
+        // C du (du = u^{k+1} - u^k) as C (du - t) + alpha M t, t du's translation (A t = 0):
+        // C du itself rounds |C| |du| (docs/decisions.md, "Far travel and the energy balance").
+        du_ = 2 * w_;
+        d.remove_translation(du_, product_);
+        C_du_.noalias() = d.C * product_;
+        if (params_.damping_mass != 0) {
+            product_ = du_ - product_;
+            C_du_.noalias() += params_.damping_mass * (d.M * product_);
+        }
         report.work.damping = du_.dot(C_du_) / dt;
     }
 

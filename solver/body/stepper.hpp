@@ -334,6 +334,7 @@ private:
     // w: u^{k+1/2} - u^k (w_free_ the unknowns'), relative_: u minus node 0's translation,
     // clamped_half_: the clamped dofs' w.
     Eigen::VectorXd relative_, rhs_, w_free_, w_, clamped_half_, du_, C_du_, product_;
+    Eigen::VectorXd normal_free_, normal_mass_;  // a translation along y in the unknowns, and M times it
 };
 
 }  // namespace contactbody

@@ -403,7 +403,23 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         diagonal_revision_ = p.revision;
     }
     if constexpr (solid_bodies_built) {
-        if (p.has_friction() && p.tangents == 2) return solve_disc(p, options, lambda);
+        if (p.has_friction() && p.tangents == 2) {
+            start_ = lambda;
+            try {
+                return solve_disc(p, options, lambda);
+            } catch (const ContactSolveError& e) {
+                // As in 2D: node by node from the same start, F at each node's own slip where
+                // the contact nodes keep their tangential inertia (ContactProblem::RateLaw).
+                lambda = start_;
+                ContactSolveInfo info;
+                info.iterations = options.max_iterations;
+                if (gauss_seidel_disc(p, options, lambda, info, p.rate.tangential_inertia)) return info;
+                Text msg;
+                msg << e.what() << "; node by node from the same start: relative residual "
+                    << info.residual << " after " << info.sweeps << " sweeps";
+                throw ContactSolveError(msg.str());
+            }
+        }
     } else if (p.tangents != 1) {
         throw std::logic_error("ContactSolver: this build has no isotropic friction (CONTACTBODY_SOLID_BODIES=0)");
     }

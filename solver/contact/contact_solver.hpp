@@ -213,7 +213,7 @@ private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda, bool stop_on_stagnation);
     // Isotropic friction (tangents == 2; contact_solver_disc.cpp): semi-smooth Newton on the
-    // full generalized Jacobian, no Gauss-Seidel fallback (a failure halves the substep).
+    // full generalized Jacobian; where it fails, node by node (gauss_seidel_disc).
     ContactSolveInfo solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
                                 Eigen::VectorXd& lambda);
     double residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
@@ -226,6 +226,8 @@ private:
     // the tolerance within options.max_sweeps.
     bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
                       Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
+    bool gauss_seidel_disc(const ContactProblem& p, const ContactSolverOptions& options,
+                           Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     enum class Direction { reuse, update, factor };  // the last factorization, updated, or anew

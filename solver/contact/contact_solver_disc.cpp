@@ -6,8 +6,11 @@
 // Jacobian the reduced system's; the 2D solve keeps its own path (its bits). With a slip-rate
 // law F depends on the slip speed |s| / slip_time, s = u_T - origin the node's slip vector, taken
 // implicitly as in 2D: its derivative enters a slipping node's rows.
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <Eigen/Dense>
 
 #include "contact_solver.hpp"
 #include "text.hpp"
@@ -165,6 +168,136 @@ ContactSolveInfo ContactSolver::solve_disc(const ContactProblem& p, const Contac
         info.residual = residual_disc(p, lambda, phi_);
     }
     return info;
+}
+
+namespace {
+
+// One node's problem with the other nodes' multipliers fixed: u = q + A l (A the node's 3x3
+// block of W; rows N, T_x, T_z), u_N <= gap, the disc |l_T| <= -F l_N with a slip s = u_T -
+// origin opposite l_T. `coefficient(|s|)` is F (constant, or the slip-rate law's). Open,
+// stick, or slip: l_T = F(|s|) l_N s / |s| with u_N = gap, two equations in s solved by
+// Newton from the sticking solution's direction. False where no slip solution was found.
+template <class Coefficient>
+bool solve_disc_node(const double q[3], const Eigen::Matrix3d& A, double gap, const double origin[2],
+                     Coefficient&& coefficient, double l[3]) {
+    l[0] = l[1] = l[2] = 0;
+    if (q[0] <= gap) return true;  // open
+    const Eigen::Vector3d stick = A.partialPivLu().solve(Eigen::Vector3d(gap - q[0], origin[0] - q[1], origin[1] - q[2]));
+    const double F0 = coefficient(0.0);
+    if (stick[0] <= 0 && std::hypot(stick[1], stick[2]) <= -F0 * stick[0]) {
+        for (int c = 0; c < 3; ++c) l[c] = stick[c];
+        return true;
+    }
+    // The slip s gives F, its direction d, l_N from u_N = gap, l_T, and the slip u_T - origin
+    // those make: the residual R(s) is that slip less s.
+    const auto residual = [&](const Eigen::Vector2d& s, double out[3]) {
+        const double size = s.norm();
+        const Eigen::Vector2d d = s / size;
+        const double F = coefficient(size);
+        const double lN = (gap - q[0]) / (A(0, 0) + F * (A(0, 1) * d[0] + A(0, 2) * d[1]));
+        out[0] = lN;
+        const Eigen::Vector2d lT = F * lN * d;
+        const Eigen::Vector2d slip(q[1] - origin[0] + A(1, 0) * lN + A(1, 1) * lT[0] + A(1, 2) * lT[1],
+                                   q[2] - origin[1] + A(2, 0) * lN + A(2, 1) * lT[0] + A(2, 2) * lT[1]);
+        out[1] = lT[0];
+        out[2] = lT[1];
+        return Eigen::Vector2d(slip - s);
+    };
+    // Start: along -l_T of the sticking solution, as far as the cone's edge leaves it to slip.
+    const double tangential = std::hypot(stick[1], stick[2]);
+    Eigen::Vector2d d = tangential > 0 ? Eigen::Vector2d(-stick[1] / tangential, -stick[2] / tangential)
+                                       : Eigen::Vector2d(1, 0);
+    const double scale = std::abs(q[1] - origin[0]) + std::abs(q[2] - origin[1]) +
+                         A.cwiseAbs().maxCoeff() * stick.cwiseAbs().maxCoeff();
+    if (!(scale > 0)) return false;
+    double trial[3];
+    Eigen::Vector2d s = 1e-6 * scale * d;
+    s += residual(s, trial);  // one fixed-point step
+    if (!(s.norm() > 0)) s = 1e-6 * scale * d;
+    Eigen::Vector2d R = residual(s, trial);
+    for (int iteration = 0; iteration < 60; ++iteration) {
+        if (R.norm() <= 1e-15 * scale) {
+            if (!(trial[0] < 0)) return false;
+            for (int c = 0; c < 3; ++c) l[c] = trial[c];
+            return true;
+        }
+        // The Jacobian by differences (two more residuals), then a step halved while it
+        // does not decrease |R| or would turn the slip through zero.
+        Eigen::Matrix2d J;
+        const double h = 1e-7 * std::max(s.norm(), 1e-9 * scale);
+        double unused[3];
+        for (int c = 0; c < 2; ++c) {
+            Eigen::Vector2d e = s;
+            e[c] += h;
+            J.col(c) = (residual(e, unused) - R) / h;
+        }
+        const Eigen::Vector2d step = J.partialPivLu().solve(-R);
+        if (!step.allFinite()) return false;
+        double alpha = 1;
+        bool decreased = false;
+        for (int k = 0; k < 30 && !decreased; ++k, alpha *= 0.5) {
+            const Eigen::Vector2d next = s + alpha * step;
+            if (!(next.norm() > 0)) continue;
+            const Eigen::Vector2d Rn = residual(next, unused);
+            if (Rn.norm() < R.norm()) {
+                s = next;
+                R = Rn;
+                decreased = true;
+            }
+        }
+        if (!decreased) return false;
+        residual(s, trial);
+    }
+    return false;
+}
+
+}  // namespace
+
+// Node by node (nonsmooth Gauss-Seidel): each node's own problem solved exactly with the
+// others fixed, sweep after sweep, until the residual reaches the tolerance; false when it
+// gives up (max_sweeps, or 50 sweeps that do not halve the best residual). With the slip-rate
+// law F is taken at the node's own slip (exact_rate), else lagged at the sweep's last.
+bool ContactSolver::gauss_seidel_disc(const ContactProblem& p, const ContactSolverOptions& options,
+                                      Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate) {
+    const Eigen::Index n = p.gap_limit.size();
+    info.residual = residual_disc(p, lambda, phi_);  // also u_hat_ = a + W lambda
+    double best = info.residual;
+    int best_sweep = 0;
+    while (!(info.residual <= options.tolerance)) {
+        if (info.sweeps >= options.max_sweeps || info.sweeps - best_sweep > 50) return false;
+        ++info.sweeps;
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Index rows[3] = {i, n + i, 2 * n + i};
+            Eigen::Matrix3d A;
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) A(r, c) = p.W(rows[r], rows[c]);
+            double q[3];
+            for (int r = 0; r < 3; ++r) {
+                q[r] = u_hat_[rows[r]];
+                for (int c = 0; c < 3; ++c) q[r] -= A(r, c) * lambda[rows[c]];
+            }
+            const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
+            const double lagged = std::hypot(u_hat_[rows[1]] - origin[0], u_hat_[rows[2]] - origin[1]);
+            const auto coefficient = [&](double slip) {
+                if (!p.rate_dependent()) return p.friction[i];
+                return p.coefficient(i, exact_rate ? slip : lagged);
+            };
+            double l[3];
+            if (!solve_disc_node(q, A, p.gap_limit[i], origin, coefficient, l)) continue;  // kept
+            for (int r = 0; r < 3; ++r) {
+                const double change = l[r] - lambda[rows[r]];
+                if (change == 0) continue;
+                u_hat_.noalias() += change * p.W.col(rows[r]);
+                lambda[rows[r]] = l[r];
+            }
+        }
+        info.residual = residual_disc(p, lambda, phi_);
+        if (info.residual < 0.5 * best) {
+            best = info.residual;
+            best_sweep = info.sweeps;
+        }
+    }
+    return true;
 }
 
 }  // namespace contactbody

@@ -680,12 +680,9 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
             << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity
             << " m/s): where the drop is steep against the normal force, a substep's problem can "
                "lose its unique solution (the paper's open question for such laws), and halving "
-               "the substep did not restore it"
-            << (body_->discretization().mesh.dim == 3
-                    ? " (3D: the isotropic solve has no exact node-by-node fallback)" : "")
-            << ". Settings that run such scenes: mass_matrix = 4 (redistributed_implicit_contact) "
-               "or 3, or a softer drop (a larger stribeck_velocity, or static_friction_ratio "
-               "nearer 1)";
+               "the substep did not restore it. Settings that run such scenes: mass_matrix = 4 "
+               "(redistributed_implicit_contact) or 3, or a softer drop (a larger "
+               "stribeck_velocity, or static_friction_ratio nearer 1)";
     } else {
         msg << "Reduce internal_step, or check contact_tolerance (" << p.contact_tolerance
             << ")";

@@ -116,7 +116,9 @@ def test_round_off_does_not_trip_the_energy_guard(fmu_path):
                   mass_matrix=4, friction_coefficient=0.3, damping_stiffness=4e-6)
     with Model(fmu_path, name="guard") as model:
         rows, _ = model.run(values, 1e-3, 1e-4, ["energy", "active_contact_nodes"])
-    assert rows["energy"][0] == 0 and rows["active_contact_nodes"].max() == 0
+    # E(0) is a rigid translation's: round-off (2.4e-29 J/m; exactly 0 while the reduced body's
+    # strain held the translation's own round-off stiffness, negative here and clipped).
+    assert 0 <= rows["energy"][0] < 1e-20 and rows["active_contact_nodes"].max() == 0
     assert rows["energy"].max() < 1e-20
 
 

@@ -590,13 +590,7 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
                                  bool exact_rate) {
     const Eigen::Index n = p.gap_limit.size();
     const bool friction = p.has_friction();
-    info.residual = residual(p, lambda, phi_);  // also sets u_hat_ = a + W lambda
-    double best = info.residual;
-    int best_sweep = 0;
-    while (!(info.residual <= options.tolerance)) {
-        // Give up at max_sweeps, or when 50 sweeps have not halved the best residual.
-        if (info.sweeps >= options.max_sweeps || info.sweeps - best_sweep > 50) return false;
-        ++info.sweeps;
+    const auto sweep = [&] {
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Index t = n + i;
             const double lN = lambda[i], lT = friction ? lambda[t] : 0.0;
@@ -618,13 +612,9 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
                 lambda[t] = l.lT;
             }
         }
-        info.residual = residual(p, lambda, phi_);
-        if (info.residual < 0.5 * best) {
-            best = info.residual;
-            best_sweep = info.sweeps;
-        }
-    }
-    return true;
+    };
+    // (the residual also sets u_hat_ = a + W lambda)
+    return sweep_until(options, info, sweep, [&] { return residual(p, lambda, phi_); });
 }
 
 ContactSolveInfo ContactSolver::newton(const ContactProblem& p,

@@ -228,6 +228,26 @@ private:
                       Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
     bool gauss_seidel_disc(const ContactProblem& p, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
+    // The residual, then sweep() and the residual again until it reaches the tolerance; false
+    // at max_sweeps, or when 50 sweeps have not halved the best residual.
+    template <class Sweep, class Residual>
+    static bool sweep_until(const ContactSolverOptions& options, ContactSolveInfo& info, Sweep&& sweep,
+                            Residual&& residual) {
+        info.residual = residual();
+        double best = info.residual;
+        int best_sweep = 0;
+        while (!(info.residual <= options.tolerance)) {
+            if (info.sweeps >= options.max_sweeps || info.sweeps - best_sweep > 50) return false;
+            ++info.sweeps;
+            sweep();
+            info.residual = residual();
+            if (info.residual < 0.5 * best) {
+                best = info.residual;
+                best_sweep = info.sweeps;
+            }
+        }
+        return true;
+    }
     double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                     Eigen::VectorXd& phi);
     enum class Direction { reuse, update, factor };  // the last factorization, updated, or anew

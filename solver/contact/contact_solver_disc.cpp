@@ -184,7 +184,7 @@ bool solve_disc_node(const double q[3], const Eigen::Matrix3d& A, double gap, co
     if (q[0] <= gap) return true;  // open
     const Eigen::Vector3d stick = A.partialPivLu().solve(Eigen::Vector3d(gap - q[0], origin[0] - q[1], origin[1] - q[2]));
     const double F0 = coefficient(0.0);
-    if (stick[0] <= 0 && std::hypot(stick[1], stick[2]) <= -F0 * stick[0]) {
+    if (stick[0] <= 0 && std::sqrt(stick[1] * stick[1] + stick[2] * stick[2]) <= -F0 * stick[0]) {
         for (int c = 0; c < 3; ++c) l[c] = stick[c];
         return true;
     }
@@ -204,7 +204,7 @@ bool solve_disc_node(const double q[3], const Eigen::Matrix3d& A, double gap, co
         return Eigen::Vector2d(slip - s);
     };
     // Start: along -l_T of the sticking solution, as far as the cone's edge leaves it to slip.
-    const double tangential = std::hypot(stick[1], stick[2]);
+    const double tangential = std::sqrt(stick[1] * stick[1] + stick[2] * stick[2]);
     Eigen::Vector2d d = tangential > 0 ? Eigen::Vector2d(-stick[1] / tangential, -stick[2] / tangential)
                                        : Eigen::Vector2d(1, 0);
     const double scale = std::abs(q[1] - origin[0]) + std::abs(q[2] - origin[1]) +
@@ -260,12 +260,7 @@ bool solve_disc_node(const double q[3], const Eigen::Matrix3d& A, double gap, co
 bool ContactSolver::gauss_seidel_disc(const ContactProblem& p, const ContactSolverOptions& options,
                                       Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate) {
     const Eigen::Index n = p.gap_limit.size();
-    info.residual = residual_disc(p, lambda, phi_);  // also u_hat_ = a + W lambda
-    double best = info.residual;
-    int best_sweep = 0;
-    while (!(info.residual <= options.tolerance)) {
-        if (info.sweeps >= options.max_sweeps || info.sweeps - best_sweep > 50) return false;
-        ++info.sweeps;
+    const auto sweep = [&] {
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Index rows[3] = {i, n + i, 2 * n + i};
             Eigen::Matrix3d A;
@@ -277,7 +272,8 @@ bool ContactSolver::gauss_seidel_disc(const ContactProblem& p, const ContactSolv
                 for (int c = 0; c < 3; ++c) q[r] -= A(r, c) * lambda[rows[c]];
             }
             const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
-            const double lagged = std::hypot(u_hat_[rows[1]] - origin[0], u_hat_[rows[2]] - origin[1]);
+            const double sx = u_hat_[rows[1]] - origin[0], sz = u_hat_[rows[2]] - origin[1];
+            const double lagged = std::sqrt(sx * sx + sz * sz);  // (not hypot: no libm in the FMUs)
             const auto coefficient = [&](double slip) {
                 if (!p.rate_dependent()) return p.friction[i];
                 return p.coefficient(i, exact_rate ? slip : lagged);
@@ -291,13 +287,9 @@ bool ContactSolver::gauss_seidel_disc(const ContactProblem& p, const ContactSolv
                 lambda[rows[r]] = l[r];
             }
         }
-        info.residual = residual_disc(p, lambda, phi_);
-        if (info.residual < 0.5 * best) {
-            best = info.residual;
-            best_sweep = info.sweeps;
-        }
-    }
-    return true;
+    };
+    // (the residual also sets u_hat_ = a + W lambda)
+    return sweep_until(options, info, sweep, [&] { return residual_disc(p, lambda, phi_); });
 }
 
 }  // namespace contactbody

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "bench_common.hpp"
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;

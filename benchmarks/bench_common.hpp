@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 
 namespace bench {
 

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "reduced_stepper.hpp"
-#include "simulation.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -18,9 +18,9 @@
 #include <memory>
 
 #include "bench_common.hpp"
-#include "reduced_stepper.hpp"
-#include "simulation.hpp"
-#include "trailing_cholesky.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/simulation.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 using namespace bench;

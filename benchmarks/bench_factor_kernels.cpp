@@ -9,7 +9,7 @@
 #include <cstring>
 
 #include "bench_common.hpp"
-#include "trailing_cholesky.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -19,8 +19,8 @@
 #include <Eigen/IterativeLinearSolvers>
 
 #include "bench_common.hpp"
-#include "stepper.hpp"
-#include "trailing_cholesky.hpp"
+#include "body/stepper.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -19,8 +19,8 @@
 
 #include "bench_common.hpp"
 #include "craig_bampton.hpp"
-#include "reduced_stepper.hpp"
-#include "simulation.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "reduced_stepper.hpp"
+#include "reduced/reduced_stepper.hpp"
 
 using namespace contactbody;
 using namespace bench;

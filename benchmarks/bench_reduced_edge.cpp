@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;

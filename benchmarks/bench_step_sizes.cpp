@@ -8,7 +8,7 @@
 #include <functional>
 
 #include "bench_common.hpp"
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -8,8 +8,8 @@
 #include <Eigen/CholmodSupport>
 
 #include "bench_common.hpp"
-#include "simulation.hpp"
-#include "trailing_cholesky.hpp"
+#include "simulation/simulation.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 using namespace bench;

@@ -61,7 +61,7 @@ endforeach()
 foreach(companion IN LISTS COMPANIONS)
   add_library(${companion} SHARED system_fmus/companion_fmi2.cpp ${${companion}_model}
               fmu_src/resource_start_values.cpp solver/util/text.cpp solver/util/c_file.cpp)
-  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR} fmu_src solver/util)
+  target_include_directories(${companion} PRIVATE ${FMI_HEADERS_DIR} fmu_src solver)
   target_compile_definitions(${companion} PRIVATE FMI2_FUNCTION_PREFIX=)
   make_self_contained(${companion})
   # fmi2Functions.h declares the entry points with default visibility (dllexport on Windows).

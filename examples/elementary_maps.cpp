@@ -13,7 +13,7 @@
 #include <fstream>
 #include <string>
 
-#include "elementary_example.hpp"
+#include "contact/elementary_example.hpp"
 
 using namespace contactbody;
 

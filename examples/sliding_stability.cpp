@@ -48,7 +48,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 
 using namespace contactbody;
 

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 

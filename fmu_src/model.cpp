@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "c_file.hpp"
+#include "util/c_file.hpp"
 #include "mesh/gmsh.hpp"
-#include "text.hpp"
+#include "util/text.hpp"
 
 namespace contactbody::fmu {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "errors.hpp"
-#include "edge_output.hpp"
-#include "field_output.hpp"
+#include "output/edge_output.hpp"
+#include "output/field_output.hpp"
 #include "variables.hpp"
 
 namespace contactbody::fmu {

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "c_file.hpp"
+#include "util/c_file.hpp"
 
 namespace contactbody::fmu {
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <memory>
 
-#include "text.hpp"
+#include "util/text.hpp"
 
 namespace contactbody::fmu {
 

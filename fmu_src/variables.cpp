@@ -9,8 +9,8 @@
 #include <unordered_map>
 #include <algorithm>
 
-#include "gmsh.hpp"
-#include "text.hpp"
+#include "mesh/gmsh.hpp"
+#include "util/text.hpp"
 
 #ifndef CONTACTBODY_ONE_MODEL_TABLE
 #define CONTACTBODY_ONE_MODEL_TABLE 0

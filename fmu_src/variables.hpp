@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 namespace contactbody::fmu {
 

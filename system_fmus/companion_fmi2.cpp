@@ -15,7 +15,7 @@
 
 #include "companion.hpp"
 #include "resource_start_values.hpp"
-#include "text.hpp"
+#include "util/text.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <functional>
 
-#include "reduced_stepper.hpp"
-#include "simulation.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/simulation.hpp"
 
 namespace {
 std::atomic<bool> armed{false};

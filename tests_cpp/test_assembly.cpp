@@ -3,7 +3,7 @@
 
 #include <Eigen/Dense>
 
-#include "assembly.hpp"
+#include "assembly/assembly.hpp"
 
 using namespace contactbody;
 

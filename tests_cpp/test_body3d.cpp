@@ -14,14 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "discretization.hpp"
-#include "field_output.hpp"
+#include "assembly/discretization.hpp"
+#include "body/stepper.hpp"
+#include "contact/friction_law.hpp"
+#include "linalg/trailing_cholesky.hpp"
 #include "mesh/gmsh.hpp"
-#include "simulation.hpp"
-#include "modal_basis.hpp"
-#include "reduced_stepper.hpp"
-#include "stepper.hpp"
-#include "trailing_cholesky.hpp"
+#include "output/field_output.hpp"
+#include "reduced/modal_basis.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/simulation.hpp"
 
 namespace contactbody {
 namespace {

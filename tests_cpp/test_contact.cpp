@@ -4,9 +4,10 @@
 #include <random>
 #include <tuple>
 
-#include "contact_solver.hpp"
-#include "elementary_example.hpp"
-#include "sliding_product.hpp"
+#include "contact/contact_solver.hpp"
+#include "contact/elementary_example.hpp"
+#include "contact/friction_law.hpp"
+#include "contact/sliding_product.hpp"
 
 using namespace contactbody;
 

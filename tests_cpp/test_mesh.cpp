@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 #include "mesh/gmsh.hpp"
 
 namespace contactbody {

@@ -1,9 +1,9 @@
-// The reduced body's basis (solver/body/modal_basis.cpp): the identities of the construction in
+// The reduced body's basis (solver/reduced/modal_basis.cpp): the identities of the construction in
 // docs/decisions.md, "The reduced body", on the FMU's own matrices, and Spectra against a
 // dense solve.
 #include <gtest/gtest.h>
 
-#include "modal_basis.hpp"
+#include "reduced/modal_basis.hpp"
 
 using namespace contactbody;
 

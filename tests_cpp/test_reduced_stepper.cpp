@@ -5,7 +5,7 @@
 // contact x dofs carrying the variant's tangential mass.
 #include <gtest/gtest.h>
 
-#include "reduced_stepper.hpp"
+#include "reduced/reduced_stepper.hpp"
 
 using namespace contactbody;
 

@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "pattern_lu.hpp"
-#include "simulation.hpp"
-#include "sparse_contact.hpp"
-#include "trailing_cholesky.hpp"
+#include "linalg/pattern_lu.hpp"
+#include "simulation/simulation.hpp"
+#include "contact/sparse_contact.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 

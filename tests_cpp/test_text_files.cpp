@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "c_file.hpp"
-#include "text.hpp"
+#include "util/c_file.hpp"
+#include "util/text.hpp"
 
 using namespace contactbody;
 

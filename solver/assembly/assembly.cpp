@@ -1,7 +1,7 @@
-#include "assembly.hpp"
+#include "assembly/assembly.hpp"
 
-#include "build_features.hpp"
-#include "text.hpp"
+#include "util/build_features.hpp"
+#include "util/text.hpp"
 
 #include <algorithm>
 #include <type_traits>

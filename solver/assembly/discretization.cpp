@@ -1,11 +1,11 @@
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
 
 #include "mesh/gmsh.hpp"
-#include "text.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 
@@ -31,18 +31,6 @@ SparseMatrix selector(const std::vector<int>& rows, int n) {
 }
 
 }  // namespace
-
-ContactProblem::RateLaw rate_law(const SceneParameters& p) {
-    ContactProblem::RateLaw law;
-    if (p.stribeck_velocity > 0) law.excess = (p.static_friction_ratio - 1) * p.friction_coefficient;
-    law.stribeck_velocity = p.stribeck_velocity;
-    law.viscous = p.viscous_friction;
-    law.slip_time = 1;
-    // The massless reduced edge has no tangential inertia either, whatever the variant.
-    law.tangential_inertia = p.mass_matrix != MassVariant::redistributed_both &&
-                             (p.modes == 0 || reduced_edge_has_tangential_mass(p));
-    return law;
-}
 
 bool redistributes_normal(MassVariant v) {
     return v == MassVariant::redistributed_normal || v == MassVariant::redistributed_both ||

@@ -5,8 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "assembly.hpp"
-#include "contact_solver.hpp"
+#include "assembly/assembly.hpp"
 
 namespace contactbody {
 
@@ -128,10 +127,6 @@ struct SceneParameters {
         f("reduced_edge", rebuild, p.reduced_edge...);
     }
 };
-
-// The slip-rate law of p as the contact solver takes it, with slip_time 1 (so that its slip is
-// a slip rate: coefficient(F_d, v, &dF) gives F(v) and dF/dv); the stepper sets the substep's.
-ContactProblem::RateLaw rate_law(const SceneParameters& p);
 
 // Limits shared by the solver and the FMI layer (which also writes them as min/max).
 constexpr int max_cells_per_direction = 4096;

@@ -1,7 +1,7 @@
-#include "stepper.hpp"
+#include "body/stepper.hpp"
 
-#include "text.hpp"
-#include "trailing_cholesky.hpp"
+#include "util/text.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 #include <algorithm>
 #include <chrono>

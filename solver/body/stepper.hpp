@@ -14,10 +14,11 @@
 #include <memory>
 #include <vector>
 
-#include "body.hpp"
-#include "contact_solver.hpp"
-#include "discretization.hpp"
-#include "sparse_contact.hpp"
+#include "assembly/discretization.hpp"
+#include "body/body.hpp"
+#include "contact/contact_solver.hpp"
+#include "contact/friction_law.hpp"
+#include "contact/sparse_contact.hpp"
 
 namespace contactbody {
 

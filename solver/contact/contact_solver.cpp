@@ -1,12 +1,12 @@
-#include "contact_solver.hpp"
+#include "contact/contact_solver.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
 
-#include "build_features.hpp"
-#include "text.hpp"
+#include "util/build_features.hpp"
+#include "util/text.hpp"
 
 
 namespace contactbody {

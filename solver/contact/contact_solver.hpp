@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "sliding_product.hpp"
+#include "contact/sliding_product.hpp"
 
 namespace contactbody {
 

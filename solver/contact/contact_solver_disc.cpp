@@ -12,8 +12,8 @@
 
 #include <Eigen/Dense>
 
-#include "contact_solver.hpp"
-#include "text.hpp"
+#include "contact/contact_solver.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 

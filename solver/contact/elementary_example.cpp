@@ -1,4 +1,4 @@
-#include "elementary_example.hpp"
+#include "contact/elementary_example.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "contact_solver.hpp"
+#include "contact/contact_solver.hpp"
+#include "contact/friction_law.hpp"
 
 namespace contactbody {
 

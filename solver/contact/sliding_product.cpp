@@ -1,4 +1,4 @@
-#include "sliding_product.hpp"
+#include "contact/sliding_product.hpp"
 
 namespace contactbody {
 

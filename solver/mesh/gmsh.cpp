@@ -1,4 +1,4 @@
-#include "gmsh.hpp"
+#include "mesh/gmsh.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -12,8 +12,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include "c_file.hpp"
-#include "text.hpp"
+#include "util/c_file.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace contactbody {
 

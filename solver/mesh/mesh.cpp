@@ -1,4 +1,4 @@
-#include "mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "edge_output.hpp"
+#include "output/edge_output.hpp"
 
 #include <cerrno>
 #include <cstring>

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "c_file.hpp"
-#include "simulation.hpp"
+#include "util/c_file.hpp"
+#include "simulation/simulation.hpp"
 
 namespace contactbody {
 

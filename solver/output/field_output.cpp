@@ -1,4 +1,4 @@
-#include "field_output.hpp"
+#include "output/field_output.hpp"
 
 #include <cerrno>
 #include <cstdint>
@@ -6,7 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "c_file.hpp"
+#include "util/c_file.hpp"
 
 namespace contactbody {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "stepper.hpp"
+#include "body/stepper.hpp"
 
 namespace contactbody {
 

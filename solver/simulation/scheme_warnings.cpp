@@ -1,13 +1,13 @@
-#include "scheme_warnings.hpp"
 
+#include "contact/friction_law.hpp"
+#include "simulation/scheme_warnings.hpp"
+#include "simulation/stability_map_data.hpp"
+#include "util/text.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
 #include <vector>
-
-#include "stability_map_data.hpp"
-#include "text.hpp"
 
 namespace contactbody {
 

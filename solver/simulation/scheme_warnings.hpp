@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 
 namespace contactbody {
 

@@ -1,8 +1,8 @@
-#include "simulation.hpp"
+#include "simulation/simulation.hpp"
 
-#include "reduced_stepper.hpp"
-#include "scheme_warnings.hpp"
-#include "text.hpp"
+#include "reduced/reduced_stepper.hpp"
+#include "simulation/scheme_warnings.hpp"
+#include "util/text.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 #include <vector>
 #include <utility>
 
-#include "body.hpp"
-#include "stepper.hpp"
+#include "body/body.hpp"
+#include "body/stepper.hpp"
 
 namespace contactbody {
 

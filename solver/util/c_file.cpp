@@ -1,4 +1,4 @@
-#include "c_file.hpp"
+#include "util/c_file.hpp"
 
 #include <cerrno>
 

@@ -1,6 +1,6 @@
-#include "trailing_cholesky.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
-#include "build_features.hpp"
+#include "util/build_features.hpp"
 
 #if CONTACTBODY_SOLID_BODIES
 #include <Eigen/SparseLU>

@@ -1,13 +1,13 @@
-#include "reduced_stepper.hpp"
+#include "reduced/reduced_stepper.hpp"
 
-#include "clamp_rows.hpp"
+#include "reduced/clamp_rows.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "text.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 

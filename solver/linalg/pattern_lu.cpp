@@ -1,4 +1,4 @@
-#include "pattern_lu.hpp"
+#include "linalg/pattern_lu.hpp"
 
 #include <algorithm>
 #include <cmath>

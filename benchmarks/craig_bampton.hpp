@@ -11,10 +11,10 @@
 #include <array>
 #include <memory>
 
-#include "body.hpp"
-#include "clamp_rows.hpp"
-#include "contact_solver.hpp"
-#include "stepper.hpp"
+#include "body/body.hpp"
+#include "reduced/clamp_rows.hpp"
+#include "contact/contact_solver.hpp"
+#include "body/stepper.hpp"
 
 namespace contactbody {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "modal_basis.hpp"
+#include "reduced/modal_basis.hpp"
 
 namespace contactbody {
 

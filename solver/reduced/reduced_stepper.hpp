@@ -17,11 +17,11 @@
 #include <memory>
 #include <optional>
 
-#include "clamp_rows.hpp"
-#include "contact_solver.hpp"
-#include "modal_basis.hpp"
-#include "body.hpp"
-#include "stepper.hpp"
+#include "reduced/clamp_rows.hpp"
+#include "contact/contact_solver.hpp"
+#include "reduced/modal_basis.hpp"
+#include "body/body.hpp"
+#include "body/stepper.hpp"
 
 namespace contactbody {
 

@@ -1,4 +1,4 @@
-#include "clamp_rows.hpp"
+#include "reduced/clamp_rows.hpp"
 
 namespace contactbody {
 

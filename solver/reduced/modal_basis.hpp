@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 #include <functional>
 
-#include "discretization.hpp"
+#include "assembly/discretization.hpp"
 
 namespace contactbody {
 

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "assembly.hpp"
+#include "assembly/assembly.hpp"
 
 namespace contactbody {
 

@@ -1,4 +1,4 @@
-#include "modal_basis.hpp"
+#include "reduced/modal_basis.hpp"
 
 #include <Spectra/SymEigsSolver.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "trailing_cholesky.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 namespace contactbody {
 

@@ -31,87 +31,11 @@
 #include <memory>
 #include <vector>
 
-#include "assembly.hpp"
-#include "contact_solver.hpp"
+#include "assembly/assembly.hpp"
+#include "contact/contact_solver.hpp"
+#include "linalg/held_operator.hpp"
 
 namespace contactbody {
-
-class TrailingCholesky;
-class PatternLu;
-
-// K on the free dofs for one substep size, with a set of contact unknowns held.
-class HeldOperator {
-public:
-    // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
-    // then x dofs; Discretization::contact_unknowns).
-    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs);
-    ~HeldOperator();
-    HeldOperator(const HeldOperator&) = delete;
-    HeldOperator& operator=(const HeldOperator&) = delete;
-
-    Eigen::Index size() const { return K_.rows(); }
-    Eigen::Index unknowns() const { return static_cast<Eigen::Index>(dofs_.size()); }
-    int dof(Eigen::Index j) const { return dofs_[static_cast<size_t>(j)]; }
-    // K's diagonal at contact unknown j: 1 / K_jj <= W_jj, the augmentation parameter's scale.
-    double stiffness(Eigen::Index j) const { return stiffness_[j]; }
-    // (K x) at contact unknown j's dof.
-    double row_product(Eigen::Index j, const Eigen::VectorXd& x) const {
-        return rows_.row(j).dot(x);
-    }
-    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed), and of a 2D
-    // body (2 n unknowns) loads each node i with slip[i] != 0 along x by sf = slip[i] times
-    // the slip coefficient times its held y dof's reaction (the pressure's sign: r_x = sf r_y,
-    // as SparseContactSolver's slip law): that x dof's row of K_H becomes K_x - sf K_y, its
-    // right-hand side b_x - sf b_y (factored by PatternLu). Without slips (empty or zero) K_H
-    // is symmetric: K's Cholesky.
-    void hold(const std::vector<char>& held, const std::vector<signed char>& slip = {});
-    const std::vector<char>& held() const { return held_; }
-    const std::vector<signed char>& slip() const { return slip_; }
-    bool holds(const std::vector<char>& held, const std::vector<signed char>& slip) const {
-        return held == held_ && slip == slip_;
-    }
-    // F of the held slips (the kinetic coefficient: the stepper's), 0 where slips are not held
-    // (a 3D body, or a factor whose LU found no pivot: then never again). A new one refactors.
-    double slip_coefficient() const { return slips_allowed_ ? slip_coefficient_ : 0.0; }
-    void set_slip_coefficient(double friction);
-    // b <- b - K_H(:, held) values(held) on the rows not held, and values on the held rows: the
-    // right-hand side whose held solve has x = values on the held dofs (a slipping row's
-    // right-hand side is b_x - sf b_y).
-    void impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const;
-    // x = K_H^-1 b (K_H: K with the held rows and columns the identity's, and the slipping rows).
-    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
-    long refactorizations() const { return refactorizations_; }
-    double factor_nonzeros() const;
-    // What a refactorization costs in held solves: its flops (the analysis's) over a solve's,
-    // 4 per nonzero of L (forward and backward).
-    double refactorization_in_solves() const;
-    TrailingCholesky& factor() { return *factor_; }
-
-private:
-    SparseMatrix K_;                 // both triangles: the held columns' entries
-    SparseMatrix lower_, held_lower_;  // lower triangle, and as factored (same pattern)
-    RowMajorSparseMatrix rows_;      // K's rows at the contact unknowns
-    std::vector<int> dofs_;
-    Eigen::VectorXd stiffness_;
-    // Per contact unknown: the positions in lower_'s values of its row and column, and of its
-    // diagonal entry.
-    std::vector<std::vector<int>> positions_;
-    std::vector<int> diagonal_;
-    std::unique_ptr<TrailingCholesky> factor_;
-    std::vector<char> held_, held_dof_;  // per contact unknown, per free dof
-    long refactorizations_ = 0;
-    // The slipping rows' factor: K's values (both triangles) as held, and per contact unknown
-    // the positions of its row's entries (aligned with its column's: x's and y's of a node
-    // match) and of its diagonal; each free dof's contact unknown (or -1).
-    std::unique_ptr<PatternLu> lu_;
-    bool lu_held_ = false, slips_allowed_ = false;
-    double slip_coefficient_ = 0;
-    std::vector<signed char> slip_;
-    std::vector<double> lu_values_;
-    std::vector<std::vector<int>> row_positions_;
-    std::vector<int> full_diagonal_, unknown_of_;
-    void factor_held();
-};
 
 class SparseContactSolver {
 public:

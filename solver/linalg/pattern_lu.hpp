@@ -10,7 +10,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "assembly.hpp"
+#include "assembly/assembly.hpp"
 
 namespace contactbody {
 

@@ -6,8 +6,8 @@
 
 #include <Eigen/Dense>
 
-#include "discretization.hpp"
-#include "stepper.hpp"
+#include "assembly/discretization.hpp"
+#include "body/stepper.hpp"
 
 namespace contactbody {
 

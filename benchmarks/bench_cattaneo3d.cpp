@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         }
         StepInputs in;
         in.top_displacement = top;
-        in.foundation_velocity = speed;
+        in.foundation_velocity[0] = speed;
         std::printf(", \"records\": [");
         const auto t1 = Clock::now();
         const int steps = static_cast<int>(stop / interval + 0.5);
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
             sim.do_step(interval, in);
             const Observables& o = sim.observables();
             std::printf("%s{\"t\": %.9g, \"P\": %.17g, \"Q\": %.17g, \"state\": [", k ? ", " : "", sim.time(),
-                        o.normal_force, o.friction_force);
+                        o.normal_force, o.friction_force[0]);
             for (Eigen::Index i = 0; i < sim.edge().state.size(); ++i)
                 std::printf("%s%d", i ? "," : "", static_cast<int>(sim.edge().state[i]));
             std::printf("]}");

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     constexpr int warm = 50, rounds = 5;
     const double top = -2.5e-5;
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = top;
 
     auto t0 = Clock::now();

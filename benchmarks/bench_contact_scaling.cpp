@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     Simulation sim(std::move(body), top);
     const double start = seconds_since(t0);
     StepInputs in;
-    in.foundation_velocity = velocity;
+    in.foundation_velocity[0] = velocity;
     in.top_displacement = top;
     sim.do_step(step, in);  // factors what the others reuse
     // The floor: one solve with K's factor in its fill-reducing order. The full body's is its own

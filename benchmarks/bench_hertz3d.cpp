@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
         std::printf("{\"nodes\": %d, \"contact_nodes\": %zu, \"start_seconds\": %.6g, "
                     "\"peak_mb\": %.1f, \"load\": %.17g, \"top_reaction_y\": %.17g, \"contact_path\": %s, \"notes\": %s",
                     mesh.num_nodes(), mesh.contact_nodes.size(), start, peak_rss_mb(), o.normal_force,
-                    o.top_reaction_y, summary.c_str(), notes.c_str());
+                    o.top_reaction[1], summary.c_str(), notes.c_str());
         const char* names[] = {"x", "z", "height", "pressure", "share"};
         for (int k = 0; k < 5; ++k) {
             std::printf(", \"%s\": [", names[k]);

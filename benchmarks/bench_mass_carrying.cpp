@@ -49,7 +49,7 @@ StepInputs impact_inputs(double t) {
 
 StepInputs sliding_inputs(double) {
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = -2.5e-5;
     return in;
 }
@@ -71,7 +71,7 @@ void run(const Scene& scene, std::unique_ptr<Body> body, const char* kind, int m
     std::string failure;
     const auto t0 = Clock::now();
     try {
-        Simulation sim(std::move(body), scene.top0, 0, 0, sliding_inputs(0).foundation_velocity);
+        Simulation sim(std::move(body), scene.top0, 0, 0, sliding_inputs(0).foundation_velocity[0]);
         const double E0 = sim.observables().energy;
         scale = E0;
         const int steps = static_cast<int>(std::lround(scene.stop / scene.interval));
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
     Scene impact{"impact", base, 0.0, 1.5e-3, 1e-5, impact_inputs};
     impact.params.friction_coefficient = 0;
     impact.params.initial_gap = 1e-5;
-    impact.params.initial_velocity_y = -1.0;
+    impact.params.initial_velocity[1] = -1.0;
     Scene sliding{"sliding", base, -2.5e-5, 5e-3, 1e-4, sliding_inputs};
     sliding.params.friction_coefficient = 0.3;
     sliding.params.damping_stiffness = 4e-6;

@@ -52,7 +52,7 @@ Series run(double dt, double stop, Step&& step, Energy&& energy) {
         for (int k = 0; k < per_interval; ++k) {
             const SubstepReport r = step(dt);
             n += r.normal_force;
-            f += r.friction_force;
+            f += r.friction_force[0];
         }
         s.normal.push_back(n / per_interval);
         s.friction.push_back(f / per_interval);

@@ -44,7 +44,7 @@ Run simulate(const SceneParameters& p, int steps, double perturbation) {
     Run run;
     const double top = -2.5e-5;
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = top;
     try {
         Simulation sim(p, top, 0, 0, 0);
@@ -65,8 +65,8 @@ Run simulate(const SceneParameters& p, int steps, double perturbation) {
             run.normal.push_back(sim.observables().normal_force);
             const auto m1 = Clock::now();
             sim.full_state(after);
-            for (size_t i = 0; i < d.contact_x.size(); ++i) {
-                const int dof = d.free_dofs[static_cast<size_t>(d.contact_x[i])];
+            for (size_t i = 0; i < d.contact_tangential[0].size(); ++i) {
+                const int dof = d.free_dofs[static_cast<size_t>(d.contact_tangential[0][i])];
                 const double mean = (after.u[dof] - before.u[dof]) / p.internal_step;
                 run.departure = std::max(run.departure, std::abs(after.v[dof] - mean));
             }

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     const SceneParameters p = paper_scene(argv);
     const int steps = std::atoi(argv[3]);
     const double top = -2.5e-5;
-    const StepInputs inputs{20, top, 0, 0};
+    const StepInputs inputs{{20, 0}, {0, 0}, top, 0};
 
     struct Schedule {
         const char* name;

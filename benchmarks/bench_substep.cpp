@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     // Energies are computed only when an output asks for them: what one evaluation costs
     // (each do_step of one substep makes the next observables() call recompute them).
     Simulation sim(p, top);
-    const StepInputs inputs{20, top, 0, 0};
+    const StepInputs inputs{{20, 0}, {0, 0}, top, 0};
     double energy_seconds = 0, e = 0;
     const int evaluations = 50;
     for (int k = 0; k < evaluations; ++k) {

@@ -73,7 +73,7 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
     Bhat_.resize(nb, n);
     Blift_.resize(nb);
     for (int i = 0; i < nc; ++i) {  // N_i = -e_y(i), T_i = +e_x(i)
-        const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_x[static_cast<size_t>(i)];
+        const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_tangential[0][static_cast<size_t>(i)];
         Bhat_.row(i) = -T_.row(y);
         Bhat_.row(nc + i) = T_.row(x);
         Blift_[i] = -S[y];
@@ -264,15 +264,15 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     if (params_.damped())
         r += 0.5 * c2 * (coupling_c.dot(du_) + (alpha * mass_tt + beta * stiffness_tt) * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
-    report.top_reaction_y = r;
+    report.top_reaction[1] = r;
     report.work.clamp = r * du_t;
-    report.top_reaction_x = clamp_x_.residual(
+    report.top_reaction[0] = clamp_x_.residual(
         {c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()}, y, ydot, w_, du_);
 
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
-        touching, solver_.status(), [&](int i) { return contact_u_[i]; },
-        [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, 1, params_.initial_gap,
+        disc_.mesh.contact_heights, touching, solver_.status(), [&](int i) { return contact_u_[i]; },
+        [&](int i) { return 2 * bw_[i]; }, [&](int i, int) { return 2 * bw_[nc + i]; });
 
     ydot = 2 * c2 * w_ - ydot;
     y += 2 * w_;

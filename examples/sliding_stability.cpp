@@ -100,7 +100,7 @@ static Linearization linearize(const Discretization& d, const Eigen::MatrixXd& M
     L.KF = A(L.rows, L.rows);
     for (size_t i = 0; i < d.contact_y.size(); ++i) {
         if (!touching[i]) continue;
-        const Eigen::Index x = L.position[static_cast<size_t>(d.contact_x[i])];
+        const Eigen::Index x = L.position[static_cast<size_t>(d.contact_tangential[0][i])];
         L.MF.row(x) -= F * M(d.contact_y[i], L.rows);
         L.KF.row(x) -= F * A(d.contact_y[i], L.rows);
     }
@@ -112,7 +112,7 @@ static Linearization linearize(const Discretization& d, const Eigen::MatrixXd& M
     Eigen::VectorXd rhs = -clamp_force(L.rows);
     for (size_t i = 0; i < d.contact_y.size(); ++i)
         if (touching[i])
-            rhs[L.position[static_cast<size_t>(d.contact_x[i])]] += F * clamp_force[d.contact_y[i]];
+            rhs[L.position[static_cast<size_t>(d.contact_tangential[0][i])]] += F * clamp_force[d.contact_y[i]];
     const Eigen::VectorXd steady = L.KF.partialPivLu().solve(rhs);
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_y.size());
     L.pressure = Eigen::VectorXd::Zero(nc);
@@ -214,7 +214,7 @@ int main(int argc, char** argv) {
     Eigen::MatrixXd interface_damping = Eigen::MatrixXd::Zero(modes, modes);
     for (size_t i = 0; i < nc; ++i) {
         if (!touching[i] || slope == 0) continue;
-        const Eigen::Index x = condensed[static_cast<size_t>(L.position[static_cast<size_t>(d.contact_x[i])])];
+        const Eigen::Index x = condensed[static_cast<size_t>(L.position[static_cast<size_t>(d.contact_tangential[0][i])])];
         if (x < 0) {
             std::fprintf(stderr, "sliding_stability: --slope needs a mass on the contact x dofs "
                                  "(mass_matrix %d has none)\n", static_cast<int>(p.mass_matrix));

@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
         p.reduced_edge = static_cast<ReducedEdge>(std::atoi(argv[11]));
     }
     StepInputs in;
-    in.foundation_velocity = std::atof(argv[8]);
+    in.foundation_velocity[0] = std::atof(argv[8]);
     in.top_displacement = -2.5e-5;
     Simulation sim(p, in.top_displacement);
 
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
         std::printf("%s{\"took_it\": %s, \"energy_end\": %.17g, \"friction_force_end\": %.17g, "
                     "\"slipping_end\": %d}",
                     b ? ", " : "", chosen <= 1e-9 * alternatives[b].lpNorm<Eigen::Infinity>() ? "true" : "false",
-                    o.energy, o.friction_force, o.slipping_contact_nodes);
+                    o.energy, o.friction_force[0], o.slipping_contact_nodes);
     }
     std::printf("]}\n");
     return 0;

@@ -13,6 +13,8 @@ namespace contactbody::fmu {
 
 namespace {
 
+constexpr size_t tangents = model_dimension - 1;  // the edge's friction and slip velocities
+
 // Each model's own: a ContactBody state is refused by ContactBody3D, and the reverse.
 constexpr char magic[8] = {'C', 'B', solid_model ? '3' : 'F', solid_model ? 'D' : 'M', 'U', 'S', 'T', '\0'};
 constexpr size_t header_size = sizeof(magic) + 4 + 8 + 8;  // magic, version, size, checksum
@@ -176,12 +178,12 @@ std::vector<char> serialize(const FmuState& s) {
         w.value(sim.initial_energy);
         w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
-        for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction,
-                                         &sim.edge.slip_velocity, &sim.edge.gap})
+        for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction[0],
+                                         &sim.edge.slip_velocity[0], &sim.edge.gap})
             w.vector(*x);
-        if (solid_model) {
-            w.vector(sim.edge.friction_z);
-            w.vector(sim.edge.slip_velocity_z);
+        for (size_t t = 1; t < tangents; ++t) {
+            w.vector(sim.edge.friction[t]);
+            w.vector(sim.edge.slip_velocity[t]);
         }
         w.value<uint64_t>(static_cast<uint64_t>(sim.edge.state.size()));
         for (Eigen::Index i = 0; i < sim.edge.state.size(); ++i) w.value<int8_t>(sim.edge.state[i]);
@@ -227,7 +229,7 @@ FmuState deserialize(const char* bytes, size_t size) {
     Reader r(payload, payload_size);
     FmuState s;
     // Every field the table does not read keeps its start (the other model's: the 2D model's
-    // foundation_velocity_z and initial_velocity_z stay 0).
+    // foundation velocity and initial velocity along z stay 0).
     s.model.values = start_values();
     s.instance_state = r.value<uint32_t>("instance state");
     if (!(s.instance_state & restorable_states) || (s.instance_state & (s.instance_state - 1)))
@@ -319,12 +321,12 @@ FmuState deserialize(const char* bytes, size_t size) {
         });
         EdgeSnapshot& edge = sim.edge;
         edge.pressure = r.vector("edge pressure", nc);
-        edge.friction = r.vector("edge friction", nc);
-        edge.slip_velocity = r.vector("edge slip velocity", nc);
+        edge.friction[0] = r.vector("edge friction", nc);
+        edge.slip_velocity[0] = r.vector("edge slip velocity", nc);
         edge.gap = r.vector("edge gap", nc);
-        if (solid_model) {
-            edge.friction_z = r.vector("edge friction z", nc);
-            edge.slip_velocity_z = r.vector("edge slip velocity z", nc);
+        for (size_t t = 1; t < tangents; ++t) {
+            edge.friction[t] = r.vector("edge friction z", nc);
+            edge.slip_velocity[t] = r.vector("edge slip velocity z", nc);
         }
         if (r.value<uint64_t>("edge states") != static_cast<uint64_t>(nc))
             r.fail("edge states do not fit the mesh");

@@ -134,7 +134,7 @@ size_t ContactBodyModel::size(const Variable& v) const {
 void ContactBodyModel::get_edge(const Variable& v, double* out) {
     if (!v.edge_real) throw ModelError(concat("variable ", v.name, " is not a Float64 array"));
     refresh_outputs();
-    const Eigen::VectorXd& x = sim_->edge().*v.edge_real;
+    const Eigen::VectorXd& x = v.edge_real(sim_->edge());
     std::copy(x.data(), x.data() + x.size(), out);
 }
 
@@ -163,9 +163,9 @@ void ContactBodyModel::build_simulation(const Values& values) {
     SceneParameters scene = values.scene();
     scene.mesh = mesh_path(scene.mesh, resources_);
     // The foundation's initial speed in its plane (the warnings' sliding speed).
-    const double sliding_speed = solid_model ? std::sqrt(values.foundation_velocity * values.foundation_velocity +
-                                                         values.foundation_velocity_z * values.foundation_velocity_z)
-                                             : values.foundation_velocity;
+    double sliding_speed = 0;
+    for (double v : values.foundation_velocity) sliding_speed += v * v;
+    sliding_speed = std::sqrt(sliding_speed);
     try {
         // The same parameters, and a mesh file as it was when the body was built from it.
         if (sim_ && same_discretization(sim_->body().parameters(), scene) &&
@@ -201,7 +201,7 @@ void ContactBodyModel::open_field_output() {
         if (values_.edge_output_interval > 0)
             edge_ = std::make_unique<EdgeWriter>(
                 join_path(values_.result_directory, "contactbody_edge.npy"),
-                sim_->body().num_contact_nodes(), sim_->body().discretization().mesh.dim == 3);
+                sim_->body().num_contact_nodes(), sim_->body().discretization().mesh.tangents());
     } catch (const std::exception& e) {
         throw ModelError(e.what());
     }
@@ -252,8 +252,8 @@ void ContactBodyModel::check_structure() const {
 }
 
 std::array<double, num_inputs> ContactBodyModel::current_inputs() const {
-    return {values_.foundation_velocity, values_.top_displacement, values_.top_force,
-            values_.foundation_velocity_z};
+    return {values_.foundation_velocity[0], values_.top_displacement, values_.top_force,
+            values_.foundation_velocity[1]};
 }
 
 void ContactBodyModel::initialize() {
@@ -373,8 +373,8 @@ void ContactBodyModel::do_step(double current_time, double h) {
     // Each input's value at the step's start and its rate across the step: the derivative the
     // master set, or with input_interpolation = ramp and no derivative, the line from the
     // value at the previous communication point to the one set now.
-    const std::array<double*, num_inputs> value = {&values_.foundation_velocity, &values_.top_displacement,
-                                                   &values_.top_force, &values_.foundation_velocity_z};
+    const std::array<double*, num_inputs> value = {&values_.foundation_velocity[0], &values_.top_displacement,
+                                                   &values_.top_force, &values_.foundation_velocity[1]};
     std::array<double, num_inputs> start{}, rate{};
     const bool ramp = values_.input_interpolation == static_cast<int>(InputInterpolation::ramp);
     for (int i = 0; i < num_inputs; ++i) {
@@ -383,14 +383,12 @@ void ContactBodyModel::do_step(double current_time, double h) {
         rate[i] = ramped ? (*value[i] - previous_inputs_[i]) / h : input_rates_[i];
     }
     StepInputs in;
-    in.foundation_velocity = start[0];
+    in.foundation_velocity = {start[0], start[3]};  // the tangents' slots (Input)
+    in.foundation_acceleration = {rate[0], rate[3]};
     in.top_displacement = start[1];
-    in.foundation_acceleration = rate[0];
     in.top_velocity = rate[1];
     in.top_force = start[2];
     in.top_force_rate = rate[2];
-    in.foundation_velocity_z = start[3];
-    in.foundation_acceleration_z = rate[3];
     try {
         sim_->do_step(h, in);
         // Interpolated inputs go on along their line until the master sets them again.

@@ -49,6 +49,15 @@ Variable real(const char* name, unsigned vr, double Values::*field, const char* 
     return v;
 }
 
+// A component of a per-tangent or per-component field (foundation_velocity_z: tangent 1).
+template <size_t N>
+Variable real(const char* name, unsigned vr, std::array<double, N> Values::*field, size_t component,
+              const char* unit, double start, double min, double max, const char* description) {
+    Variable v = declare(name, vr, T::Real, C::parameter, V::fixed, unit, start, min, max, description);
+    v.real = [field, component](Values& values) -> double& { return (values.*field)[component]; };
+    return v;
+}
+
 Variable integer(const char* name, unsigned vr, int Values::*field, double start, double min,
                  double max, const char* description) {
     Variable v = declare(name, vr, T::Integer, C::parameter, V::fixed, "", start, min, max, description);
@@ -109,8 +118,15 @@ Variable output(const char* name, unsigned vr, const char* unit, const char* des
 }
 
 // FMI 3.0 outputs along the contact edge.
+// An edge array's field: the snapshot's `field`, or tangent t's of a per-tangent one.
+template <auto field, int t = -1>
+const Eigen::VectorXd& edge_field(const EdgeSnapshot& e) {
+    if constexpr (t < 0) return e.*field;
+    else return (e.*field)[t];
+}
+
 Variable edge_output(const char* name, unsigned vr, const char* unit,
-                     const Eigen::VectorXd EdgeSnapshot::*field, const char* description) {
+                     const Eigen::VectorXd& (*field)(const EdgeSnapshot&), const char* description) {
     Variable v = declare(name, vr, T::Real, C::output, V::continuous, unit, none, none, none, description);
     v.edge_real = field;
     v.standard = Standard::fmi3;
@@ -286,9 +302,9 @@ const std::vector<Variable>& all_rows() {
         enumeration("input_interpolation", 18, &Values::input_interpolation, "InputInterpolation", 0, "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp (linearly from its value at the previous communication point: one step of delay, no jumps)").as_fmu_only(),
         enumeration("top_control", 19, &Values::top_control, "TopControl", 0, per_body("Top edge: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = 0, pushed down by the input top_force; top_displacement then only sets the initial position)", "Clamp group: displacement (clamped to the input top_displacement) or force (a rigid plate of mass top_mass with u_x = u_z = 0, pushed down by the input top_force; top_displacement then only sets the initial position)")),
         real("top_mass", 23, &Values::top_mass, per_body("kg/m", "kg"), 1.0, 1e-9, inf, "Mass of the top plate (top_control = force)"),
-        real("initial_velocity_x", 24, &Values::initial_velocity_x, "m/s", 0, none, none, "Uniform initial velocity of the body, x (the clamped dofs excepted)"),
-        real("initial_velocity_y", 25, &Values::initial_velocity_y, "m/s", 0, none, none, "Uniform initial velocity of the body, y (with the plate under force control)"),
-        SOLID_ROW(real("initial_velocity_z", 37, &Values::initial_velocity_z, "m/s", 0, none, none, "Uniform initial velocity of the body, z (the clamped dofs excepted)"))
+        real("initial_velocity_x", 24, &Values::initial_velocity, 0, "m/s", 0, none, none, "Uniform initial velocity of the body, x (the clamped dofs excepted)"),
+        real("initial_velocity_y", 25, &Values::initial_velocity, 1, "m/s", 0, none, none, "Uniform initial velocity of the body, y (with the plate under force control)"),
+        SOLID_ROW(real("initial_velocity_z", 37, &Values::initial_velocity, 2, "m/s", 0, none, none, "Uniform initial velocity of the body, z (the clamped dofs excepted)"))
         enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0, "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a free vibration follows) or static (the static equilibrium under the initial top_displacement, or under top_force > 0 with top_control = force, with the foundation at rest, reached by a quasi-static frictional load path)"),
         real("max_energy", 29, &Values::max_energy, per_body("J/m", "J"), 0, 0, inf, "Blow-up guard: a step that ends with the energy E above this fails with an error status, naming the time, E, the works and the likely cause; 0 = no absolute limit"),
         real("max_energy_ratio", 30, &Values::max_energy_ratio, "", 1e6, 0, inf, "Blow-up guard: a step that ends with E above max_energy_ratio x (E(0) + |clamp_work| + |foundation_work|) fails with an error status, naming the time, E, the works and the likely cause; 0 = off. The default 1e6 is above the growth of every run of the paper's Figs. 7-8 but variant 0 at internal_step 1e-6 s, whose growth is chaotic and crosses it in some draws (the examples that measure growth set 0)"),
@@ -298,8 +314,8 @@ const std::vector<Variable>& all_rows() {
         integer("modes", 34, &Values::modes, 0, 0, max_reduced_modes, per_body("The body: 0 = the full mesh; m > 0 = the reduced body: the contact edge kept exact, the interior reduced to its m lowest modes plus the edge's residual attachment modes (massless boundary component mode synthesis; reduced_edge chooses whether the edge's x dofs keep their mass); under top_control = force the plate's translation is one more coordinate. At most the body's finite modes (free dofs less massless ones), and of a body above 2000 free dofs at most 500 and at most a quarter of them. The basis is built at initialization and kept over a reset", "The body: 0 = the full mesh; m > 0 = the reduced body: the contact edge kept exact, the interior reduced to its m lowest modes plus the edge's residual attachment modes (massless boundary component mode synthesis; reduced_edge chooses whether the edge's x and z dofs keep their mass); under top_control = force the plate's translation is one more coordinate. At most the body's finite modes (free dofs less massless ones), and of a body above 2000 free dofs at most 500 and at most a quarter of them. The basis is built at initialization and kept over a reset")),
         enumeration("reduced_edge", 36, &Values::reduced_edge, "ReducedEdge", 0, per_body("The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose x dofs have no mass); by_variant takes the default measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2", "The reduced body's contact edge (modes > 0): massless (every contact dof a massless residual coordinate) or tangential_mass (the contact x and z dofs kept as coordinates that carry the variant's tangential mass, the normal dofs massless: the paper's principle; not with redistributed_both, whose tangential dofs have no mass); by_variant takes the default measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2")),
         // Inputs
-        real("foundation_velocity", 20, &Values::foundation_velocity, "m/s", 20, none, none, per_body("Horizontal velocity V of the rigid foundation", "Velocity of the rigid foundation in its plane, x component")).as_input(Input::foundation_velocity),
-        SOLID_ROW(real("foundation_velocity_z", 38, &Values::foundation_velocity_z, "m/s", 0, none, none, "Velocity of the rigid foundation in its plane, z component").as_input(Input::foundation_velocity_z))
+        real("foundation_velocity", 20, &Values::foundation_velocity, 0, "m/s", 20, none, none, per_body("Horizontal velocity V of the rigid foundation", "Velocity of the rigid foundation in its plane, x component")).as_input(Input::foundation_velocity),
+        SOLID_ROW(real("foundation_velocity_z", 38, &Values::foundation_velocity, 1, "m/s", 0, none, none, "Velocity of the rigid foundation in its plane, z component").as_input(Input::foundation_velocity_z))
         real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none, per_body("Prescribed vertical displacement of the top edge", "Prescribed vertical (y) displacement of the clamp group")).as_input(Input::top_displacement),
         real("top_force", 22, &Values::top_force, per_body("N/m", "N"), 0, none, none, "Force pressing the top plate down (top_control = force), positive downwards").as_input(Input::top_force),
         // Outputs
@@ -331,14 +347,14 @@ const std::vector<Variable>& all_rows() {
         output("contact_iterations", 123, "", "Semi-smooth Newton iterations of the contact solves in the last communication step, summed"),
         output("gauss_seidel_sweeps", 124, "", "Sweeps of the contact solver's Gauss-Seidel fallback in the last communication step, summed (0 when Newton always converged)"),
         // Outputs along the contact edge (FMI 3.0: arrays of edge_nodes values, ordered by x)
-        edge_output("edge_x", 130, "m", &EdgeSnapshot::x, "Position x of each bottom node (reference configuration)").as_discrete(),
-        SOLID_ROW(edge_output("edge_z", 136, "m", &EdgeSnapshot::z, "Position z of each contact node (reference configuration)").as_discrete())
-        edge_output("edge_pressure", 131, "Pa", &EdgeSnapshot::pressure, "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)"),
-        edge_output("edge_friction", 132, "Pa", &EdgeSnapshot::friction, "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)"),
-        SOLID_ROW(edge_output("edge_friction_z", 137, "Pa", &EdgeSnapshot::friction_z, "Friction force density at each contact node, signed z component, averaged like friction_force_z (node shares x densities sum to friction_force_z)"))
-        edge_output("edge_slip_velocity", 133, "m/s", &EdgeSnapshot::slip_velocity, "Velocity x of each bottom node relative to the foundation over the last substep"),
-        SOLID_ROW(edge_output("edge_slip_velocity_z", 138, "m/s", &EdgeSnapshot::slip_velocity_z, "Velocity z of each contact node relative to the foundation over the last substep"))
-        edge_output("edge_gap", 134, "m", &EdgeSnapshot::gap, "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)"),
+        edge_output("edge_x", 130, "m", edge_field<&EdgeSnapshot::x>, "Position x of each bottom node (reference configuration)").as_discrete(),
+        SOLID_ROW(edge_output("edge_z", 136, "m", edge_field<&EdgeSnapshot::z>, "Position z of each contact node (reference configuration)").as_discrete())
+        edge_output("edge_pressure", 131, "Pa", edge_field<&EdgeSnapshot::pressure>, "Contact pressure at each bottom node, averaged over the last communication step like normal_force (node shares x pressures sum to normal_force)"),
+        edge_output("edge_friction", 132, "Pa", edge_field<&EdgeSnapshot::friction, 0>, "Friction force density at each bottom node, signed x component, averaged like friction_force (node shares x densities sum to friction_force)"),
+        SOLID_ROW(edge_output("edge_friction_z", 137, "Pa", edge_field<&EdgeSnapshot::friction, 1>, "Friction force density at each contact node, signed z component, averaged like friction_force_z (node shares x densities sum to friction_force_z)"))
+        edge_output("edge_slip_velocity", 133, "m/s", edge_field<&EdgeSnapshot::slip_velocity, 0>, "Velocity x of each bottom node relative to the foundation over the last substep"),
+        SOLID_ROW(edge_output("edge_slip_velocity_z", 138, "m/s", edge_field<&EdgeSnapshot::slip_velocity, 1>, "Velocity z of each contact node relative to the foundation over the last substep"))
+        edge_output("edge_gap", 134, "m", edge_field<&EdgeSnapshot::gap>, "Height of each bottom node above the foundation at the end of the step (< 0: penetration, see max_penetration)"),
         edge_state_output("edge_state", 135, "Contact state of each bottom node in the last substep: open, stick or slip (counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)"),
     });
     return rows;

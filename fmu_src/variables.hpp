@@ -39,7 +39,8 @@ struct Values {
     int input_interpolation;  // InputInterpolation
     int top_control;          // TopControl
     int initial_state;        // InitialState
-    double top_mass, initial_velocity_x, initial_velocity_y, initial_velocity_z;
+    double top_mass;
+    PerComponent initial_velocity;  // initial_velocity_x, _y and (the 3D model's) the z one
     double static_friction_ratio;
     double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
@@ -48,7 +49,8 @@ struct Values {
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;  // 0: no edge history
-    double foundation_velocity, top_displacement, top_force, foundation_velocity_z;
+    Tangential foundation_velocity;  // foundation_velocity and (the 3D model's) the z one
+    double top_displacement, top_force;
     Observables out;
 
     SceneParameters scene() const;
@@ -95,7 +97,7 @@ struct Variable {
     int dimension = 0;
     // FMI 3.0 arrays along the contact edge, edge_nodes values each: a field of the edge
     // snapshot (Float64), or its contact states (edge_state: an Enumeration array).
-    const Eigen::VectorXd EdgeSnapshot::*edge_real = nullptr;
+    const Eigen::VectorXd& (*edge_real)(const EdgeSnapshot&) = nullptr;
     bool edge_state = false;
     Input input = Input::none;
     // A parameter that no SceneParameters field takes (it configures the FMU layer).

@@ -75,7 +75,7 @@ protected:
 TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
     Simulation sim(scene(), -2.5e-5);
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = -2.5e-5;
     armed = true;
     sim.do_step(1e-4, in);  // cold: factorization and workspaces
@@ -98,7 +98,7 @@ TEST_P(NoAllocation, OnTheSparseContactSolveOnceWarm) {
     const Stepper& body = *stepper;
     Simulation sim(std::move(stepper), -2.5e-5);
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = -2.5e-5;
     for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);
     ASSERT_TRUE(body.sparse_contact());
@@ -124,7 +124,7 @@ TEST(NoAllocationWithTheSlipRateLaw, InTheStepLoopOnceWarm) {
         p.damping_stiffness = 4e-6;
         Simulation sim(p, -2.5e-5);
         StepInputs in;
-        in.foundation_velocity = 5;
+        in.foundation_velocity[0] = 5;
         in.top_displacement = -2.5e-5;
         for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);
         EXPECT_GT(expect_no_allocation(sim, in), 0) << "variant " << variant;

@@ -285,12 +285,12 @@ TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndAZVelocity) {
     // A 2D body (the rectangle) has no z: neither a z velocity of its foundation nor of itself.
     SceneParameters planar;
     planar.nx = planar.ny = 4;
-    planar.initial_velocity_z = 1;
+    planar.initial_velocity[2] = 1;
     EXPECT_NE(thrown([&] { check_parameters(planar); }).find("initial_velocity_z must be 0 for a 2D body"), std::string::npos);
-    planar.initial_velocity_z = 0;
+    planar.initial_velocity[2] = 0;
     Simulation sim(planar, -1e-5);
     StepInputs in;
-    in.foundation_velocity_z = 0.5;
+    in.foundation_velocity[1] = 0.5;
     EXPECT_NE(thrown([&] { sim.do_step(1e-5, in); }).find("a 2D body (plane strain in x-y) has no z direction"), std::string::npos);
 }
 
@@ -332,22 +332,22 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
     Sliding out;
     SubstepLoad load;
     load.top_start = load.top_end = -2e-5;
-    load.foundation_velocity = speed * std::cos(heading);
-    load.foundation_velocity_z = speed * std::sin(heading);
+    load.foundation_velocity[0] = speed * std::cos(heading);
+    load.foundation_velocity[1] = speed * std::sin(heading);
     const int nc = static_cast<int>(mesh.contact_nodes.size());
     double scale = E0;
     for (int k = 0; k < substeps; ++k) {
         const State before = s;
         const double angle = heading + heading_rate * k * dt;  // the foundation's path turns
-        load.foundation_velocity = speed * std::cos(angle);
-        load.foundation_velocity_z = speed * std::sin(angle);
+        load.foundation_velocity[0] = speed * std::cos(angle);
+        load.foundation_velocity[1] = speed * std::sin(angle);
         const SubstepReport r = body.substep(s, dt, load);
         works += r.work;
         out.least_substep_dissipation = std::min(out.least_substep_dissipation, r.work.friction_dissipation);
         scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction), std::abs(works.foundation)});
         out.normal += r.normal_force;
-        out.friction_x += r.friction_force;
-        out.friction_z += r.friction_force_z;
+        out.friction_x += r.friction_force[0];
+        out.friction_z += r.friction_force[1];
         // The law at every node: |lambda_T| <= F p, and a slipping node's friction is F p
         // against its slip (the substep's mean slip rate relative to the foundation).
         const auto& status = body.contact_solver().status();
@@ -356,8 +356,8 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
             const double size = std::hypot(tx, tz);
             if (pressure <= 0) continue;
             const int node = mesh.contact_nodes[static_cast<size_t>(i)];
-            const double sx = s.u[mesh.dof(node, 0)] - before.u[mesh.dof(node, 0)] - load.foundation_velocity * dt;
-            const double sz = s.u[mesh.dof(node, 2)] - before.u[mesh.dof(node, 2)] - load.foundation_velocity_z * dt;
+            const double sx = s.u[mesh.dof(node, 0)] - before.u[mesh.dof(node, 0)] - load.foundation_velocity[0] * dt;
+            const double sz = s.u[mesh.dof(node, 2)] - before.u[mesh.dof(node, 2)] - load.foundation_velocity[1] * dt;
             const double slip = std::hypot(sx, sz);
             // A node that stuck in the substep before holds with the static coefficient; with
             // a slip-rate law F is the law's at the slip speed |slip| / dt.
@@ -457,8 +457,8 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
                 SubstepLoad load;
                 load.top_start = load.top_end = -2e-5;
                 const double heading = creeping ? rate * k * dt : 0.6;
-                load.foundation_velocity = speed * std::cos(heading);
-                load.foundation_velocity_z = speed * std::sin(heading);
+                load.foundation_velocity[0] = speed * std::cos(heading);
+                load.foundation_velocity[1] = speed * std::sin(heading);
                 const SubstepReport ra = sparse.substep(a, dt, load);
                 const SubstepReport rb = condensed.substep(b, dt, load);
                 wa += ra.work;
@@ -467,11 +467,11 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
                 scale = std::max(scale, std::abs(rb.normal_force));
                 work_scale = std::max({work_scale, std::abs(wb.clamp), std::abs(wb.friction), std::abs(wb.foundation)});
                 worst = std::max({worst, std::abs(ra.normal_force - rb.normal_force),
-                                  std::abs(ra.friction_force - rb.friction_force),
-                                  std::abs(ra.friction_force_z - rb.friction_force_z),
-                                  std::abs(ra.top_reaction_x - rb.top_reaction_x),
-                                  std::abs(ra.top_reaction_y - rb.top_reaction_y),
-                                  std::abs(ra.top_reaction_z - rb.top_reaction_z)});
+                                  std::abs(ra.friction_force[0] - rb.friction_force[0]),
+                                  std::abs(ra.friction_force[1] - rb.friction_force[1]),
+                                  std::abs(ra.top_reaction[0] - rb.top_reaction[0]),
+                                  std::abs(ra.top_reaction[1] - rb.top_reaction[1]),
+                                  std::abs(ra.top_reaction[2] - rb.top_reaction[2])});
                 worst_work = std::max({worst_work, std::abs(wa.friction - wb.friction),
                                        std::abs(wa.friction_dissipation - wb.friction_dissipation),
                                        std::abs(wa.normal_contact - wb.normal_contact)});
@@ -535,8 +535,8 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     RecordProperty("newton_iterations", ra.contact_iterations);
     EXPECT_LT(ra.contact_iterations, 20);
     EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
-    EXPECT_NEAR(ra.friction_force, rb.friction_force, 1e-8 * rb.normal_force);
-    EXPECT_NEAR(ra.friction_force_z, rb.friction_force_z, 1e-8 * rb.normal_force);
+    EXPECT_NEAR(ra.friction_force[0], rb.friction_force[0], 1e-8 * rb.normal_force);
+    EXPECT_NEAR(ra.friction_force[1], rb.friction_force[1], 1e-8 * rb.normal_force);
     EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
 }
 
@@ -606,7 +606,7 @@ TEST(Body3D, EnergyBalanceClosesInEveryVariant) {
         SCOPED_TRACE(v);
         Box b;
         SceneParameters p = box_scene(b, "box_energy.msh", static_cast<MassVariant>(v));
-        p.initial_velocity_y = -1;
+        p.initial_velocity[1] = -1;
         p.damping_stiffness = v == 2 ? 1e-7 : 0;
         Stepper body(p);
         const auto energy = [&](const State& state) {
@@ -642,7 +642,7 @@ TEST(Body3D, StaticStartIsInBalanceAndDoesNotDependOnTheBodysTurn) {
         Simulation sim(p, -2e-5);
         const Observables& o = sim.observables();
         EXPECT_GT(o.normal_force, 0);
-        EXPECT_NEAR(o.normal_force, -o.top_reaction_y, 1e-9 * o.normal_force);
+        EXPECT_NEAR(o.normal_force, -o.top_reaction[1], 1e-9 * o.normal_force);
         EXPECT_EQ(o.active_contact_nodes, 9);  // the whole 3 x 3 contact face
         loads.push_back(o.normal_force);
         energies.push_back(o.strain_energy);
@@ -706,7 +706,7 @@ TEST(Body3D, ReducedBodyWithEveryModeIsTheFullBody) {
         SCOPED_TRACE(std::to_string(static_cast<int>(c.variant)) + " " + std::to_string(static_cast<int>(c.edge)) +
                      " F = " + std::to_string(c.friction));
         SceneParameters p = box_scene(Box{}, "box_reduced.msh", c.variant);
-        p.initial_velocity_y = -1;
+        p.initial_velocity[1] = -1;
         p.reduced_edge = c.edge;
         p.friction_coefficient = c.friction;
         Stepper full(p);
@@ -718,19 +718,19 @@ TEST(Body3D, ReducedBodyWithEveryModeIsTheFullBody) {
         int touching = 0;
         for (int k = 0; k < 300; ++k) {
             SubstepLoad load = pressing(k, dt);
-            load.foundation_velocity = 2 * std::cos(0.6);
-            load.foundation_velocity_z = 2 * std::sin(0.6);
+            load.foundation_velocity[0] = 2 * std::cos(0.6);
+            load.foundation_velocity[1] = 2 * std::sin(0.6);
             const SubstepReport a = full.substep(s, dt, load);
             const SubstepReport b = reduced.substep(r, dt, load);
             scale = std::max(scale, std::abs(a.normal_force));
             worst = std::max({worst, std::abs(a.normal_force - b.normal_force),
-                              std::abs(a.friction_force - b.friction_force),
-                              std::abs(a.friction_force_z - b.friction_force_z),
-                              std::abs(a.top_reaction_x - b.top_reaction_x),
-                              std::abs(a.top_reaction_y - b.top_reaction_y),
-                              std::abs(a.top_reaction_z - b.top_reaction_z),
+                              std::abs(a.friction_force[0] - b.friction_force[0]),
+                              std::abs(a.friction_force[1] - b.friction_force[1]),
+                              std::abs(a.top_reaction[0] - b.top_reaction[0]),
+                              std::abs(a.top_reaction[1] - b.top_reaction[1]),
+                              std::abs(a.top_reaction[2] - b.top_reaction[2]),
                               std::abs(a.work.friction_dissipation - b.work.friction_dissipation) / dt});
-            friction = std::max(friction, std::hypot(a.friction_force, a.friction_force_z));
+            friction = std::max(friction, std::hypot(a.friction_force[0], a.friction_force[1]));
             touching += a.active_nodes > 0;
         }
         EXPECT_GT(touching, 100);

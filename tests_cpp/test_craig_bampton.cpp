@@ -17,7 +17,7 @@ SceneParameters scene(MassVariant variant) {
     p.friction_coefficient = 0.3;
     p.damping_mass = 20;
     p.damping_stiffness = 4e-6;
-    p.initial_velocity_x = 0.5;
+    p.initial_velocity[0] = 0.5;
     return p;
 }
 
@@ -55,9 +55,9 @@ TEST(CraigBampton, AllModesGiveTheFullBody) {
             cb_works += b.work;
             scale = std::max(scale, std::abs(a.normal_force));
             worst = std::max({worst, std::abs(a.normal_force - b.normal_force),
-                              std::abs(a.friction_force - b.friction_force),
-                              std::abs(a.top_reaction_x - b.top_reaction_x),
-                              std::abs(a.top_reaction_y - b.top_reaction_y)});
+                              std::abs(a.friction_force[0] - b.friction_force[0]),
+                              std::abs(a.top_reaction[0] - b.top_reaction[0]),
+                              std::abs(a.top_reaction[1] - b.top_reaction[1])});
             touching += a.active_nodes > 0;
         }
         EXPECT_GT(touching, 100);

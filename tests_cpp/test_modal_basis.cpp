@@ -22,11 +22,11 @@ double relative(const Eigen::MatrixXd& x, const Eigen::MatrixXd& scale) {
 }
 
 Eigen::MatrixXd contact_transpose(const Discretization& d) {  // B^T: N = -e_y, T = +e_x
-    const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
+    const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_tangential[0].size());
     Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(d.A_free.rows(), 2 * nc);
     for (Eigen::Index i = 0; i < nc; ++i) {
         Bt(d.contact_y[static_cast<size_t>(i)], i) = -1;
-        Bt(d.contact_x[static_cast<size_t>(i)], nc + i) = 1;
+        Bt(d.contact_tangential[0][static_cast<size_t>(i)], nc + i) = 1;
     }
     return Bt;
 }

@@ -18,7 +18,7 @@ SceneParameters scene(MassVariant variant) {
     p.friction_coefficient = 0.3;
     p.damping_mass = 20;
     p.damping_stiffness = 4e-6;
-    p.initial_velocity_x = 0.5;
+    p.initial_velocity[0] = 0.5;
     return p;
 }
 
@@ -26,7 +26,7 @@ SceneParameters scene(MassVariant variant) {
 SceneParameters force_controlled(SceneParameters p) {
     p.force_control = true;
     p.top_mass = 10;
-    p.initial_velocity_y = -0.3;
+    p.initial_velocity[1] = -0.3;
     return p;
 }
 
@@ -81,10 +81,10 @@ static void expect_all_modes_give_the_full_body(bool force_control, ReducedEdge 
             reduced_works += b.work;
             force_scale = std::max(force_scale, std::abs(a.normal_force));
             const double difference = std::max({std::abs(a.normal_force - b.normal_force),
-                                                std::abs(a.friction_force - b.friction_force),
-                                                std::abs(a.top_reaction_y - b.top_reaction_y)});
+                                                std::abs(a.friction_force[0] - b.friction_force[0]),
+                                                std::abs(a.top_reaction[1] - b.top_reaction[1])});
             worst_force = std::max(worst_force, difference);
-            worst_reaction = std::max(worst_reaction, std::abs(a.top_reaction_y - b.top_reaction_y));
+            worst_reaction = std::max(worst_reaction, std::abs(a.top_reaction[1] - b.top_reaction[1]));
             sensitivity = std::max(sensitivity, std::abs(a.normal_force - c.normal_force));
             touching += a.active_nodes > 0;
         }

@@ -58,7 +58,7 @@ TEST_P(SparseAgainstCondensed, SameSolutions) {
     Simulation sparse(stepper_on(p, Stepper::ContactPath::sparse), top, 0, force);
     Simulation condensed(stepper_on(p, Stepper::ContactPath::condensed), top, 0, force);
     StepInputs in;
-    in.foundation_velocity = 5;
+    in.foundation_velocity[0] = 5;
     in.top_force = force;
     int pressed = 0;
     double scale = 0;
@@ -102,7 +102,7 @@ TEST(SparseContactSolve, ReplaysBitForBit) {
     const double top = -2.5e-5;
     const auto inputs = [&](int k) {
         StepInputs in;
-        in.foundation_velocity = 5;
+        in.foundation_velocity[0] = 5;
         // Steady sliding (the kept directions last) until step 20, then lifting and pressing.
         in.top_displacement = k < 20 ? top : top * (1 - 0.8 * std::sin(0.3 * (k - 20)));
         return in;
@@ -147,7 +147,7 @@ TEST(Stepper, LastFactorSolvesTheSubstepMatrix) {
         EXPECT_THROW(stepper.last_factor(), std::logic_error);
         Simulation sim(std::move(owned), 0.0);
         StepInputs in;
-        in.foundation_velocity = 5;
+        in.foundation_velocity[0] = 5;
         sim.do_step(1e-5, in);
         ASSERT_EQ(stepper.sparse_contact(), path == Stepper::ContactPath::sparse);
         const Discretization& d = stepper.discretization();
@@ -309,7 +309,7 @@ SlidingRun slide_rectangle(Stepper::ContactPath path, bool snapshots) {
     p.static_initial_state = true;
     const double top = -5e-6;
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = top;
     auto owned = stepper_on(p, path);
     const Stepper& body = *owned;

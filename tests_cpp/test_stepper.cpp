@@ -15,11 +15,11 @@ namespace {
 // the displacement that force causes (diag W * max |lambda|).
 void expect_contact_law(const ContactSnapshot& c, double F, double eps, const std::string& where) {
     const Eigen::Index n = c.lambda_N.size();
-    const double force = std::max(c.lambda_N.cwiseAbs().maxCoeff(), c.lambda_T.cwiseAbs().maxCoeff());
+    const double force = std::max(c.lambda_N.cwiseAbs().maxCoeff(), c.lambda_T[0].cwiseAbs().maxCoeff());
     const double dn = c.delassus_diagonal.head(n).maxCoeff() * force;
     const double dt = c.delassus_diagonal.tail(n).maxCoeff() * force;
     for (Eigen::Index i = 0; i < n; ++i) {
-        const double lN = c.lambda_N[i], lT = c.lambda_T[i];
+        const double lN = c.lambda_N[i], lT = c.lambda_T[0][i];
         const double gap = c.normal_displacement[i] - c.gap_limit[i];  // must be <= 0
         ASSERT_LE(lN, eps * force) << where << " node " << i << ": lambda_N <= 0";
         ASSERT_LE(gap, eps * dn) << where << " node " << i << ": u_N <= gap";
@@ -69,7 +69,7 @@ INSTANTIATE_TEST_SUITE_P(Variants, ContactLaw,
 TEST(Simulation, FailedContactSolveRestoresTheStepStart) {
     SceneParameters p;
     Simulation sim(p, -2.5e-5);
-    const StepInputs in{20, -2.5e-5, 0, 0};
+    const StepInputs in{{20, 0}, {0, 0}, -2.5e-5, 0};
     sim.do_step(1e-4, in);
     const State before = sim.state();
     const double work = sim.observables().friction_work;
@@ -100,7 +100,7 @@ TEST(Simulation, GaussSeidelTakesOverWhenNewtonFails) {
     p.friction_coefficient = 0.3;
     p.damping_stiffness = 4e-6;
     Simulation newton(p, -2.5e-5), fallback(p, -2.5e-5);
-    const StepInputs in{20, -2.5e-5, 0, 0};
+    const StepInputs in{{20, 0}, {0, 0}, -2.5e-5, 0};
     fallback.body().contact_options().max_iterations = 0;  // Newton gives up at once
     for (int k = 0; k < 5; ++k) {
         newton.do_step(1e-4, in);
@@ -136,7 +136,7 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
     p.friction_coefficient = 0.5;
     Simulation sim(p, -2.5e-5);
     StepInputs in;
-    in.foundation_velocity = 20;
+    in.foundation_velocity[0] = 20;
     in.top_displacement = -2.5e-5;
     for (int k = 0; k < 3; ++k) sim.do_step(1e-4, in);
     EXPECT_EQ(sim.body().factorizations(), 1);
@@ -144,7 +144,7 @@ TEST(Simulation, RestartKeepsTheFactorAndGivesTheSameBits) {
     SceneParameters q = p;
     q.friction_coefficient = 0.3;
     q.static_friction_ratio = 2;
-    in.foundation_velocity = 10;
+    in.foundation_velocity[0] = 10;
     sim.restart(q, -3e-5);
     Simulation fresh(q, -3e-5);
     for (int k = 0; k < 3; ++k) {

@@ -99,18 +99,21 @@ void check_parameters(const SceneParameters& p) {
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
     if (p.force_control) require_positive("top_mass", p.top_mass);
-    if (!std::isfinite(p.initial_velocity_x)) reject("initial_velocity_x", "finite", p.initial_velocity_x);
-    if (!std::isfinite(p.initial_velocity_y)) reject("initial_velocity_y", "finite", p.initial_velocity_y);
-    if (!std::isfinite(p.initial_velocity_z)) reject("initial_velocity_z", "finite", p.initial_velocity_z);
-    if (p.dimension == 2 && p.initial_velocity_z != 0)
-        reject("initial_velocity_z", "0 for a 2D body (plane strain in x-y has no z)", p.initial_velocity_z);
-    if (p.static_initial_state &&
-        (p.initial_velocity_x != 0 || p.initial_velocity_y != 0 || p.initial_velocity_z != 0)) {
+    bool moving = false;
+    for (int c = 0; c < 3; ++c) {
+        const std::string name = std::string("initial_velocity_") + component_letter(c);
+        const double v = p.initial_velocity[static_cast<size_t>(c)];
+        if (!std::isfinite(v)) reject(name.c_str(), "finite", v);
+        if (c >= p.dimension && v != 0) reject(name.c_str(), "0 for a 2D body (plane strain in x-y has no z)", v);
+        moving = moving || v != 0;
+    }
+    if (p.static_initial_state && moving) {
         Text msg;
-        msg << "initial_state = static starts the body at rest, so initial_velocity_x"
-            << (p.dimension == 3 ? ", initial_velocity_y and initial_velocity_z" : " and initial_velocity_y")
-            << " must be 0 (got " << p.initial_velocity_x << ", " << p.initial_velocity_y;
-        if (p.dimension == 3) msg << ", " << p.initial_velocity_z;
+        msg << "initial_state = static starts the body at rest, so ";
+        for (int c = 0; c < p.dimension; ++c)
+            msg << (c == 0 ? "" : c + 1 == p.dimension ? " and " : ", ") << "initial_velocity_" << component_letter(c);
+        msg << " must be 0 (got ";
+        for (int c = 0; c < p.dimension; ++c) msg << (c ? ", " : "") << p.initial_velocity[static_cast<size_t>(c)];
         msg << " m/s): set them to 0, or use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
@@ -217,9 +220,9 @@ Discretization discretize(const SceneParameters& p) {
     d.C_free_clamped = d.C_free_rows * PcT;
     d.C_free = d.C_free_rows * d.expand;
     for (int node : d.mesh.contact_nodes) {
-        d.contact_x.push_back(d.free_index[d.mesh.dof(node, 0)]);
         d.contact_y.push_back(d.free_index[d.mesh.dof(node, Mesh::normal)]);
-        if (d.mesh.dim == 3) d.contact_z.push_back(d.free_index[d.mesh.dof(node, 2)]);
+        for (int t = 0; t < d.mesh.tangents(); ++t)
+            d.contact_tangential[static_cast<size_t>(t)].push_back(d.free_index[d.mesh.dof(node, tangent_component(t))]);
     }
     return d;
 }
@@ -243,8 +246,7 @@ void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorX
 
 std::vector<int> Discretization::contact_unknowns() const {
     std::vector<int> dofs(contact_y);
-    dofs.insert(dofs.end(), contact_x.begin(), contact_x.end());
-    dofs.insert(dofs.end(), contact_z.begin(), contact_z.end());
+    for (const std::vector<int>& tangent : contact_tangential) dofs.insert(dofs.end(), tangent.begin(), tangent.end());
     return dofs;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "assembly/assembly.hpp"
+#include "util/tangents.hpp"
 
 namespace contactbody {
 
@@ -71,9 +72,9 @@ struct SceneParameters {
     // u_x = 0, pressed down by the force top_force.
     bool force_control = false;
     double top_mass = 1.0;
-    // Uniform initial velocity of the body (and of the plate), m/s.
-    double initial_velocity_x = 0, initial_velocity_y = 0;
-    double initial_velocity_z = 0;  // a 3D body's
+    // Uniform initial velocity of the body (and of the plate), m/s, per component (z: a 3D
+    // body's).
+    PerComponent initial_velocity{};
     // Initial displacement: the paper's linear profile, or the static equilibrium under the
     // initial top displacement with the foundation at rest (displacement control only).
     bool static_initial_state = false;
@@ -117,9 +118,9 @@ struct SceneParameters {
         f("damping_stiffness", rebuild, p.damping_stiffness...);
         f("top_control", rebuild, p.force_control...);
         f("top_mass", rebuild, p.top_mass...);
-        f("initial_velocity_x", keep, p.initial_velocity_x...);
-        f("initial_velocity_y", keep, p.initial_velocity_y...);
-        f("initial_velocity_z", keep, p.initial_velocity_z...);
+        f("initial_velocity_x", keep, p.initial_velocity[0]...);
+        f("initial_velocity_y", keep, p.initial_velocity[1]...);
+        f("initial_velocity_z", keep, p.initial_velocity[2]...);
         f("initial_state", keep, p.static_initial_state...);
         f("max_energy", keep, p.max_energy...);
         f("max_energy_ratio", keep, p.max_energy_ratio...);
@@ -179,11 +180,12 @@ struct Discretization {
     SparseMatrix C;
     RowMajorSparseMatrix C_free_rows;
     SparseMatrix C_free_clamped, C_free;
-    // Contact node c: free positions of its x, y (normal) and, in 3D, z dofs (contact_z is
-    // empty in 2D).
-    std::vector<int> contact_x, contact_y, contact_z;
-    // The free positions of the contact unknowns in multiplier order: y dofs (N), then x (T),
-    // then in 3D z (the second tangential direction).
+    // Contact node c: free positions of its y (normal) dof and of its tangent t's
+    // (contact_tangential[t]: x, and in 3D z; empty past the body's tangents).
+    std::vector<int> contact_y;
+    PerTangent<std::vector<int>> contact_tangential;
+    // The free positions of the contact unknowns in multiplier order: y dofs (N), then each
+    // tangent's (T: x, then in 3D z).
     std::vector<int> contact_unknowns() const;
     // A top node's y dof: all of them move together (the clamp's value, or the plate's w).
     int top_y_dof() const { return mesh.dof(mesh.top_nodes.front(), Mesh::normal); }

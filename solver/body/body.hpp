@@ -33,7 +33,7 @@ public:
 
     virtual const Discretization& discretization() const = 0;
     virtual const SceneParameters& parameters() const = 0;
-    int num_contact_nodes() const { return static_cast<int>(discretization().contact_x.size()); }
+    int num_contact_nodes() const { return static_cast<int>(discretization().contact_tangential[0].size()); }
 
     // Starts over with new parameters of the same discretization (same_discretization), keeping
     // what was built from it (factors; the reduced body's basis). Throws std::logic_error for

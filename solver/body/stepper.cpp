@@ -162,9 +162,8 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     // first substep would otherwise move it there at once, with work no one counts.
     for (int n : mesh.top_nodes) s.u[mesh.dof(n, Mesh::normal)] = top_displacement;
     for (int dof : d.moving_dofs)
-        s.v[dof] = mesh.component(dof) == 0 ? p.initial_velocity_x
-                   : mesh.component(dof) == Mesh::normal ? p.initial_velocity_y : p.initial_velocity_z;
-    const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_x.size());
+        s.v[dof] = p.initial_velocity[static_cast<size_t>(mesh.component(dof))];
+    const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_tangential[0].size());
     s.lambda.setZero(p.friction_coefficient > 0 ? mesh.dim * nc : nc);  // N, then x (and z)
     s.sticking.setZero(nc);
     return s;
@@ -191,7 +190,7 @@ int add_node_contact(SubstepReport& report, double& sticking, double lN, double 
                      double duN, double dux, double foundation_step, double initial_gap,
                      bool friction, bool touching, NodeStatus status) {
     report.normal_force -= lN;
-    report.friction_force += lT;
+    report.friction_force[0] += lT;
     report.work.friction += lT * dux;
     report.work.normal_contact += lN * duN;
     report.work.foundation += lT * foundation_step;
@@ -514,8 +513,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         for (RowMajorSparseMatrix::InnerIterator it(d.A_top_rows, static_cast<Eigen::Index>(k)); it; ++it)
             r += it.value() * (relative_[it.col()] + w_[it.col()]);  // u^{k+1/2} - t
         if (params_.damped()) r += 0.5 * c2 * C_du_[dof];
-        const int component = d.mesh.component(dof);
-        (component == 0 ? report.top_reaction_x : component == 1 ? report.top_reaction_y : report.top_reaction_z) += r;
+        report.top_reaction[static_cast<size_t>(d.mesh.component(dof))] += r;
         if (d.free_index[dof] < 0) report.work.clamp += r * 2 * w_[dof];
     }
     if (d.plate_index >= 0) report.work.clamp -= load.top_force * 2 * w_free_[d.plate_index];
@@ -524,6 +522,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // steppers report.
     const auto node_y = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], Mesh::normal); };
     const auto node_x = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 0); };
+    const auto node_tangent = [&](int i, int t) {
+        return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], tangent_component(t));
+    };
     snapshot_.normal_displacement.resize(nc);
     snapshot_.gap_limit = problem_.gap_limit;
     snapshot_.slip.setZero(nc);
@@ -534,12 +535,10 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         if (friction) snapshot_.slip[i] = w_[node_x(i)] - problem_.slip_origin[i];
     }
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
-        touching, f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
-        [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i) { return 2 * w_[node_x(i)]; });
-    if (d.mesh.dim == 3)
-        record_contact_z(report, snapshot_, s.lambda, dt, load.foundation_velocity_z,
-                         [&](int i) { return 2 * w_[d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 2)]; });
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, d.mesh.tangents(), params_.initial_gap,
+        disc_.mesh.contact_heights, touching, f.held ? sparse_solver_.status() : solver_.status(),
+        [&](int i) { return -s.u[node_y(i)]; }, [&](int i) { return -2 * w_[node_y(i)]; },
+        [&](int i, int t) { return 2 * w_[node_tangent(i, t)]; });
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.

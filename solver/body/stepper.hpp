@@ -33,9 +33,8 @@ struct State {
 // velocity), foundation velocity.
 struct SubstepLoad {
     double top_start = 0, top_end = 0, top_rate = 0;
-    double foundation_velocity = 0;
+    Tangential foundation_velocity{};  // per tangent (a 3D body's foundation slides in x and z)
     double top_force = 0;  // force control: N/m pressing the plate down, over the substep
-    double foundation_velocity_z = 0;  // a 3D body's foundation slides in x and z
 };
 
 // Exact discrete work of each force on the body (J/m), so that over any run
@@ -69,10 +68,9 @@ struct Works {
 // What one substep contributes to the observables (forces on the body, N/m).
 struct SubstepReport {
     double normal_force = 0;       // -sum lambda_N
-    double friction_force = 0;     // sum lambda_T (x)
-    double friction_force_z = 0;   // sum lambda_T (z; a 3D body)
+    Tangential friction_force{};   // sum lambda_T, per tangent
     double corner_lambda_N = 0, corner_lambda_T = 0;
-    double top_reaction_x = 0, top_reaction_y = 0, top_reaction_z = 0;
+    PerComponent top_reaction{};
     Works work;
     double max_penetration = 0;    // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
@@ -87,12 +85,12 @@ struct ContactSnapshot {
     Eigen::VectorXd normal_displacement;  // B_N u^{k+1/2}
     Eigen::VectorXd gap_limit;            // B_N u^{k+1/2} <= gap_limit
     Eigen::VectorXd slip;                 // B_T u^{k+1/2} - slip origin (sign of the slip velocity)
-    Eigen::VectorXd lambda_N, lambda_T;
+    Eigen::VectorXd lambda_N;
+    // Per tangent (empty past the body's tangents): the friction multipliers, and the slip
+    // velocity relative to the foundation, (u_T^{k+1} - u_T^k) / dt - V.
+    PerTangent<Eigen::VectorXd> lambda_T, slip_velocity;
     Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
-    Eigen::VectorXd slip_velocity;        // (u_x^{k+1} - u_x^k) / dt - V: relative to the foundation
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // 0 open, 1 stick, 2 slip
-    // A 3D body's z friction and slip velocity relative to the foundation (empty in 2D).
-    Eigen::VectorXd lambda_T_z, slip_velocity_z;
 };
 
 // Where a substep's time goes, accumulated when timing is enabled (benchmarks).
@@ -118,8 +116,8 @@ bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, b
         const double g = gap_old(i);
         problem.gap_limit[i] = implicit ? 0.5 * g : g;
         touching = touching || problem.a[i] > problem.gap_limit[i];
-        if (friction) problem.slip_origin[i] = 0.5 * dt * load.foundation_velocity;
-        if (friction && problem.tangents == 2) problem.slip_origin[nc + i] = 0.5 * dt * load.foundation_velocity_z;
+        for (int t = 0; friction && t < problem.tangents; ++t)
+            problem.slip_origin[t * nc + i] = 0.5 * dt * load.foundation_velocity[static_cast<size_t>(t)];
     }
     // The slip rate the law sees is the one the friction works on, in every variant: the
     // substep's mean (u_T^{k+1} - u_T^k) / dt - V = slip / (dt/2). Then lambda_T opposes the
@@ -149,57 +147,51 @@ int add_node_contact(SubstepReport& report, double& sticking, double lN, double 
                      bool friction, bool touching, NodeStatus status);
 
 // After a substep, what both steppers report of the edge: the snapshot's multipliers, slip
-// velocities and node states, and each node's share of the report (add_node_contact), given
-// each node's u_N^k, uN_old(i), and its increments over the substep, duN(i) and dux(i); node
-// i's gap at rest is initial_gap + heights[i] (the mesh's contact_heights).
+// velocities and node states, and each node's share of the report (add_node_contact, and the
+// further tangents' friction and works), given each node's u_N^k, uN_old(i), and its
+// increments over the substep, duN(i) and duT(i, t) along tangent t; node i's gap at rest is
+// initial_gap + heights[i] (the mesh's contact_heights).
 // The snapshot's vectors are sized once (the substep allocates nothing after the first).
 template <class NormalOld, class NormalStep, class TangentialStep>
 void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::VectorXd& sticking,
-                    const Eigen::VectorXd& lambda, double dt, double foundation_velocity,
-                    double initial_gap, const std::vector<double>& heights, bool touching,
-                    const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
-                    NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& dux) {
+                    const Eigen::VectorXd& lambda, double dt, const Tangential& foundation_velocity,
+                    int tangents, double initial_gap, const std::vector<double>& heights,
+                    bool touching, const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
+                    NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& duT) {
     const Eigen::Index nc = sticking.size();
     const bool friction = lambda.size() > nc;
-    snapshot.slip_velocity.resize(nc);
     snapshot.state.resize(nc);
     snapshot.lambda_N = lambda.head(nc);
-    snapshot.lambda_T.resize(nc);
-    if (friction) snapshot.lambda_T = lambda.segment(nc, nc);  // x (a 3D body's z follows)
-    else snapshot.lambda_T.setZero();
-    const double foundation_step = foundation_velocity * dt;
-    for (int i = 0; i < static_cast<int>(nc); ++i) {
-        const double dx = dux(i);
-        snapshot.slip_velocity[i] = (dx - foundation_step) / dt;
-        snapshot.state[i] = static_cast<signed char>(add_node_contact(
-            report, sticking[i], snapshot.lambda_N[i], snapshot.lambda_T[i], uN_old(i), duN(i), dx,
-            foundation_step, initial_gap + heights[static_cast<size_t>(i)], friction, touching,
-            touching ? status[i] : NodeStatus::open));
+    for (int t = 0; t < tangents; ++t) {
+        Eigen::VectorXd& lT = snapshot.lambda_T[static_cast<size_t>(t)];
+        lT.resize(nc);
+        if (friction) lT = lambda.segment((1 + t) * nc, nc);
+        else lT.setZero();
+        snapshot.slip_velocity[static_cast<size_t>(t)].resize(nc);
+    }
+    // The normal and the first tangent node by node, then each further tangent's friction.
+    for (int t = 0; t < tangents; ++t) {
+        const double foundation_step = foundation_velocity[static_cast<size_t>(t)] * dt;
+        const Eigen::VectorXd& lT = snapshot.lambda_T[static_cast<size_t>(t)];
+        Eigen::VectorXd& slip_velocity = snapshot.slip_velocity[static_cast<size_t>(t)];
+        for (int i = 0; i < static_cast<int>(nc); ++i) {
+            const double d = duT(i, t);
+            slip_velocity[i] = (d - foundation_step) / dt;
+            if (t == 0) {
+                snapshot.state[i] = static_cast<signed char>(add_node_contact(
+                    report, sticking[i], snapshot.lambda_N[i], lT[i], uN_old(i), duN(i), d,
+                    foundation_step, initial_gap + heights[static_cast<size_t>(i)], friction, touching,
+                    touching ? status[i] : NodeStatus::open));
+            } else {
+                report.friction_force[static_cast<size_t>(t)] += lT[i];
+                report.work.friction += lT[i] * d;
+                report.work.foundation += lT[i] * foundation_step;
+                report.work.friction_dissipation += lT[i] * (foundation_step - d);
+            }
+        }
     }
     report.corner_lambda_N = snapshot.lambda_N[0];
-    report.corner_lambda_T = snapshot.lambda_T[0];
-}
-
-// A 3D body's z share, after record_contact: the friction force and works of lambda_T_z, and
-// the snapshot's z friction and slip velocity (relative to the foundation). dz(i): contact
-// node i's z increment over the substep.
-template <class TangentialStep>
-void record_contact_z(SubstepReport& report, ContactSnapshot& snapshot, const Eigen::VectorXd& lambda,
-                      double dt, double foundation_velocity_z, TangentialStep&& dz) {
-    const Eigen::Index nc = snapshot.lambda_N.size();
-    const bool friction = lambda.size() > 2 * nc;
-    const double foundation_step = foundation_velocity_z * dt;
-    snapshot.lambda_T_z.resize(nc);
-    snapshot.slip_velocity_z.resize(nc);
-    for (int i = 0; i < static_cast<int>(nc); ++i) {
-        const double lz = friction ? lambda[2 * nc + i] : 0.0, d = dz(i);
-        snapshot.lambda_T_z[i] = lz;
-        snapshot.slip_velocity_z[i] = (d - foundation_step) / dt;
-        report.friction_force_z += lz;
-        report.work.friction += lz * d;
-        report.work.foundation += lz * foundation_step;
-        report.work.friction_dissipation += lz * (foundation_step - d);
-    }
+    report.corner_lambda_T = snapshot.lambda_T[0][0];
 }
 
 // The full body: every dof of the mesh is a coordinate of its State.

@@ -49,6 +49,8 @@ struct Mesh {
     // dof numbering: dim * node + component (0 = x, 1 = y, 2 = z).
     int dof(int node, int component) const { return dim * node + component; }
     int component(int dof) const { return dof % dim; }
+    // Tangents of the foundation's plane: x (and z in 3D); tangent t's dof is tangent_component(t)'s.
+    int tangents() const { return dim - 1; }
     static constexpr int normal = 1;  // the component normal to the foundation (y)
     const Point& point(int n) const { return points[static_cast<size_t>(n)]; }
     double width() const { return x_max - x_min; }

@@ -10,7 +10,9 @@ namespace {
 
 // A multiple of 64, as NPY asks, and fixed: the row count changes, the header's size does not.
 // A 3D body's records name three more fields.
-size_t header_size_for(bool solid) { return solid ? 448 : 320; }
+size_t header_size_for(int tangents) { return tangents > 1 ? 448 : 320; }
+// The column name's suffix of tangent t (friction, friction_z).
+const char* tangent_suffix(int t) { return t == 0 ? "" : "_z"; }
 
 void check(bool ok, const std::string& path, const char* what) {
     if (!ok) throw std::runtime_error(std::string(what) + " " + path + " failed: " + std::strerror(errno));
@@ -23,8 +25,8 @@ void append(std::string& out, const T* data, size_t count) {
 
 }  // namespace
 
-EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes, bool solid)
-    : path_(std::move(path)), nodes_(nodes), solid_(solid), header_size_(header_size_for(solid)) {
+EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes, int tangents)
+    : path_(std::move(path)), nodes_(nodes), tangents_(tangents), header_size_(header_size_for(tangents)) {
     file_ = open_file(path_, "w+b");
     check(file_ != nullptr, path_, "creating the edge history");
     write_header();
@@ -35,8 +37,8 @@ EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes, bool solid)
 void EdgeWriter::write_header() {
     const std::string n = std::to_string(nodes_);
     std::string dict = "{'descr': [('time', '<f8')";
-    for (const char* field : fields())
-        dict += std::string(", ('") + field + "', '<f8', (" + n + ",))";
+    for (const std::string& field : fields())
+        dict += ", ('" + field + "', '<f8', (" + n + ",))";
     dict += ", ('state', 'i1', (" + n + ",))], 'fortran_order': False, 'shape': (" +
             std::to_string(rows_) + ",), }";
     const size_t prefix = 10;  // magic (6), version (2), header length (2)
@@ -54,22 +56,27 @@ void EdgeWriter::write_header() {
           path_, "writing the edge history");
 }
 
-std::vector<const char*> EdgeWriter::fields() const {
-    if (solid_) return {"x", "z", "pressure", "friction", "friction_z", "slip_velocity", "slip_velocity_z", "gap"};
-    return {"x", "pressure", "friction", "slip_velocity", "gap"};
+std::vector<std::string> EdgeWriter::fields() const {
+    std::vector<std::string> names{"x"};
+    if (tangents_ > 1) names.emplace_back("z");
+    names.emplace_back("pressure");
+    for (const char* name : {"friction", "slip_velocity"})
+        for (int t = 0; t < tangents_; ++t) names.push_back(name + std::string(tangent_suffix(t)));
+    names.emplace_back("gap");
+    return names;
 }
 
 void EdgeWriter::write(double time, const EdgeSnapshot& e) {
     record_.clear();
     append(record_, &time, 1);
     const auto add = [&](const Eigen::VectorXd& v) { append(record_, v.data(), static_cast<size_t>(nodes_)); };
-    if (solid_) {  // in fields()' order
-        for (const Eigen::VectorXd* v : {&e.x, &e.z, &e.pressure, &e.friction, &e.friction_z,
-                                         &e.slip_velocity, &e.slip_velocity_z, &e.gap})
-            add(*v);
-    } else {
-        for (const Eigen::VectorXd* v : {&e.x, &e.pressure, &e.friction, &e.slip_velocity, &e.gap}) add(*v);
-    }
+    // In fields()' order.
+    add(e.x);
+    if (tangents_ > 1) add(e.z);
+    add(e.pressure);
+    for (const auto* per_tangent : {&e.friction, &e.slip_velocity})
+        for (int t = 0; t < tangents_; ++t) add((*per_tangent)[static_cast<size_t>(t)]);
+    add(e.gap);
     append(record_, e.state.data(), static_cast<size_t>(nodes_));
     check(seek_file(file_.get(), header_size_ + rows_ * record_.size()) &&
               std::fwrite(record_.data(), 1, record_.size(), file_.get()) == record_.size(),

@@ -1,7 +1,7 @@
 // The bottom edge over time in one NumPy file (.npy, a structured array, one record per
 // output time): time, and per contact node x, pressure, friction (Pa, step averages),
 // slip_velocity (m/s), gap (m) and state (0 open, 1 stick, 2 slip); a 3D body's records add
-// z, friction_z and slip_velocity_z. np.load reads it; the
+// z and the second tangent's friction and slip velocity. np.load reads it; the
 // header's row count is rewritten with every record, so the file is valid at all times.
 #pragma once
 
@@ -17,7 +17,8 @@ namespace contactbody {
 class EdgeWriter {
 public:
     // Creates (or empties) the file; throws std::runtime_error naming the path and the cause.
-    EdgeWriter(std::string path, Eigen::Index nodes, bool solid = false);
+    // tangents: the body's (the friction and slip velocity columns per node: x, and in 3D z).
+    EdgeWriter(std::string path, Eigen::Index nodes, int tangents = 1);
     void write(double time, const EdgeSnapshot& edge);
     // Keeps the first `rows` records (after a rollback).
     void truncate(uint64_t rows);
@@ -27,10 +28,10 @@ public:
 private:
     void write_header();
     // The Float64 fields of a record, in the file's order (the state follows them).
-    std::vector<const char*> fields() const;
+    std::vector<std::string> fields() const;
     std::string path_;
     Eigen::Index nodes_;
-    bool solid_;
+    int tangents_;
     size_t header_size_;
     uint64_t rows_ = 0;
     File file_;

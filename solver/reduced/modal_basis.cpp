@@ -49,16 +49,16 @@ ContactRows contact_rows(const Discretization& d, bool hold_tangential) {
     ContactRows b;
     for (int y : d.contact_y) b.position.push_back(y), b.sign.push_back(-1);
     if (!hold_tangential)
-        for (const auto* dofs : {&d.contact_x, &d.contact_z})
-            for (int t : *dofs) b.position.push_back(t), b.sign.push_back(1);
+        for (const std::vector<int>& dofs : d.contact_tangential)
+            for (int t : dofs) b.position.push_back(t), b.sign.push_back(1);
     return b;
 }
 
 }  // namespace
 
 std::vector<int> tangential_contact_dofs(const Discretization& d) {
-    std::vector<int> dofs = d.contact_x;
-    dofs.insert(dofs.end(), d.contact_z.begin(), d.contact_z.end());
+    std::vector<int> dofs;
+    for (const std::vector<int>& tangent : d.contact_tangential) dofs.insert(dofs.end(), tangent.begin(), tangent.end());
     return dofs;
 }
 

@@ -49,7 +49,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     }
 
     const int nc = num_contact_nodes();
-    tangents_ = d.mesh.dim - 1;
+    tangents_ = d.mesh.tangents();
     const Eigen::Index rows = (1 + tangents_) * nc;
     Bhat_.resize(rows, n);
     Blift_.resize(rows);
@@ -107,8 +107,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
         c.stiffness_top = rows.stiffness_top;
         return c;
     };
-    clamp_x_ = clamp_rows(0);
-    if (d.mesh.dim == 3) clamp_z_ = clamp_rows(2);
+    for (int t = 0; t < d.mesh.tangents(); ++t) clamp_tangential_[static_cast<size_t>(t)] = clamp_rows(tangent_component(t));
 
     start_run();
     problem_.tangents = tangents_;
@@ -515,22 +514,20 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     if (params_.damped())
         r += 0.5 * c2 * alpha * (m_t_.dot(du_) + mass_tt_ * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
-    report.top_reaction_y = r;
+    report.top_reaction[Mesh::normal] = r;
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy
     // is in E).
     report.work.clamp = plate ? -load.top_force * du_t : r * du_t;
-    // The clamped x rows' residual, recovered from the basis as the full body's.
+    // The clamped tangential rows' residual, recovered from the basis as the full body's.
     const ClampRows::Substep clamp_substep{c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()};
-    report.top_reaction_x = clamp_x_.residual(clamp_substep, z, zdot, w_, du_);
-    if (clamp_z_.mass.size()) report.top_reaction_z = clamp_z_.residual(clamp_substep, z, zdot, w_, du_);
+    for (int t = 0; t < tangents_; ++t)
+        report.top_reaction[static_cast<size_t>(tangent_component(t))] =
+            clamp_tangential_[static_cast<size_t>(t)].residual(clamp_substep, z, zdot, w_, du_);
 
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, params_.initial_gap, disc_.mesh.contact_heights,
-        touching, solver_.status(), [&](int i) { return contact_u_[i]; },
-        [&](int i) { return 2 * bw_[i]; }, [&](int i) { return 2 * bw_[nc + i]; });
-    if (tangents_ == 2)
-        record_contact_z(report, snapshot_, s.lambda, dt, load.foundation_velocity_z,
-                         [&](int i) { return 2 * bw_[2 * nc + i]; });
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, static_cast<int>(tangents_), params_.initial_gap,
+        disc_.mesh.contact_heights, touching, solver_.status(), [&](int i) { return contact_u_[i]; },
+        [&](int i) { return 2 * bw_[i]; }, [&](int i, int t) { return 2 * bw_[(1 + t) * nc + i]; });
 
     zdot = 2 * c2 * w_ - zdot;
     z += 2 * w_;

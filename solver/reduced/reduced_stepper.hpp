@@ -148,9 +148,9 @@ private:
     Eigen::VectorXd m_s_, m_c_, a_s_;
     Eigen::VectorXd m_t_;      // m_s + m_c: the clamp and the lift moving together
     Eigen::VectorXd damping_;  // diag(C_hat) = alpha diag(M_hat) + beta diag(A_hat)
-    // The clamped x rows (their reaction): against z, the lift and the clamp, mass and stiffness.
-    ClampRows clamp_x_;
-    ClampRows clamp_z_;  // a 3D body's (empty in 2D)
+    // The clamped rows of each tangent (their reaction): against z, the lift and the clamp,
+    // mass and stiffness (empty past the body's tangents).
+    PerTangent<ClampRows> clamp_tangential_;
     Eigen::Index nf_ = 0;  // free dofs
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0;
     double mass_tt_ = 0;   // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)

@@ -45,20 +45,19 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
     const Mesh& mesh = body_->discretization().mesh;
     const Eigen::Index nc = body_->num_contact_nodes();
     edge_sum_N_.setZero(nc);
-    edge_sum_T_.setZero(nc);
     edge_.x.resize(nc);
     for (Eigen::Index i = 0; i < nc; ++i) edge_.x[i] = mesh.point(mesh.contact_nodes[i]).x;
     edge_.pressure.setZero(nc);
-    edge_.friction.setZero(nc);
-    edge_.slip_velocity.setZero(nc);
     edge_.gap.setZero(nc);
     edge_.state.setZero(nc);
-    if (mesh.dim == 3) {
-        edge_sum_Tz_.setZero(nc);
+    for (size_t t = 0; t < static_cast<size_t>(mesh.tangents()); ++t) {
+        edge_sum_T_[t].setZero(nc);
+        edge_.friction[t].setZero(nc);
+        edge_.slip_velocity[t].setZero(nc);
+    }
+    if (mesh.tangents() > 1) {  // the edge's second coordinate
         edge_.z.resize(nc);
         for (Eigen::Index i = 0; i < nc; ++i) edge_.z[i] = mesh.point(mesh.contact_nodes[i]).z;
-        edge_.friction_z.setZero(nc);
-        edge_.slip_velocity_z.setZero(nc);
     }
     if (params.static_initial_state) static_initial_state(initial_top_displacement, initial_top_force);
     initial_reactions();
@@ -313,33 +312,31 @@ void Simulation::initial_reactions() {
         const double share = d.mesh.edge_share(i);
         const double gap = p.initial_gap + d.mesh.contact_heights[i] + full.u[d.mesh.dof(node, Mesh::normal)];
         const bool touching = gap <= resolution;
-        double normal = 0, friction = 0, friction_z = 0;
+        double normal = 0;
+        Tangential friction{};
         if (multipliers) {
             normal = -state_.lambda[k];
-            if (state_.lambda.size() > nc) friction = state_.lambda[nc + k];
-            if (state_.lambda.size() > 2 * nc) friction_z = state_.lambda[2 * nc + k];
+            for (Eigen::Index t = 0; t < d.mesh.tangents(); ++t)
+                if (state_.lambda.size() > (1 + t) * nc) friction[static_cast<size_t>(t)] = state_.lambda[(1 + t) * nc + k];
         } else if (touching) {
             normal = std::max(0.0, product[d.mesh.dof(node, Mesh::normal)]);
         }
         edge_.pressure[k] = normal / share;
-        edge_.friction[k] = friction / share;
-        if (d.mesh.dim == 3) edge_.friction_z[k] = friction_z / share;
+        for (size_t t = 0; t < static_cast<size_t>(d.mesh.tangents()); ++t) {
+            edge_.friction[t][k] = friction[t] / share;
+            o.friction_force[t] += friction[t];
+        }
         edge_.gap[k] = gap;
         edge_.state[k] = normal > 0 ? 1 : 0;  // pressed at rest: sticking
         o.max_penetration = std::max(o.max_penetration, -gap);
         o.normal_force += normal;
-        o.friction_force += friction;
-        o.friction_force_z += friction_z;
         if (normal > 0) ++o.active_contact_nodes;
         if (k == 0) {
             o.corner_pressure = normal / share;
-            o.corner_friction = friction / share;
+            o.corner_friction = friction[0] / share;
         }
     }
-    for (int dof : d.top_dofs) {
-        const int component = d.mesh.component(dof);
-        (component == 0 ? o.top_reaction_x : component == 1 ? o.top_reaction_y : o.top_reaction_z) += product[dof];
-    }
+    for (int dof : d.top_dofs) o.top_reaction[static_cast<size_t>(d.mesh.component(dof))] += product[dof];
     observables_ = o;
     energies_current_ = false;
 }
@@ -371,11 +368,11 @@ struct Simulation::StepSums {
 
 void Simulation::do_step(double h, const StepInputs& in) {
     if (!(h > 0) || !std::isfinite(h)) throw std::invalid_argument("step size must be > 0");
-    if (body_->discretization().mesh.dim == 2 &&
-        (in.foundation_velocity_z != 0 || in.foundation_acceleration_z != 0)) {
+    for (size_t t = static_cast<size_t>(body_->discretization().mesh.tangents()); t < max_tangents; ++t) {
+        if (in.foundation_velocity[t] == 0 && in.foundation_acceleration[t] == 0) continue;
         Text msg;
-        msg << "foundation_velocity_z = " << in.foundation_velocity_z
-            << " m/s: a 2D body (plane strain in x-y) has no z direction";
+        msg << "foundation_velocity_" << component_letter(tangent_component(static_cast<int>(t))) << " = "
+            << in.foundation_velocity[t] << " m/s: a 2D body (plane strain in x-y) has no z direction";
         throw std::invalid_argument(msg.str());
     }
     const int n = substeps_for(h);
@@ -392,8 +389,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const Mesh& mesh = body_->discretization().mesh;
     const Observables saved_observables = observables_;
     edge_sum_N_.setZero();
-    edge_sum_T_.setZero();
-    edge_sum_Tz_.setZero();
+    for (Eigen::VectorXd& sum : edge_sum_T_) sum.setZero();
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
         if (!body_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
@@ -402,13 +398,10 @@ void Simulation::do_step(double h, const StepInputs& in) {
 
         const double share = mesh.edge_share(0);  // boundary length carried by the corner node
         avg.normal_force /= n;
-        avg.friction_force /= n;
-        avg.friction_force_z /= n;
+        for (double& f : avg.friction_force) f /= n;
         avg.corner_pressure /= n * share;
         avg.corner_friction /= n * share;
-        avg.top_reaction_x /= n;
-        avg.top_reaction_y /= n;
-        avg.top_reaction_z /= n;
+        for (double& r : avg.top_reaction) r /= n;
         observables_ = avg;
         observables_.substeps = n + stats.refinements;  // each halving adds one substep
         observables_.substep_refinements = stats.refinements;
@@ -440,12 +433,10 @@ void Simulation::update_edge(int substeps) {
     for (Eigen::Index i = 0; i < nc; ++i) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
-        edge_.friction[i] = edge_sum_T_[i] / share;
-        if (mesh.dim == 3) edge_.friction_z[i] = edge_sum_Tz_[i] / share;
+        for (int t = 0; t < mesh.tangents(); ++t) edge_.friction[static_cast<size_t>(t)][i] = edge_sum_T_[static_cast<size_t>(t)][i] / share;
         edge_.gap[i] += body_->parameters().initial_gap + mesh.contact_heights[i];
     }
-    edge_.slip_velocity = c.slip_velocity;
-    if (mesh.dim == 3) edge_.slip_velocity_z = c.slip_velocity_z;
+    for (int t = 0; t < mesh.tangents(); ++t) edge_.slip_velocity[static_cast<size_t>(t)] = c.slip_velocity[static_cast<size_t>(t)];
     edge_.state = c.state;
 }
 
@@ -556,8 +547,8 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     load.top_start = in.top_displacement + in.top_velocity * s0;
     load.top_end = in.top_displacement + in.top_velocity * s1;
     load.top_rate = in.top_velocity;
-    load.foundation_velocity = in.foundation_velocity + in.foundation_acceleration * 0.5 * (s0 + s1);
-    load.foundation_velocity_z = in.foundation_velocity_z + in.foundation_acceleration_z * 0.5 * (s0 + s1);
+    for (size_t t = 0; t < max_tangents; ++t)
+        load.foundation_velocity[t] = in.foundation_velocity[t] + in.foundation_acceleration[t] * 0.5 * (s0 + s1);
     load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
     SubstepReport r;
@@ -579,17 +570,14 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     works_ += r.work;
     const ContactSnapshot& c = body_->last_contact();
     edge_sum_N_ += weight * c.lambda_N;
-    edge_sum_T_ += weight * c.lambda_T;
-    if (edge_sum_Tz_.size()) edge_sum_Tz_ += weight * c.lambda_T_z;
+    for (size_t t = 0; t < max_tangents; ++t)
+        if (edge_sum_T_[t].size()) edge_sum_T_[t] += weight * c.lambda_T[t];
     Observables& avg = sums.avg;
     avg.normal_force += weight * r.normal_force;
-    avg.friction_force += weight * r.friction_force;
-    avg.friction_force_z += weight * r.friction_force_z;
+    for (size_t t = 0; t < max_tangents; ++t) avg.friction_force[t] += weight * r.friction_force[t];
     avg.corner_pressure -= weight * r.corner_lambda_N;
     avg.corner_friction += weight * r.corner_lambda_T;
-    avg.top_reaction_x += weight * r.top_reaction_x;
-    avg.top_reaction_y += weight * r.top_reaction_y;
-    avg.top_reaction_z += weight * r.top_reaction_z;
+    for (size_t c3 = 0; c3 < 3; ++c3) avg.top_reaction[c3] += weight * r.top_reaction[c3];
     avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
     avg.active_contact_nodes = r.active_nodes;
     avg.slipping_contact_nodes = r.slipping_nodes;
@@ -695,10 +683,11 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     const Eigen::Index nc = body_->num_contact_nodes();
     if (!body_->fits(s)) throw std::invalid_argument("state does not fit this body");
     const EdgeSnapshot& e = snapshot.edge;
-    if (e.pressure.size() != nc || e.friction.size() != nc || e.slip_velocity.size() != nc ||
-        e.gap.size() != nc || e.state.size() != nc ||
-        e.friction_z.size() != edge_.z.size() || e.slip_velocity_z.size() != edge_.z.size())
-        throw std::invalid_argument("edge does not fit this mesh");
+    bool fits = e.pressure.size() == nc && e.gap.size() == nc && e.state.size() == nc;
+    for (size_t t = 0; t < max_tangents; ++t)
+        fits = fits && e.friction[t].size() == edge_.friction[t].size() &&
+               e.slip_velocity[t].size() == edge_.friction[t].size();
+    if (!fits) throw std::invalid_argument("edge does not fit this mesh");
     for (double dt : snapshot.factor_substeps)
         if (!(std::isfinite(dt) && dt > 0))
             throw std::invalid_argument("cached substep sizes must be finite and > 0");
@@ -717,13 +706,11 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     works_ = snapshot.works;
     initial_energy_ = snapshot.initial_energy;
     observables_ = snapshot.observables;
-    edge_.pressure = e.pressure;  // x stays the mesh's
+    edge_.pressure = e.pressure;  // x and z stay the mesh's
     edge_.friction = e.friction;
     edge_.slip_velocity = e.slip_velocity;
     edge_.gap = e.gap;
     edge_.state = e.state;
-    edge_.friction_z = e.friction_z;  // (z, like x, stays the mesh's)
-    edge_.slip_velocity_z = e.slip_velocity_z;
     energies_current_ = false;
 }
 

@@ -23,11 +23,10 @@ struct Observables {
     double friction_dissipation = 0, foundation_work = 0;
     double top_position = 0, top_velocity = 0;  // u_y, v_y of the top edge (the plate)
     // Averaged over the last communication step.
-    double normal_force = 0, friction_force = 0;
-    double friction_force_z = 0;  // a 3D body's (0 in 2D)
+    double normal_force = 0;
+    Tangential friction_force{};  // per tangent (z: a 3D body's, 0 in 2D)
     double corner_pressure = 0, corner_friction = 0;
-    double top_reaction_x = 0, top_reaction_y = 0;
-    double top_reaction_z = 0;  // a 3D body's (0 in 2D)
+    PerComponent top_reaction{};  // per component (z: a 3D body's, 0 in 2D)
     double max_penetration = 0;  // over the substeps of the last communication step
     int active_contact_nodes = 0, slipping_contact_nodes = 0;  // at the last substep
     // What the last communication step cost (StepStatistics): substeps taken (a refined one
@@ -45,13 +44,13 @@ struct Observables {
         f("friction_work", o.friction_work...);
         f("energy_minus_friction_work", o.energy_minus_friction_work...);
         f("normal_force", o.normal_force...);
-        f("friction_force", o.friction_force...);
-        f("friction_force_z", o.friction_force_z...);
+        f("friction_force", o.friction_force[0]...);
+        f("friction_force_z", o.friction_force[1]...);
         f("corner_pressure", o.corner_pressure...);
         f("corner_friction", o.corner_friction...);
-        f("top_reaction_x", o.top_reaction_x...);
-        f("top_reaction_y", o.top_reaction_y...);
-        f("top_reaction_z", o.top_reaction_z...);
+        f("top_reaction_x", o.top_reaction[0]...);
+        f("top_reaction_y", o.top_reaction[1]...);
+        f("top_reaction_z", o.top_reaction[2]...);
         f("max_penetration", o.max_penetration...);
         f("damping_work", o.damping_work...);
         f("clamp_work", o.clamp_work...);
@@ -74,20 +73,19 @@ struct EdgeSnapshot {
     Eigen::VectorXd x;              // m: the nodes' positions along the edge (reference)
     Eigen::VectorXd pressure;       // Pa: normal contact force / the node's share of the edge,
                                     //     averaged over the step like normal_force
-    Eigen::VectorXd friction;       // Pa: tangential force density, averaged like friction_force
-    Eigen::VectorXd slip_velocity;  // m/s: node velocity minus V over the last substep
+    // Per tangent (empty past the body's tangents):
+    PerTangent<Eigen::VectorXd> friction;       // Pa: force density, averaged like friction_force
+    PerTangent<Eigen::VectorXd> slip_velocity;  // m/s: node velocity minus V over the last substep
     Eigen::VectorXd gap;            // m: height above the foundation at the end of the step
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // last substep: 0 open, 1 stick, 2 slip
-    // A 3D body's z components of x, friction and slip_velocity (empty in 2D).
-    Eigen::VectorXd z, friction_z, slip_velocity_z;
+    Eigen::VectorXd z;              // m: a 3D body's positions across the edge (empty in 2D)
 };
 
 // Inputs over one communication step: values at its start and their time derivatives
 // (zero derivatives hold the inputs constant, as FMI 2.0 does without input derivatives).
 struct StepInputs {
-    double foundation_velocity = 0, top_displacement = 0;
-    double foundation_velocity_z = 0, foundation_acceleration_z = 0;  // a 3D body's foundation
-    double foundation_acceleration = 0, top_velocity = 0;
+    Tangential foundation_velocity{}, foundation_acceleration{};  // per tangent of its plane
+    double top_displacement = 0, top_velocity = 0;
     double top_force = 0, top_force_rate = 0;  // force control
 };
 
@@ -222,8 +220,9 @@ private:
     StepStatistics statistics_;
     bool energies_current_ = false;
     Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
-    Eigen::VectorXd edge_sum_N_, edge_sum_T_;  // multipliers summed over the step's substeps
-    Eigen::VectorXd edge_sum_Tz_;  // a 3D body's z friction (empty in 2D)
+    // Multipliers summed over the step's substeps (friction per tangent).
+    Eigen::VectorXd edge_sum_N_;
+    PerTangent<Eigen::VectorXd> edge_sum_T_;
     EdgeSnapshot edge_;
     void update_edge(int substeps);
     double nominal_substep_ = 0;

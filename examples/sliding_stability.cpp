@@ -29,7 +29,7 @@
 // unknowns; redistributed_both's massless x dofs are refused: D sits on them).
 //
 // Which nodes touch (--lift-off): by default every contact node is in contact, the
-// linearization of issues 3 and 10. With friction the steady reactions of that state are not
+// linearization of the stability maps. With friction the steady reactions of that state are not
 // all compressive (F = 0.3 already pulls on the last node), so --lift-off finds the steady
 // sliding state's contact set by active sets: drop the nodes pulled on, add back the ones that
 // penetrate, until the state is admissible; a lifted node's dofs are then free of contact and

@@ -259,7 +259,7 @@ Variable& Variable::starting_at(const char* text) {
 namespace {
 
 // A row of one model (Variable::dimension). A platform build's binary holds its own model's rows
-// only (CONTACTBODY_ONE_MODEL_TABLE: the other's would take room in the FMU, issue 41's 5 MB);
+// only (CONTACTBODY_ONE_MODEL_TABLE: the other's would take room in the FMU, the 5 MB limit);
 // the native build's hold both, and its table test checks them together.
 #if !CONTACTBODY_ONE_MODEL_TABLE || CONTACTBODY_MODEL_DIMENSION == 2
 #define PLANAR_ROW(...) __VA_ARGS__.only_in(2),

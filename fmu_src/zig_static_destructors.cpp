@@ -1,5 +1,5 @@
 // zig's linker does not register a shared object's static destructors with __cxa_finalize
-// (zig issue 17908): they would run after dlclose, in unmapped code, and crash the host at
+// (ziglang/zig#17908): they would run after dlclose, in unmapped code, and crash the host at
 // its exit. Running them when the library is unloaded is what a gcc-linked .so does.
 extern "C" void __cxa_finalize(void*);
 extern "C" void* __dso_handle;

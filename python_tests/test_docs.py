@@ -133,3 +133,47 @@ def test_the_contact_solve_cost_model_is_the_measured_crossover():
         kappa = k0 + kf * float(friction)
         assert b["above"] < kappa, friction
         assert b["below"] is None or kappa < b["below"], friction
+
+
+def _decision_headings():
+    text = (ROOT / "docs" / "decisions.md").read_text()
+    return text, [h.strip() for h in re.findall(r"^#{2,3} (.+)$", text, re.M) if h.strip() != "Contents"]
+
+
+def test_decisions_have_a_heading_each_and_a_table_of_contents():
+    """docs/decisions.md: one heading per decision, every one listed in its contents."""
+    text, headings = _decision_headings()
+    assert len(headings) > 50
+    contents = text.split("## Contents", 1)[1].split("\n## ", 1)[0]
+    listed = re.findall(r"^\s*- \[(.+)\]\(#([^)]+)\)$", contents, re.M)
+    assert [title for title, _ in listed] == headings
+
+
+def test_comments_name_decisions_that_exist():
+    """A comment or document that names a decision ("docs/decisions.md, "Far travel ..."") names
+    the start of one of its headings."""
+    _, headings = _decision_headings()
+    named = 0
+    for folder in ("solver", "fmu_src", "docs", "examples", "benchmarks", "contactbody", "cmake"):
+        for path in (ROOT / folder).rglob("*"):
+            if path.suffix not in {".cpp", ".hpp", ".md", ".py", ".cmake"}:
+                continue
+            for name in re.findall(r'decisions\.md`?,? "([^"]+)"', path.read_text(errors="replace")):
+                name = " ".join(re.sub(r"//|#", " ", name).split())  # a name wrapped in a comment
+                assert any(h.startswith(name) for h in headings), f"{path.relative_to(ROOT)} names \"{name}\""
+                named += 1
+    assert named >= 10
+
+
+def test_no_issue_numbers_in_code_docs_or_examples():
+    """Issues are the tracker's: code, docs and examples say what and why without them (an
+    upstream project's issue is named by its repository, owner/name#N)."""
+    found = []
+    for folder in ("solver", "fmu_src", "docs", "examples"):
+        for path in (ROOT / folder).rglob("*"):
+            if not path.is_file() or path.suffix not in {".cpp", ".hpp", ".h", ".md", ".py", ".txt"}:
+                continue
+            for line_number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+                if re.search(r"\bissues? #?\d+", line, re.I):
+                    found.append(f"{path.relative_to(ROOT)}:{line_number}")
+    assert not found, found

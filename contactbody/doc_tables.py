@@ -13,8 +13,19 @@ A table copied unchanged from a results .md uses `<!-- rows of FILE -->` instead
 """
 import json
 import math
+import pathlib
 import re
 import sys
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def documents():
+    """Every Markdown file of the repository outside build trees and environments."""
+    skip = {".venv", "build", "build-before", "third_party", ".git", "dist"}
+    return sorted(p for p in ROOT.rglob("*.md")
+                  if not skip & set(p.relative_to(ROOT).parts))
+
 
 GENERATORS = {}
 DERIVED = {}  # a value that prose quotes as `FILE.json: =NAME`, computed from the file
@@ -311,7 +322,6 @@ def write(document, root):
 
 
 def main(argv):
-    from contactbody.quotes import ROOT, documents
     if argv != ["--write"]:
         print(__doc__)
         return 2

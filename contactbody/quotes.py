@@ -30,13 +30,12 @@ It holds when it is what that generator makes of the file today.
 """
 import json
 import math
-import pathlib
 import re
 import sys
 
 from contactbody import doc_tables
+from contactbody.doc_tables import ROOT, documents  # noqa: F401 (quotes.documents, too)
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
 UNIT = r"(?P<unit>[ \u00a0]?(?:×|x|%|MB|kB|ms|µs|m²|s|J/m|J|kN/m|N/m|m/s|rad/s|/s|kHz|Hz|MPa|Pa|cm|mm|µm|m)?)"
@@ -45,13 +44,6 @@ QUOTE = re.compile(NUMBER + UNIT + r"<!-- (?P<file>[\w./-]+\.json): (?P<path>[^>
 MARKER = re.compile(r"<!-- [\w./-]+\.json: ")
 TABLE = re.compile(r"<!-- rows of (?P<file>[\w./-]+\.(?:md|txt)) -->\n"
                    r"(?:(?P<table>(?:\|.*\n?)+)|```\n(?P<block>(?:(?!```).*\n)*)```)")
-
-
-def documents():
-    """Every Markdown file of the repository outside build trees and environments."""
-    skip = {".venv", "build", "build-before", "third_party", ".git", "dist"}
-    return sorted(p for p in ROOT.rglob("*.md")
-                  if not skip & set(p.relative_to(ROOT).parts))
 
 
 def parse_number(text):

@@ -27,7 +27,7 @@ from xml.sax.saxutils import quoteattr
 
 from fmpy import read_model_description
 
-from .fmu import find_fmu
+from .fmu import configured_copy, contact_nodes, find_fmu  # noqa: F401 (system's own API too)
 from .master import System
 
 WIDTH = 0.01  # m: the body's thickness, the companions' contact_width
@@ -150,87 +150,6 @@ def write_ssp(system: System, path, name="System", stop_time=0.01):
                       if k.split(".", 1)[0] == component}
             z.writestr(f"resources/{pathlib.Path(fmu_path).name}", configured_copy(fmu_path, values))
     return path
-
-
-def configured_copy(fmu_path, values: dict) -> bytes:
-    """The FMU's archive with `values` as its start values: in resources/start_values.txt,
-    which the FMU reads at instantiation and returns to at fmi2Reset (fmu_src/
-    resource_start_values.hpp), and in its modelDescription's start attributes, so that an
-    importer gets them whether it applies start values (SSP tools, the ssv binding) or not
-    (fmpy 0.3.32's simulate_ssp).
-
-    FMI 3.0 (ContactBody_fmi3.fmu): the same, and a new nx also sets edge_nodes' start to
-    nx + 1, a mesh to its number of contact nodes (the FMU itself counts them: `mesh` is a
-    structural parameter that sets edge_nodes), so that an importer that sizes the edge arrays
-    from the modelDescription (fmpy does) records that many values.
-
-    A `mesh` that names a file goes into the copy's resources/ and is named there by its file
-    name alone (the FMU looks for a relative mesh in its resources): the copy carries its body.
-    Strings are written as they are, numbers as Python writes them."""
-    import xml.etree.ElementTree as ET
-    values = dict(values)
-    edge_nodes = None
-    if values.get("mesh") and _is_fmi3(fmu_path):
-        edge_nodes = contact_nodes(fmu_path, values["mesh"])
-    carried = {}
-    if values.get("mesh") and pathlib.Path(values["mesh"]).is_file():
-        mesh = pathlib.Path(values["mesh"])
-        carried[f"resources/{mesh.name}"] = mesh.read_bytes()
-        values["mesh"] = mesh.name
-    text = lambda value: value if isinstance(value, str) else repr(value)
-    out = io.BytesIO()
-    with zipfile.ZipFile(fmu_path) as src, zipfile.ZipFile(out, "w") as dst:
-        for info in src.infolist():
-            data = src.read(info)
-            if info.filename == "modelDescription.xml":
-                root = ET.fromstring(data)
-                starts = dict(values)
-                if root.get("fmiVersion", "").startswith("3") and "nx" in values:
-                    starts["edge_nodes"] = int(values["nx"]) + 1
-                if edge_nodes is not None:
-                    starts["edge_nodes"] = edge_nodes
-                for v in root.find("ModelVariables"):
-                    if v.get("name") not in starts:
-                        continue
-                    # FMI 2.0: the typed child of ScalarVariable; FMI 3.0: the element itself,
-                    # or its <Start value=...> for Strings.
-                    typed = next(iter(v)) if v.tag == "ScalarVariable" else v
-                    start = typed.find("Start")
-                    (typed if start is None else start).set(
-                        "start" if start is None else "value", text(starts[v.get("name")]))
-                data = ET.tostring(root, encoding="UTF-8", xml_declaration=True)
-            dst.writestr(info, data)
-        dst.writestr("resources/start_values.txt", "".join(
-            f"{name} = {text(value)}\n" for name, value in values.items()))
-        for name, data in carried.items():
-            dst.writestr(name, data)
-    return out.getvalue()
-
-
-def _is_fmi3(fmu_path):
-    with zipfile.ZipFile(fmu_path) as z:
-        return b'fmiVersion="3' in z.read("modelDescription.xml")
-
-
-def contact_nodes(fmu_path, mesh):
-    """How many contact nodes the mesh file `mesh` has, as the FMI 3.0 FMU counts them: set in
-    Configuration Mode, `mesh` sets the structural parameter edge_nodes. (A file the FMU cannot
-    read leaves edge_nodes at nx + 1; initialization then refuses the file, saying why.)"""
-    import fmpy
-    from fmpy.fmi3 import FMU3Slave
-    md = fmpy.read_model_description(str(fmu_path))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    with tempfile.TemporaryDirectory() as tmp:
-        slave = FMU3Slave(guid=md.guid, unzipDirectory=fmpy.extract(str(fmu_path), tmp),
-                          modelIdentifier=md.coSimulation.modelIdentifier, instanceName="count")
-        slave.instantiate()
-        try:
-            slave.enterConfigurationMode()
-            slave.setString([vr["mesh"]], [str(pathlib.Path(mesh).resolve())])
-            count = slave.getUInt64([vr["edge_nodes"]])[0]
-        finally:
-            slave.freeInstance()
-    return int(count)
 
 
 def simulate_ssp(path, stop_time, step_size):

@@ -388,9 +388,9 @@ def test_committed_fmi3_model_description_is_the_generated_one(unzipped3):
 
 def test_a_configured_copy_with_another_nx_runs_in_plain_fmpy(tmp_path):
     """fmpy sizes the arrays from the modelDescription's start of edge_nodes (it does not enter
-    Configuration Mode): contactbody.system.configured_copy writes nx and edge_nodes = nx + 1,
+    Configuration Mode): contactbody.fmu.configured_copy writes nx and edge_nodes = nx + 1,
     and plain simulate_fmu records 11-node arrays that add up to normal_force."""
-    from contactbody.system import configured_copy
+    from contactbody.fmu import configured_copy
     copy = tmp_path / "ContactBody_fmi3_nx10.fmu"
     copy.write_bytes(configured_copy(FMU3, {"nx": 10, "friction_coefficient": 0.2}))
     assert validate_fmu(str(copy)) == []

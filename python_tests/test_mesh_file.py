@@ -632,10 +632,10 @@ def test_a_mesh_file_changed_between_runs_is_read_again(tmp_path):
 
 
 def test_a_configured_copy_carries_its_mesh(tmp_path):
-    """contactbody.system.configured_copy (the SSPs' components) puts a mesh file into the
+    """contactbody.fmu.configured_copy (the SSPs' components) puts a mesh file into the
     copy's resources/ and names it there: the copy alone, without start values, runs the body
     (the system models take their FMUs this way)."""
-    from contactbody.system import configured_copy
+    from contactbody.fmu import configured_copy
     path = meshes.plate_with_hole(tmp_path / "elsewhere" / "hole.msh", size=0.01)
     copy = tmp_path / "configured.fmu"
     copy.write_bytes(configured_copy(FMU, {"mesh": str(path), "friction_coefficient": 0.3}))

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/friction_law.hpp"
 #include "util/build_features.hpp"
 #include "util/text.hpp"
-
 
 namespace contactbody {
 
@@ -55,7 +55,6 @@ double ContactProblem::coefficient(Eigen::Index i, double slip, double* derivati
 double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                                Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
-    const bool friction = p.has_friction();
     // W lambda: a substep's first residual is at the last solve's multipliers (the warm
     // start), whose product the last residual formed; it is kept, not formed again.
     const bool known = p.revision != 0 && p.revision == product_revision_ &&
@@ -73,35 +72,45 @@ double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& l
         product_revision_ = p.revision;
     }
     u_hat_ = product_ + p.a;
-    phi.resize(lambda.size());
+    return apply_law(p, lambda, r_.tail(r_.size() - n), phi);  // r_T: W's tangential diagonal
+}
+
+double ContactSolver::apply_law(const ContactProblem& p, const Eigen::VectorXd& lambda,
+                                const Eigen::Ref<const Eigen::VectorXd>& rT, Eigen::VectorXd& phi) {
+    const Eigen::Index n = p.gap_limit.size();
+    const int tangents = p.has_friction() ? p.tangents : 0;
+    const bool rate = tangents > 0 && p.rate_dependent();
     status_.resize(n);
     pattern_.resize(n);
-    const bool rate = friction && p.rate_dependent();
+    law_F_.resize(n);
+    law_trial_.resize(n);
+    law_ratio_.resize(n);
+    law_direction_.resize(tangents * n);
     if (rate) {
-        rate_F_.resize(n);
-        rate_dF_.resize(n);
-        trial_pressure_.resize(n);
+        law_dF_.setZero(n);
+        law_slip_direction_.setZero(tangents * n);
     }
-    for (Eigen::Index i = 0; i < n; ++i) {
-        double unused = 0;
-        double& phiT = friction ? phi[n + i] : unused;
-        pattern_[i] = alart_curnier_node(
-            lambda[i], friction ? lambda[n + i] : 0.0, u_hat_[i], friction ? u_hat_[n + i] : 0.0,
-            r_[i], friction ? r_[n + i] : 0.0, p.gap_limit[i], friction ? p.slip_origin[i] : 0.0,
-            friction,
-            [&](double trial) {
-                if (!rate) return p.friction[i];
-                const double F = p.coefficient(i, u_hat_[n + i] - p.slip_origin[i], &rate_dF_[i]);
-                rate_F_[i] = F;
-                trial_pressure_[i] = trial;
-                return F;
-            },
-            phi[i], phiT, status_[i]);
-    }
-    const double scale = lambda.lpNorm<Eigen::Infinity>();
-    const double size = phi.lpNorm<Eigen::Infinity>();
-    if (size == 0) return 0;
-    return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
+    return apply_node_law(
+        p, lambda, [&](int c, Eigen::Index i) { return u_hat_[c * n + i]; },
+        [&](int c, Eigen::Index i) { return c == 0 ? r_[i] : rT[i]; },
+        [&](Eigen::Index i, const double* slip) {
+            if (!rate) return p.friction[i];
+            const double size = tangential_size(slip, tangents);
+            double dF = 0;
+            const double F = p.coefficient(i, size, &dF);
+            law_dF_[i] = size > 0 ? dF : 0.0;  // |s| has no derivative at 0
+            for (int t = 0; t < tangents; ++t) law_slip_direction_[t * n + i] = size > 0 ? slip[t] / size : 0.0;
+            return F;
+        },
+        [&](Eigen::Index i, const NodeLaw& law) {
+            status_[i] = law.status;
+            pattern_[i] = law.pattern;
+            law_F_[i] = law.coefficient;
+            law_trial_[i] = law.trial;
+            law_ratio_[i] = law.ratio;
+            for (int t = 0; t < tangents; ++t) law_direction_[t * n + i] = law.direction[t];
+        },
+        phi);
 }
 
 // The reduced Newton matrix of pattern_ (its unknowns in reduced_), LU-factored.
@@ -379,8 +388,9 @@ void ContactSolver::full_newton_direction(const ContactProblem& p) {
         }
         const double s = pattern_[i] > 0 ? 1.0 : -1.0;
         // d trial = -d lambda_N + r_N W(N_i, :) d lambda; dF = F' W(T_i, :) d lambda
-        J.row(t) = -s * (rate_F_[i] * r_[i] * p.W.row(i) + trial_pressure_[i] * rate_dF_[i] * p.W.row(t));
-        J(t, i) += s * rate_F_[i];
+        const double dF = law_dF_[i] * law_slip_direction_[i];  // dF/ds (signed)
+        J.row(t) = -s * (law_F_[i] * r_[i] * p.W.row(i) + law_trial_[i] * dF * p.W.row(t));
+        J(t, i) += s * law_F_[i];
         J(t, t) += 1;
     }
     // Eigen's blocked LU: this matrix is refactored every iteration, and the reference BLAS

@@ -24,84 +24,6 @@ namespace contactbody {
 
 enum class NodeStatus : unsigned char { open, stick, slip };
 
-// One node's Alart-Curnier residual (phi_N, phi_T), zero exactly where the node obeys the
-// contact law, with augmentation parameters r_N, r_T > 0: u = (u_N, u_T) its displacements,
-// lambda = (l_N, l_T) its multipliers. coefficient(trial) gives its friction coefficient (called
-// for an active node with friction only). Returns its pattern: 0 open, 1 stick (or active
-// without friction), +-2 slip with the sign of z. Both contact solvers classify nodes by it.
-template <class Coefficient>
-signed char alart_curnier_node(double lN, double lT, double uN, double uT, double rN, double rT,
-                               double gap, double origin, bool friction, Coefficient&& coefficient,
-                               double& phiN, double& phiT, NodeStatus& status) {
-    const double pressure = -lN;
-    const double trial = pressure - rN * (gap - uN);
-    if (trial <= 0) {
-        phiN = pressure;
-        if (friction) phiT = lT;
-        status = NodeStatus::open;
-        return 0;
-    }
-    phiN = pressure - trial;
-    if (!friction) {
-        status = NodeStatus::stick;
-        return 1;
-    }
-    const double bound = coefficient(trial) * trial;
-    const double z = lT - rT * (uT - origin);
-    if (std::abs(z) <= bound) {
-        phiT = lT - z;
-        status = NodeStatus::stick;
-        return 1;
-    }
-    phiT = lT - std::copysign(bound, z);
-    status = NodeStatus::slip;
-    return z > 0 ? 2 : -2;
-}
-
-// A 3D body's node on the disc (isotropic friction, |lambda_T| <= F lambda_N with a two-
-// dimensional slip): the same Alart-Curnier residual, the tangential trial projected onto the
-// disc of radius F x the normal trial. Both contact solvers classify 3D nodes by it.
-// One node's residual on the disc: u = (u_N, u_x, u_z) at lambda = (l_N, l_x, l_z).
-struct DiscNode {
-    NodeStatus status = NodeStatus::open;
-    double phi[3] = {0, 0, 0};
-    double direction[2] = {0, 0};  // z / |z| (slip)
-    double ratio = 0;              // bound / |z| (slip)
-    double coefficient = 0;        // F
-};
-
-inline DiscNode disc_node(const double l[3], const double u[3], double rN, double rT, double gap,
-                   const double origin[2], double F) {
-    DiscNode d;
-    d.coefficient = F;
-    const double pressure = -l[0];
-    const double trial = pressure - rN * (gap - u[0]);
-    if (trial <= 0) {
-        d.phi[0] = pressure;
-        d.phi[1] = l[1];
-        d.phi[2] = l[2];
-        return d;
-    }
-    d.phi[0] = pressure - trial;
-    const double bound = F * trial;
-    const double z[2] = {l[1] - rT * (u[1] - origin[0]), l[2] - rT * (u[2] - origin[1])};
-    const double size = std::sqrt(z[0] * z[0] + z[1] * z[1]);  // not hypot: no libm in the FMUs
-    if (size <= bound) {
-        d.phi[1] = l[1] - z[0];
-        d.phi[2] = l[2] - z[1];
-        d.status = NodeStatus::stick;
-        return d;
-    }
-    d.direction[0] = z[0] / size;
-    d.direction[1] = z[1] / size;
-    d.ratio = bound / size;
-    d.phi[1] = l[1] - bound * d.direction[0];
-    d.phi[2] = l[2] - bound * d.direction[1];
-    d.status = NodeStatus::slip;
-    return d;
-}
-
-
 struct ContactProblem {
     // Tangential components per node: 1 (a 2D body, slip along x) or 2 (a 3D body, x and z:
     // isotropic friction |lambda_T| <= F lambda_N). With friction the unknowns are
@@ -218,10 +140,14 @@ private:
                                 Eigen::VectorXd& lambda);
     double residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
     void disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda);
-    Eigen::VectorXd disc_rT_, disc_direction_, disc_ratio_;
-    // Per node at the last residual: F (the rate law's at the slip), the normal trial, and
-    // with a slip-rate law dF/d|s| and s / |s|.
-    Eigen::VectorXd disc_F_, disc_trial_, disc_dF_, disc_slip_direction_;
+    Eigen::VectorXd disc_rT_;
+    // The node law at u_hat_ (friction_law.hpp: apply_node_law), r_T(i) node i's tangential
+    // augmentation; keeps per node what the Jacobians need (law_...).
+    double apply_law(const ContactProblem& p, const Eigen::VectorXd& lambda,
+                     const Eigen::Ref<const Eigen::VectorXd>& rT, Eigen::VectorXd& phi);
+    // Per node at the last residual (tangent t's entries at t n + i): F, the normal trial,
+    // z / |z| and F trial / |z| where slipping, and with a slip-rate law dF/d|s| and s / |s|.
+    Eigen::VectorXd law_F_, law_trial_, law_direction_, law_ratio_, law_dF_, law_slip_direction_;
     // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
     // the tolerance within options.max_sweeps.
     bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
@@ -287,7 +213,6 @@ private:
     bool projects_slip_ = false, compact_products_ = false;
     SlidingProduct sliding_;
     std::uint64_t compact_revision_ = 0;
-    Eigen::VectorXd rate_F_, rate_dF_, trial_pressure_;  // per node, for the slip-rate Jacobian
     std::vector<int> reduced_;  // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
     std::vector<int> pivots_;

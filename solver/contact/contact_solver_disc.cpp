@@ -19,47 +19,10 @@ namespace contactbody {
 
 double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda,
                                     Eigen::VectorXd& phi) {
-    const Eigen::Index n = p.gap_limit.size();
     ++residual_evaluations_;
     u_hat_.noalias() = p.W * lambda;
     u_hat_ += p.a;
-    phi.resize(lambda.size());
-    status_.resize(n);
-    pattern_.resize(n);
-    disc_direction_.resize(2 * n);
-    disc_ratio_.resize(n);
-    disc_F_.resize(n);
-    disc_trial_.resize(n);
-    disc_dF_.setZero(n);
-    disc_slip_direction_.setZero(2 * n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
-        const double u[3] = {u_hat_[i], u_hat_[n + i], u_hat_[2 * n + i]};
-        const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
-        double F = p.friction[i];
-        if (p.rate_dependent()) {
-            const double slip[2] = {u[1] - origin[0], u[2] - origin[1]};
-            const double size = std::sqrt(slip[0] * slip[0] + slip[1] * slip[1]);
-            double dF = 0;
-            F = p.coefficient(i, size, &dF);
-            disc_dF_[i] = size > 0 ? dF : 0.0;  // |s| has no derivative at 0
-            disc_slip_direction_[i] = size > 0 ? slip[0] / size : 0.0;
-            disc_slip_direction_[n + i] = size > 0 ? slip[1] / size : 0.0;
-        }
-        const DiscNode d = disc_node(l, u, r_[i], disc_rT_[i], p.gap_limit[i], origin, F);
-        disc_F_[i] = F;
-        disc_trial_[i] = -l[0] - r_[i] * (p.gap_limit[i] - u[0]);
-        for (int c = 0; c < 3; ++c) phi[c * n + i] = d.phi[c];
-        status_[i] = d.status;
-        pattern_[i] = static_cast<signed char>(d.status == NodeStatus::open ? 0 : d.status == NodeStatus::stick ? 1 : 2);
-        disc_direction_[i] = d.direction[0];
-        disc_direction_[n + i] = d.direction[1];
-        disc_ratio_[i] = d.ratio;
-    }
-    const double scale = lambda.lpNorm<Eigen::Infinity>();
-    const double size = phi.lpNorm<Eigen::Infinity>();
-    if (size == 0) return 0;
-    return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
+    return apply_law(p, lambda, disc_rT_, phi);
 }
 
 // J delta = -phi, J the generalized Jacobian at the node states of the last residual:
@@ -98,8 +61,8 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             J.row(a) = rT * p.W.row(row);
             continue;
         }
-        const double t[2] = {disc_direction_[i], disc_direction_[n + i]};
-        const double F = disc_F_[i], kappa = disc_ratio_[i];
+        const double t[2] = {law_direction_[i], law_direction_[n + i]};
+        const double F = law_F_[i], kappa = law_ratio_[i];
         // Component c - 1 of: E_T - F t (-e_N + r_N W_N) - kappa (I - t t^T)(E_T - r_T W_T)
         const int q = static_cast<int>(c - 1);
         J.row(a) = -F * t[q] * rN * p.W.row(i);
@@ -111,9 +74,9 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             J.row(a) += kappa * projector * rT * p.W.row(col);
             J(a, col) -= kappa * projector;
         }
-        if (disc_dF_[i] != 0)
-            J.row(a) -= disc_trial_[i] * t[q] * disc_dF_[i] *
-                        (disc_slip_direction_[i] * p.W.row(n + i) + disc_slip_direction_[n + i] * p.W.row(2 * n + i));
+        if (p.rate_dependent() && law_dF_[i] != 0)
+            J.row(a) -= law_trial_[i] * t[q] * law_dF_[i] *
+                        (law_slip_direction_[i] * p.W.row(n + i) + law_slip_direction_[n + i] * p.W.row(2 * n + i));
         J(a, row) += 1;
     }
     Eigen::VectorXd rhs(k);

@@ -5,10 +5,11 @@
 #include <limits>
 #include <stdexcept>
 
-#include "util/build_features.hpp"
+#include "contact/friction_law.hpp"
 #include "linalg/pattern_lu.hpp"
-#include "util/text.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "util/build_features.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 
@@ -16,9 +17,11 @@ namespace {
 // A 3D body's isotropic friction (the disc), which a 2D-only build leaves out (build_features.hpp).
 bool isotropic(const ContactProblem& p) { return solid_bodies_built && p.has_friction() && p.tangents == 2; }
 
-// One r_T for both tangential directions, the mean of K's: invariant under a turn about y.
-double tangential_stiffness(const HeldOperator& K, Eigen::Index n, Eigen::Index i) {
-    return 0.5 * (K.stiffness(n + i) + K.stiffness(2 * n + i));
+// One r_T for every tangential direction, the mean of K's: invariant under a turn about y.
+double tangential_stiffness(const HeldOperator& K, Eigen::Index n, Eigen::Index i, int tangents) {
+    double sum = 0;
+    for (int t = 1; t <= tangents; ++t) sum += K.stiffness(t * n + i);
+    return sum / tangents;
 }
 
 double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
@@ -30,40 +33,22 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
                                      const Eigen::VectorXd& w, const Eigen::VectorXd& lambda,
                                      Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
-    const bool friction = p.has_friction();
-    phi.resize(lambda.size());
+    const int tangents = p.has_friction() ? p.tangents : 0;
     trial_pattern_.resize(n);
     trial_status_.resize(n);
-    if (isotropic(p)) {  // a 3D body: the disc (one r_T for both directions,
-        trial_direction_.resize(2 * n);  // the mean of K's: invariant under a turn about y)
-        trial_ratio_.resize(n);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const double l[3] = {lambda[i], lambda[n + i], lambda[2 * n + i]};
-            const double u[3] = {-w[K.dof(i)], w[K.dof(n + i)], w[K.dof(2 * n + i)]};
-            const double origin[2] = {p.slip_origin[i], p.slip_origin[n + i]};
-            const double rT = tangential_stiffness(K, n, i);
-            const DiscNode d = disc_node(l, u, K.stiffness(i), rT, p.gap_limit[i], origin, p.friction[i]);
-            for (int c = 0; c < 3; ++c) phi[c * n + i] = d.phi[c];
-            trial_status_[i] = d.status;
-            trial_pattern_[i] = d.status == NodeStatus::open ? 0 : d.status == NodeStatus::stick ? 1 : 2;
-            trial_direction_[i] = d.direction[0];
-            trial_direction_[n + i] = d.direction[1];
-            trial_ratio_[i] = d.ratio;
-        }
-    }
-    for (Eigen::Index i = 0; i < n && !isotropic(p); ++i) {
-        double unused = 0;
-        double& phiT = friction ? phi[n + i] : unused;
-        trial_pattern_[i] = alart_curnier_node(
-            lambda[i], friction ? lambda[n + i] : 0.0, -w[K.dof(i)], friction ? w[K.dof(n + i)] : 0.0,
-            K.stiffness(i), friction ? K.stiffness(n + i) : 0.0, p.gap_limit[i],
-            friction ? p.slip_origin[i] : 0.0, friction, [&](double) { return p.friction[i]; },
-            phi[i], phiT, trial_status_[i]);
-    }
-    const double scale = lambda.lpNorm<Eigen::Infinity>();
-    const double size = phi.lpNorm<Eigen::Infinity>();
-    if (size == 0) return 0;
-    return scale > 0 ? size / scale : std::numeric_limits<double>::infinity();
+    trial_direction_.resize(tangents * n);
+    trial_ratio_.resize(n);
+    return apply_node_law(
+        p, lambda, [&](int c, Eigen::Index i) { return c == 0 ? -w[K.dof(i)] : w[K.dof(c * n + i)]; },
+        [&](int c, Eigen::Index i) { return c == 0 ? K.stiffness(i) : tangential_stiffness(K, n, i, tangents); },
+        [&](Eigen::Index i, const double*) { return p.friction[i]; },
+        [&](Eigen::Index i, const NodeLaw& law) {
+            trial_status_[i] = law.status;
+            trial_pattern_[i] = law.pattern;
+            for (int t = 0; t < tangents; ++t) trial_direction_[t * n + i] = law.direction[t];
+            trial_ratio_[i] = law.ratio;
+        },
+        phi);
 }
 
 // The multipliers of w: the contact dofs' reactions K w - rhs (B^T lambda), zero at open nodes.
@@ -145,10 +130,10 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
         if (solid_bodies_built && c.partner >= 0) {
             // A 3D slipping node: phi_T = l_T - F p t(z) linearized at the iterate (Newton, not
             // a fixed point in t): l_T - F p t - rho (I - t t^T) (q - q0), q = l_T - r_T u_T,
-            // rho = F p / |z| (disc_node's ratio), q0 the iterate's (the shift).
+            // rho = F p / |z| (node_law's ratio), q0 the iterate's (the shift).
             const int component = static_cast<int>(j / n) - 1;
             const Eigen::Index x_k = component == 0 ? k : c.partner, z_k = component == 0 ? c.partner : k;
-            const double rT = tangential_stiffness(K, n, i);
+            const double rT = tangential_stiffness(K, n, i, p.tangents);
             const double t[2] = {direction_[i], direction_[n + i]};
             const double l[2] = {reaction(x_k), reaction(z_k)};
             const double qT[2] = {l[0] - rT * value(x_k), l[1] - rT * value(z_k)};
@@ -637,7 +622,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         newton_iteration_ = ++info.iterations;
         if (isotropic(p)) {  // the iterate's rho (I - t t^T) q0 (equations)
             for (Eigen::Index i = 0; i < n; ++i) {
-                const double rT = tangential_stiffness(K, n, i);
+                const double rT = tangential_stiffness(K, n, i, p.tangents);
                 const double t[2] = {direction_[i], direction_[n + i]};
                 const double q[2] = {lambda[n + i] - rT * w[K.dof(n + i)],
                                      lambda[2 * n + i] - rT * w[K.dof(2 * n + i)]};

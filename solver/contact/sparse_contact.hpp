@@ -3,7 +3,7 @@
 // W = B K^-1 B^T is dense in the 2 n_c contact unknowns, so forming it costs n_c^3 and
 // (2 n_c)^2 memory. Here it is never formed.
 //
-// Semi-smooth Newton on the same Alart-Curnier residual as ContactSolver (alart_curnier_node),
+// Semi-smooth Newton on the same Alart-Curnier residual as ContactSolver (friction_law.hpp, node_law),
 // iterated as a primal-dual active set: each iterate (w, lambda) satisfies K w = rhs + B^T lambda
 // exactly, and a node pattern's step solves that pattern's linear problem on the sparse system:
 //   active node:   its y dof held at the gap (u_N = gap limit),
@@ -126,7 +126,7 @@ private:
     // A 3D body's slipping nodes' directions (x components, then z): the pattern's, and the
     // last residual's.
     Eigen::VectorXd direction_, trial_direction_;
-    // Their F p / |z| (disc_node's ratio: the slip law's derivative in t), and the iterate's
+    // Their F p / |z| (node_law's ratio: the slip law's derivative in t), and the iterate's
     // rho (I - t t^T) q0 (x components, then z): the Newton step's terms.
     Eigen::VectorXd ratio_, trial_ratio_, newton_shift_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;

@@ -259,7 +259,7 @@ TEST(HeldOperator, SlippingRowsHoldTheirSlipLaw) {
     const Discretization& d = body.discretization();
     const double dt = 1e-6;
     const SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
-    HeldOperator held(K, d.contact_unknowns());
+    HeldOperator held(K, d.contact_unknowns(), 2);
     held.set_slip_coefficient(0.3);
     const Eigen::Index n = held.unknowns() / 2;
     std::vector<char> hold(static_cast<size_t>(2 * n), 0);

@@ -130,19 +130,25 @@ void check_parameters(const SceneParameters& p) {
     if (p.modes > 0) check_reduced_edge(p);  // (a full body does not use reduced_edge)
 }
 
+// What a mesh of each dimension holds, as messages name it.
+constexpr const char* cells_of_dimension[] = {"", "", "triangles, a 2D body", "tetrahedra, a 3D body"};
+
 void check_dimension(const Mesh& mesh, const SceneParameters& p) {
     if (mesh.dim != p.dimension) {
         Text msg;
         msg << "mesh " << mesh.source << ", line 0: it holds "
-            << (mesh.dim == 3 ? "tetrahedra, a 3D body" : "triangles, a 2D body") << "; this model's "
+            << cells_of_dimension[mesh.dim] << "; this model's "
             << "bodies are " << p.dimension << "D"
             << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh with first-order "
                                    "triangles in the x-y plane"
                                  : " (forces in N) and need a mesh with first-order tetrahedra");
         throw std::invalid_argument(msg.str());
     }
-    if (mesh.dim == 3 && !(p.lambda + 2 * p.mu / 3 > 0))
-        reject("lambda", "such that lambda + 2 mu / 3 > 0 for a 3D body (a positive bulk modulus)", p.lambda);
+    if (!(p.lambda + 2 * p.mu / mesh.dim > 0)) {  // (in 2D, lambda + mu > 0: checked above)
+        Text rule;
+        rule << "such that lambda + 2 mu / " << mesh.dim << " > 0 for a " << mesh.dim << "D body (a positive bulk modulus)";
+        reject("lambda", rule.str(), p.lambda);
+    }
 }
 
 void check_reduced_edge(const SceneParameters& p) {

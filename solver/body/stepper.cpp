@@ -170,9 +170,9 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
 }
 
 void Stepper::set_friction_coefficient(double friction) {
-    // A 3D body's held operator has its contact z dofs with friction, not without: a factor
+    // A held operator has a second tangent's contact dofs with friction, not without: a factor
     // made for the other is dropped.
-    if (disc_.mesh.dim == 3 && (friction > 0) != (params_.friction_coefficient > 0)) {
+    if (held_unknowns_per_node(friction) != held_unknowns_per_node(params_.friction_coefficient)) {
         for (auto& f : cache_) f.reset();
         spare_.clear();
     }
@@ -183,7 +183,11 @@ void Stepper::set_friction_coefficient(double friction) {
 }
 
 double Stepper::slip_coefficient() const {
-    return disc_.mesh.dim == 2 && contact_path_ != ContactPath::sparse_gcr ? params_.friction_coefficient : 0.0;
+    return contact_path_ != ContactPath::sparse_gcr ? params_.friction_coefficient : 0.0;
+}
+
+int Stepper::held_unknowns_per_node(double friction) const {
+    return friction > 0 ? 1 + disc_.mesh.tangents() : 2;
 }
 
 int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
@@ -360,9 +364,9 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     ++factorizations_;
     f->id = ++factor_ids_;
     if (sparse) {  // y and x; a 3D body's z with friction (without, its x is not used)
-        const bool isotropic_friction = disc_.mesh.dim == 3 && params_.friction_coefficient > 0;
-        contact_dofs.resize(static_cast<size_t>((isotropic_friction ? 3 : 2) * nc));
-        f->held = std::make_unique<HeldOperator>(K, contact_dofs);
+        const int per_node = held_unknowns_per_node(params_.friction_coefficient);
+        contact_dofs.resize(static_cast<size_t>(per_node * nc));
+        f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node);
         f->held->set_slip_coefficient(slip_coefficient());
         return f;
     }

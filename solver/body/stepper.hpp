@@ -222,6 +222,9 @@ public:
     // The coefficient of the slipping rows a held factor may have: the kinetic F of a 2D body
     // (a 3D body's slip law is linearized at each iterate: its slips stay GCR's).
     double slip_coefficient() const;
+    // The contact unknowns a node has in the held operator: y and x, and with friction every
+    // tangent's.
+    int held_unknowns_per_node(double friction) const;
 
     SubstepReport substep(State& s, double dt, const SubstepLoad& load) override;
     const ContactSnapshot& last_contact() const override { return snapshot_; }

@@ -8,7 +8,7 @@
 
 namespace contactbody {
 
-HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
+HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node)
     : K_(K), dofs_(std::move(contact_dofs)) {
     K_.makeCompressed();
     lower_ = K_.triangularView<Eigen::Lower>();
@@ -61,13 +61,13 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs)
             if (r == c) full_diagonal_[static_cast<size_t>(j)] = k;
         }
     }
-    slips_allowed_ = m % 2 == 0;
+    slips_allowed_ = unknowns_per_node == 2;
     for (Eigen::Index i = 0; slips_allowed_ && i < m / 2; ++i) {
         const int y = dof(i), x = dof(m / 2 + i);
         slips_allowed_ = outer[x + 1] - outer[x] == outer[y + 1] - outer[y] &&
                          std::equal(inner + outer[x], inner + outer[x + 1], inner + outer[y]);
     }
-    slip_.assign(static_cast<size_t>(m / 2), 0);
+    slip_.assign(static_cast<size_t>(m / unknowns_per_node), 0);
 }
 
 HeldOperator::~HeldOperator() = default;

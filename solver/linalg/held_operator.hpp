@@ -18,8 +18,9 @@ class PatternLu;
 class HeldOperator {
 public:
     // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
-    // then x dofs; Discretization::contact_unknowns).
-    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs);
+    // then each tangent's; Discretization::contact_unknowns), unknowns_per_node of them a node
+    // (2: y and x; 3: y, x and z). Slips are held only with one tangent (2 a node).
+    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node);
     ~HeldOperator();
     HeldOperator(const HeldOperator&) = delete;
     HeldOperator& operator=(const HeldOperator&) = delete;
@@ -46,7 +47,7 @@ public:
         return held == held_ && slip == slip_;
     }
     // F of the held slips (the kinetic coefficient: the stepper's), 0 where slips are not held
-    // (a 3D body, or a factor whose LU found no pivot: then never again). A new one refactors.
+    // (two tangents, or a factor whose LU found no pivot: then never again). A new one refactors.
     double slip_coefficient() const { return slips_allowed_ ? slip_coefficient_ : 0.0; }
     void set_slip_coefficient(double friction);
     // b <- b - K_H(:, held) values(held) on the rows not held, and values on the held rows: the

@@ -29,11 +29,9 @@ string(JSON platform_count LENGTH ${platform_table} platforms)
 math(EXPR platform_last "${platform_count} - 1")
 if(CONTACTBODY_PORTABLE)
   include(ExternalProject)
-  # The platforms' builds run beside each other and the native targets (as many as the outer
-  # build's jobs), each on two jobs: one after another in the console pool, each build's last
-  # files left a core idle (its longest file, its links), and the build took about 1100 s in CI
-  # against 724-939 s. cmake/build_platform.cmake builds a failed one once more (zig's Mach-O
-  # link failed once, cause not found: docs/building.md).
+  # The platforms' builds run beside each other and the native targets, each on two jobs, so
+  # that no core idles at a build's tail; cmake/build_platform.cmake builds a failed one once
+  # more (docs/building.md, "CI time").
   if(NOT ZIG)  # scripts/setup.sh passes a zig outside the clone (its libc++ builds are cached by path)
     python_package_file(ZIG ziglang zig)
   endif()

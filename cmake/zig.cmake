@@ -13,10 +13,10 @@ endif()
 list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES ZIG)
 # -s -fPIC in the compiler command itself, so that CMake's compiler identification, every
 # object, host and FMU binary ask zig for one and the same libc++ (stripped, position-independent),
-# which zig builds once per target (~100 s of 2 cores), not once for CMake's checks and again for
-# the binaries.
+# which zig builds once per target, not once for CMake's checks and again for the binaries.
 # -s also drops the debug information zig emits by default: the binaries were stripped anyway,
-# and without it a heavy file compiles in 3/4 of the time (modal_basis.cpp: 34 s -> 25 s).
+# and heavy files compile faster without it (docs/building.md, "zig builds its libc++ once per
+# set of flags").
 set(CMAKE_C_COMPILER "${ZIG}" cc -target ${CONTACTBODY_TARGET} -s -fPIC)
 set(CMAKE_CXX_COMPILER "${ZIG}" c++ -target ${CONTACTBODY_TARGET} -s -fPIC)
 set(CONTACTBODY_ZIG ON)

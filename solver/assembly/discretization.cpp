@@ -48,12 +48,8 @@ bool reduced_edge_has_tangential_mass(const SceneParameters& p) {
         case ReducedEdge::tangential_mass: return true;
         case ReducedEdge::by_variant: break;
     }
-    // Measured (benchmarks/results/reduced_edge.md): the tangential mass where the variant
-    // has mass at the contact (0, 3, 4: the massless edge's end-of-step velocities run away;
-    // for 4 the deciding measurement, a 1e-14 change growing to O(1), was made while friction
-    // took that velocity, and no longer holds: decisions.md); the massless edge for the
-    // paper's midpoint variant 1 (as stable, and 50x more accurate at 128 modes in the paper's
-    // scene), and for variant 2, which has no tangential mass.
+    // The tangential mass where the variant has mass at the contact (0, 3, 4), the massless
+    // edge for variants 1 and 2 (docs/decisions.md, "The reduced body's contact edge").
     return p.mass_matrix == MassVariant::standard || contact_at_end_of_step(p.mass_matrix);
 }
 

@@ -122,9 +122,8 @@ bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, b
     // The slip rate the law sees is the one the friction works on, in every variant: the
     // substep's mean (u_T^{k+1} - u_T^k) / dt - V = slip / (dt/2). Then lambda_T opposes the
     // very motion over which its work lambda_T (u_T^{k+1} - u_T^k - V dt) is counted, and
-    // friction dissipates in every substep. (The implicit-contact variants once used the
-    // end-of-substep rate v_T^{k+1} - V: at a reversal inside a substep it has the other sign
-    // than the mean, and a bouncing body gained 0.25 J/m from friction in 3 ms.)
+    // friction dissipates in every substep (docs/decisions.md, "Friction works on the slip
+    // rate it sees").
     const bool stribeck = friction && p.stribeck_velocity > 0;
     if (friction) {
         problem.rate = rate_law(p);
@@ -261,9 +260,8 @@ public:
     bool sparse_contact() const;
     // The cost model: the sparse solve where the condensed one's dense work per substep,
     // about (2 n_c)^2, exceeds kappa(F) = kappa_0 + kappa_F F times the unknowns n_f (a sparse
-    // solve's work grows with them, and the friction costs it held solves, fewer since a 2D
-    // body's factor holds its slipping rows: 150 F before), the constants fitted to
-    // benchmarks/contact_crossover.py's bounds. The
+    // solve's work grows with them, and the friction costs it held solves), the constants
+    // fitted to benchmarks/contact_crossover.py's bounds (docs/decisions.md, "Which solve"). The
     // choice is made when a factor is made. A slip-rate law keeps the condensed solve (its full
     // Jacobian and exact node solves need W).
     static bool sparse_contact_pays(Eigen::Index contact_nodes, Eigen::Index unknowns, double friction);

@@ -280,10 +280,8 @@ void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::Matrix
 // Woodbury's formula J^-1 = J0^-1 - Z Cap^-1 V^T J0^-1, Z = J0^-1 U, Cap = I + V^T Z. Only
 // the rows and columns of the c unknowns C of the nodes whose state changed differ:
 // J - J0 = E_C D(C, :) + D(~C, C) E_C^T = U V^T, U = [E_C, D(~C, C)], V^T = [D(C, :); E_C^T].
-// False where a refactorization is cheaper or the capacitance matrix is singular. An update
-// (4 c k^2) is rebuilt at every new pattern, while a refactorization (k^3 / 1.5) keeps the
-// next updates small: measured at nx = 160 (benchmarks/results/contact_profile.md), updating
-// while c <= k / 20 beat c <= k / 6 (the flops' break-even) by 25-40 % and k / 48 by 10-20 %.
+// False where a refactorization is cheaper (c > k / 20: docs/decisions.md, "Updated Newton
+// factorizations") or the capacitance matrix is singular.
 bool ContactSolver::prepare_update(const ContactProblem& p) {
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();

@@ -4,11 +4,9 @@
 // (ContactSolverOptions::project_slip). For any s,
 //   M lambda = M_C lambda_N + M_T (lambda_T + s lambda_N),   M_C = M_N - M_T diag(s),
 // and node i's correction lambda_T + s lambda_N is zero where it slides: the product reads
-// M_C, half of M's columns. The contact solver makes its products with W so. (The reduced
-// body's contact forces B_hat^T lambda formed so, from B_hat^T's compacted columns with their
-// residual rows upper trapezoidal, read a third fewer entries at nx = 160 with 80 modes and
-// were no faster, 64 us a pressed substep with and without: benchmarks/results/
-// contact_profile.md, "native after (43d301c)" against "native before (4be9db8)".)
+// M_C, half of M's columns. The contact solver makes its products with W so (the reduced
+// body's contact forces do not: docs/decisions.md, "Tried and dropped: the forces through the
+// same compaction as W's products").
 #pragma once
 
 #include <Eigen/Dense>

@@ -165,30 +165,18 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     for (size_t i = 0; i < slip_.size(); ++i) differing += slip_[i] != K.slip()[i];
     // A pattern that differs from the factor's held set in more than max_differing dofs is
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
-    // solves (where the body is stiff, as in the load paths, the differing dofs' system
-    // converges slowly). Except on a factor that holds nothing (a body from rest: the static
-    // start's load path) where a refactorization costs more held solves than GCR may take
-    // (tetrahedral bodies: 125 at 2.7k nodes, 1,400 at 111k): there a detour may take up to
-    // max_directions solves, and a pattern that differs in more dofs is tried on the factor
-    // too, until the solves of such detours on this factor have come to what a
-    // refactorization costs (as in renting until the rent would have bought: never much more
-    // than twice the better choice). The frictionless load path from rest then solves on its
-    // unheld factor (the 12.6k hemisphere: 4 refactorizations before, none now, the same
-    // state). A factor held at a pattern was made for it, and patterns last there (sliding):
-    // renting on it made 3D sliding refactor later and solve more. The detours' count
-    // restarts with each factor and where a state is saved or restored (forget), so that a
-    // restored state replays.
+    // solves. On a factor that holds nothing, where a refactorization costs more held solves
+    // than GCR may take, detours of up to max_directions solves are rented until their solves
+    // come to what a refactorization costs (docs/decisions.md, "When to refactor"). The
+    // detours' count restarts with each factor and where a state is saved or restored
+    // (forget), so that a restored state replays.
     const double refactorization = K.refactorization_in_solves();
     const bool costly = refactorization > max_directions &&
                         std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });
     if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
-    // A factor that can hold the pattern's slips (a 2D body's) leaves GCR only what differs,
-    // about a solve for each differing dof from scratch: more than its refactorization costs
-    // (an LU: twice the Cholesky's flops), and it is refactored (a body of few contact nodes
-    // whose factor still held the static start's sticking nodes took ten solves at each
-    // communication step for ever, when the kept directions went at each). Not only where
-    // the directions were dropped: on a factor that differs in more, GCR on the slip laws at
-    // F = 1.2 and 0.2 stalled Newton (ContactLaw.HoldsAtEverySubstep, tried and reverted).
+    // A factor that can hold the pattern's slips (one tangent) is refactored where more dofs
+    // differ than its refactorization costs in solves (docs/decisions.md, "A 2D body's factor
+    // holds its slipping nodes").
     const int most = K.slip_coefficient() > 0 ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
                                               : max_differing;
     const bool renting = differing > most && costly && detour_solves_ < refactorization;
@@ -250,8 +238,8 @@ void SparseContactSolver::remake_images(const HeldOperator& K, const ContactProb
 // `solutions` w_new_ += their solutions combined alike (combined_: the sizes added, for the
 // digits lost); without, w_new_ is left to be solved again (combined_ infinite).
 void SparseContactSolver::add_directions(Eigen::Index q, bool solutions) {
-    // The solutions in one matrix-vector product (w_new_ read and written once, not once a
-    // direction: it was a tenth of a substep at 3,170 contact nodes, measured with perf).
+    // The solutions in one matrix-vector product: w_new_ read and written once, not once a
+    // direction (docs/decisions.md, "The kept solutions combined in one product").
     if (solutions) w_new_.noalias() += solutions_.leftCols(kept_) * coefficients_.head(kept_);
     for (int j = 0; j < kept_; ++j) {
         const double a = coefficients_[j];

@@ -200,8 +200,8 @@ void backward_group(const int* start, const int* rows, const double* upper, cons
 }  // namespace
 
 // A group's columns go together (as CHOLMOD's simplicial solves take chains of up to four):
-// y is read and written once for them, and the shared rows' indices read once; 75 % of the
-// factor's nonzeros are in chains of four or more on the pad at 3,170 contact nodes.
+// y is read and written once for them, and the shared rows' indices read once
+// (docs/decisions.md, "The LU's solve by groups of up to four columns").
 void PatternLu::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     double* y = work_.data();
     const int* start = start_.data();

@@ -4,7 +4,8 @@
 // K plus the friction coefficient times its normal dof's row. Its fill is the Cholesky
 // factor's of the same pattern and order, and a solve costs what a Cholesky solve costs.
 // Written here because CHOLMOD's LU-free modules factor symmetric matrices only and Eigen's
-// SparseLU solves 2-3x slower at these sizes (docs/decisions.md).
+// SparseLU solves slower at these sizes (docs/decisions.md, "A 2D body's factor holds its
+// slipping nodes").
 #pragma once
 
 #include <Eigen/Dense>

@@ -128,8 +128,8 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
                                    bool refactorable, Kernel kernel)
     : c_(std::make_unique<Cholmod>()), n_(K.rows()), m_(static_cast<Eigen::Index>(trailing.size())) {
     cholmod_common& c = c_->common;
-    // Simplicial L L^T: with one right-hand side its solves are 1.6-2.5x faster than the
-    // supernodal ones on these meshes (measured, nx = 20..160), and the factor is computed once.
+    // Simplicial L L^T: with one right-hand side its solves are faster than the supernodal
+    // ones, and the factor is computed once (docs/decisions.md, "One sparse solve per substep").
     c.final_ll = 1;
     c.supernodal = CHOLMOD_SIMPLICIAL;
     SparseMatrix lower = K.triangularView<Eigen::Lower>();

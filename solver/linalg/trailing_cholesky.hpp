@@ -25,10 +25,8 @@ public:
     // supernodal_flops or more (tetrahedral bodies, whose separators are surfaces; 2D bodies
     // from about 200k unknowns), a refactorable factor is instead a supernodal LU of the same
     // prepermuted matrix with diagonal pivots (Eigen's SparseLU, MPL-2; CHOLMOD's supernodal
-    // module is GPL): the same order and fill, its dense blocks in BLAS-3 kernels. Measured
-    // (benchmarks/results/factor_kernels.md): from 3e9 flops it factors 1.7-3.9x faster and
-    // solves as fast; at 2.5e8-3.2e8 it factors 1-1.8x faster but solves up to 2.6x slower,
-    // and a substep solves many times per factorization. Its solve() and refactor() allocate.
+    // module is GPL): the same order and fill, its dense blocks in BLAS-3 kernels
+    // (docs/decisions.md, "The factor of a 3D body"). Its solve() and refactor() allocate.
     // kernel: of a refactorable factor, by the rule above (automatic) or forced (tests,
     // benchmarks).
     enum class Kernel { automatic, simplicial, supernodal_lu };

@@ -31,11 +31,8 @@ std::string scheme_warning(const SceneParameters& p, double sliding_speed = 0);
 std::string massless_edge_warning(const SceneParameters& p);
 
 // The reduced body on a long contact edge: its edge's operators are dense in the contact
-// unknowns (Craig-Bampton keeps the edge physical), and on the pad that
-// benchmarks/contact_scaling.py measured, the full body's sparse contact solve was about as
-// fast where (contact unknowns)^2 reached reduced_edge_ratio times the full body's unknowns
-// (398 contact nodes: the reduced body's substep 2.5 solves, the full body's 3.0), and faster
-// beyond, in a fraction of the memory and start time
+// unknowns, and the full body's sparse contact solve is as fast where (contact unknowns)^2
+// reaches reduced_edge_ratio times the full body's unknowns, and faster beyond
 // (docs/meshes.md, "A refined contact boundary"). Names modes = 0; empty for the full body or
 // a shorter edge.
 constexpr double reduced_edge_ratio = 100;

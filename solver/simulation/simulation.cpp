@@ -179,8 +179,8 @@ void Simulation::static_initial_state(double top, double force) {
     Stepper* timing = flat ? nullptr : path_body.get();
     // Without friction the static state does not depend on the path (the least energy under
     // the contact): a curved boundary's path is one increment, with its contact at the end of
-    // the step, where ten cost ten contact solves whose contact sets differ (a 12.6k-node
-    // hemisphere's start took 110 s). A flat one keeps its ten (its bits).
+    // the step, not ten contact solves whose contact sets differ (docs/decisions.md, "The
+    // factor of a 3D body"). A flat one keeps its ten (its bits).
     const int increments_count = !flat && !(p.friction_coefficient > 0) ? 1 : 10;
     if (!p.force_control) {
         // A top pressed below the gap touches: close the gap rigidly first (above).

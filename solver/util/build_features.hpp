@@ -2,8 +2,7 @@
 // their tetrahedral kernels, their isotropic friction and the supernodal LU that factors them,
 // are left out of the 2D FMU's binaries (CMakeLists.txt: CONTACTBODY_SOLID_BODIES=0 where the
 // platform builds make them), whose model refuses a tetrahedral mesh anyway: they would take
-// ContactBody.fmu past its 5 MB limit (Eigen's SparseLU reports through an ostringstream,
-// which links the C++ library's locale machinery into each binary; docs/building.md).
+// ContactBody.fmu past its 5 MB limit (docs/building.md, "What the build makes").
 #pragma once
 
 #ifndef CONTACTBODY_SOLID_BODIES

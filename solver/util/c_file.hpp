@@ -1,6 +1,6 @@
-// Files and folders through the C library and the system, not <fstream> and <filesystem>:
-// with MinGW's libstdc++ <filesystem> alone links 0.8 MB of locale machinery into the
-// Windows binary, <fstream> and <sstream> 0.2 MB into every binary (text.hpp). Paths are
+// Files and folders through the C library and the system, not <fstream> and <filesystem>,
+// which link the C++ library's locale machinery into every binary (docs/building.md,
+// "iostreams and `std::filesystem`"). Paths are
 // UTF-8 (on Windows converted to the system's UTF-16, as libstdc++'s std::filesystem does).
 #pragma once
 

@@ -1,8 +1,6 @@
 // Text without iostreams: messages built piece by piece, numbers written and read with '.' as
 // the decimal point. <sstream> and <fstream> link the C++ library's locale machinery into
-// every binary that uses them: about 200 kB of each FMU binary with libc++, 700 kB with
-// MinGW's libstdc++, and fmpy inflates every platform's binary at each start
-// (docs/building.md).
+// every binary that uses them (docs/building.md, "iostreams and `std::filesystem`").
 #pragma once
 
 #include <string>

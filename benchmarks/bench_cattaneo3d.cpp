@@ -17,7 +17,8 @@ using namespace bench;
 
 int main(int argc, char** argv) {
     if (argc < 11) {
-        std::fprintf(stderr, "usage: bench_cattaneo3d MESH TOP F SPEED STOP INTERVAL SUBSTEP BETA LAMBDA MU\n");
+        std::fprintf(stderr,
+                     "usage: bench_cattaneo3d MESH TOP F SPEED STOP INTERVAL SUBSTEP BETA LAMBDA MU\n");
         return 2;
     }
     SceneParameters p;

@@ -9,9 +9,9 @@
 // times are the rounds' medians, the counts their means. Prints one JSON object.
 // With ONLY = pressed the lifted run is left out (for a profiler's window).
 //   bench_contact_profile NX MODES DT STEPS [EDGE [ONLY]]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -113,13 +113,14 @@ int main(int argc, char** argv) {
     // The residual's column count: with the sizes, it gives the matrices' reads (contact_profile.py).
     const auto* reduced = dynamic_cast<const ReducedStepper*>(&sim.body());
     const long residual_modes = reduced ? static_cast<long>(reduced->basis().residual.cols()) : 0;
-    std::printf("{\"nx\": %d, \"modes\": %d, \"residual_modes\": %ld, \"edge\": %d, \"dt\": %.6g, \"steps\": %d, "
-                "\"setup_s\": %.6g, \"unknowns\": %ld, \"substep_us_pressed\": %.6g, "
-                "\"substep_us_lifted\": %.6g, \"newton_iterations\": %.6g, "
-                "\"residual_evaluations\": %.6g, \"factorizations\": %.6g, \"updates\": %.6g, \"sweeps\": %.6g, "
-                "\"state_changes\": %.6g, \"active_nodes\": %.6g, \"w_product_us\": %.6g}\n",
-                p.nx, p.modes, residual_modes, static_cast<int>(p.reduced_edge), p.internal_step, steps, setup,
-                static_cast<long>(unknowns), pressed, lifted_median, iterations, residuals,
-                factorizations, updates, sweeps / n, changed / n, active / n, median(product_us));
+    std::printf(
+        "{\"nx\": %d, \"modes\": %d, \"residual_modes\": %ld, \"edge\": %d, \"dt\": %.6g, \"steps\": %d, "
+        "\"setup_s\": %.6g, \"unknowns\": %ld, \"substep_us_pressed\": %.6g, "
+        "\"substep_us_lifted\": %.6g, \"newton_iterations\": %.6g, "
+        "\"residual_evaluations\": %.6g, \"factorizations\": %.6g, \"updates\": %.6g, \"sweeps\": %.6g, "
+        "\"state_changes\": %.6g, \"active_nodes\": %.6g, \"w_product_us\": %.6g}\n",
+        p.nx, p.modes, residual_modes, static_cast<int>(p.reduced_edge), p.internal_step, steps, setup,
+        static_cast<long>(unknowns), pressed, lifted_median, iterations, residuals, factorizations, updates,
+        sweeps / n, changed / n, active / n, median(product_us));
     return 0;
 }

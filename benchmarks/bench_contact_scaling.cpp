@@ -18,9 +18,9 @@
 #include <memory>
 
 #include "bench_common.hpp"
+#include "linalg/trailing_cholesky.hpp"
 #include "reduced/reduced_stepper.hpp"
 #include "simulation/simulation.hpp"
-#include "linalg/trailing_cholesky.hpp"
 
 using namespace contactbody;
 using namespace bench;
@@ -32,8 +32,10 @@ int main(int argc, char** argv) {
     }
     SceneParameters p;  // contact_scaling.py's SCENE
     // MESH: a Gmsh file, or rect:NX for the paper's rectangle with nx = ny = NX.
-    if (std::strncmp(argv[1], "rect:", 5) == 0) p.nx = p.ny = std::atoi(argv[1] + 5);
-    else p.mesh = argv[1];
+    if (std::strncmp(argv[1], "rect:", 5) == 0)
+        p.nx = p.ny = std::atoi(argv[1] + 5);
+    else
+        p.mesh = argv[1];
     p.modes = std::atoi(argv[2]);
     p.friction_coefficient = 0.3;
     p.damping_stiffness = 4e-6;
@@ -46,10 +48,11 @@ int main(int argc, char** argv) {
     if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
-    const Stepper::ContactPath path = std::strcmp(argv[3], "sparse") == 0       ? Stepper::ContactPath::sparse
-                                      : std::strcmp(argv[3], "sparse_gcr") == 0  ? Stepper::ContactPath::sparse_gcr
-                                      : std::strcmp(argv[3], "condensed") == 0   ? Stepper::ContactPath::condensed
-                                                                                 : Stepper::ContactPath::automatic;
+    const Stepper::ContactPath path =
+        std::strcmp(argv[3], "sparse") == 0       ? Stepper::ContactPath::sparse
+        : std::strcmp(argv[3], "sparse_gcr") == 0 ? Stepper::ContactPath::sparse_gcr
+        : std::strcmp(argv[3], "condensed") == 0  ? Stepper::ContactPath::condensed
+                                                  : Stepper::ContactPath::automatic;
     auto t0 = Clock::now();
     std::unique_ptr<Body> body;
     Stepper* stepper = nullptr;
@@ -99,23 +102,25 @@ int main(int argc, char** argv) {
     const int contact_nodes = sim.body().num_contact_nodes();
     const bool sparse = stepper && stepper->sparse_contact();
     const long held_solves = stepper ? stepper->sparse_solver().solves() : 0L;
-    const double held_solves_per_substep = static_cast<double>(held_solves - solves_before) / (steps * per_step);
+    const double held_solves_per_substep =
+        static_cast<double>(held_solves - solves_before) / (steps * per_step);
     const long krylov_iterations = stepper ? stepper->sparse_solver().krylov_iterations() : 0L;
     const long gcr_rounds = stepper ? stepper->sparse_solver().gcr_rounds() : 0L;
     const long held_refactorizations = stepper ? stepper->sparse_refactorizations() : 0L;
     const double peak_memory = peak_rss_mb();
-    std::printf("{\"contact_nodes\": %d, \"unknowns\": %ld, \"modes\": %d, \"sparse\": %s, "
-                "\"static_start_seconds\": %.6g, \"substep_seconds\": %.6g, "
-                "\"sparse_solve_seconds\": %.6g, \"substep_per_solve\": %.4g, "
-                "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
-                "\"held_solves_per_substep\": %.4g, "
-                "\"krylov_iterations\": %ld, \"gcr_rounds\": %ld, \"held_refactorizations\": %ld, "
-                "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
-                "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
-                "\"factor_kernel\": \"%s\"}\n",
-                contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start,
-                substep, solve, substep / solve, static_cast<double>(iterations) / (steps * per_step),
-                held_solves, held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force, o.kinetic_energy,
-                o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
-                factor.supernodal() ? "supernodal_lu" : "simplicial");
+    std::printf(
+        "{\"contact_nodes\": %d, \"unknowns\": %ld, \"modes\": %d, \"sparse\": %s, "
+        "\"static_start_seconds\": %.6g, \"substep_seconds\": %.6g, "
+        "\"sparse_solve_seconds\": %.6g, \"substep_per_solve\": %.4g, "
+        "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
+        "\"held_solves_per_substep\": %.4g, "
+        "\"krylov_iterations\": %ld, \"gcr_rounds\": %ld, \"held_refactorizations\": %ld, "
+        "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
+        "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
+        "\"factor_kernel\": \"%s\"}\n",
+        contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start, substep, solve,
+        substep / solve, static_cast<double>(iterations) / (steps * per_step), held_solves,
+        held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force,
+        o.kinetic_energy, o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
+        factor.supernodal() ? "supernodal_lu" : "simplicial");
 }

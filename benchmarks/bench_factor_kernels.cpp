@@ -20,8 +20,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     SceneParameters p;
-    if (std::strncmp(argv[1], "rect:", 5) == 0) p.nx = p.ny = std::atoi(argv[1] + 5);
-    else p.mesh = argv[1];
+    if (std::strncmp(argv[1], "rect:", 5) == 0)
+        p.nx = p.ny = std::atoi(argv[1] + 5);
+    else
+        p.mesh = argv[1];
     p.dimension = std::atoi(argv[2]);
     p.friction_coefficient = 0;
     const Discretization d = discretize(p);
@@ -44,9 +46,12 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 20; ++k) f.solve(b, x);
         const double solve = seconds_since(t) / 20;
         const bool lu = kernel == TrailingCholesky::Kernel::supernodal_lu;
-        if (!lu) std::printf(", \"flops\": %.6g, \"factor_nonzeros\": %.6g", f.factor_flops(), f.factor_nonzeros());
+        if (!lu)
+            std::printf(", \"flops\": %.6g, \"factor_nonzeros\": %.6g", f.factor_flops(),
+                        f.factor_nonzeros());
         std::printf(", \"%s\": {\"factor\": %.6g, \"refactor\": %.6g, \"solve\": %.6g, \"residual\": %.3g}",
-                    lu ? "supernodal_lu" : "simplicial", first, refactor, solve, (K * x - b).norm() / b.norm());
+                    lu ? "supernodal_lu" : "simplicial", first, refactor, solve,
+                    (K * x - b).norm() / b.norm());
     }
     std::printf("}\n");
     return 0;

@@ -36,15 +36,25 @@ int fail(const char* what) {
 
 int main(int argc, char** argv) {
     if (argc < 6) {
-        std::fprintf(stderr, "usage: bench_fmu_do_step LIBRARY GUID DT STEPS OUTPUTS [i:VR=VALUE | r:VR=VALUE]...\n");
+        std::fprintf(stderr,
+                     "usage: bench_fmu_do_step LIBRARY GUID DT STEPS OUTPUTS [i:VR=VALUE | r:VR=VALUE]...\n");
         return 2;
     }
     void* lib = host::load_library(argv[1]);
     if (!lib) return 2;
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(lib, #f)); if (!f) return fail(#f)
-    LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
-    LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal); LOAD(fmi2SetReal);
-    LOAD(fmi2SetInteger); LOAD(fmi2Terminate); LOAD(fmi2FreeInstance);
+#define LOAD(f)                                                  \
+    auto* f = reinterpret_cast<f##TYPE*>(host::symbol(lib, #f)); \
+    if (!f) return fail(#f)
+    LOAD(fmi2Instantiate);
+    LOAD(fmi2SetupExperiment);
+    LOAD(fmi2EnterInitializationMode);
+    LOAD(fmi2ExitInitializationMode);
+    LOAD(fmi2DoStep);
+    LOAD(fmi2GetReal);
+    LOAD(fmi2SetReal);
+    LOAD(fmi2SetInteger);
+    LOAD(fmi2Terminate);
+    LOAD(fmi2FreeInstance);
 #undef LOAD
     const double dt = std::atof(argv[3]);
     const int steps = std::atoi(argv[4]);
@@ -57,8 +67,8 @@ int main(int argc, char** argv) {
     std::vector<double> values(outputs.size());
 
     fmi2CallbackFunctions callbacks = {host::logger, nullptr, nullptr, nullptr, nullptr};
-    fmi2Component c = fmi2Instantiate("bench", fmi2CoSimulation, argv[2], "", &callbacks,
-                                      fmi2False, fmi2False);
+    fmi2Component c =
+        fmi2Instantiate("bench", fmi2CoSimulation, argv[2], "", &callbacks, fmi2False, fmi2False);
     if (!c) return fail("instantiate");
     if (fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) != fmi2OK ||
         fmi2EnterInitializationMode(c) != fmi2OK)
@@ -69,9 +79,14 @@ int main(int argc, char** argv) {
         if (arg.size() < 4 || arg[1] != ':' || eq == std::string::npos) return fail("bad setter");
         const auto vr = static_cast<fmi2ValueReference>(std::stoul(arg.substr(2, eq - 2)));
         const std::string value = arg.substr(eq + 1);
-        const fmi2Status status =
-            arg[0] == 'i' ? [&] { const fmi2Integer v = std::stoi(value); return fmi2SetInteger(c, &vr, 1, &v); }()
-                          : [&] { const fmi2Real v = std::stod(value); return fmi2SetReal(c, &vr, 1, &v); }();
+        const fmi2Status status = arg[0] == 'i' ? [&] {
+            const fmi2Integer v = std::stoi(value);
+            return fmi2SetInteger(c, &vr, 1, &v);
+        }()
+                                                : [&] {
+                                                      const fmi2Real v = std::stod(value);
+                                                      return fmi2SetReal(c, &vr, 1, &v);
+                                                  }();
         if (status != fmi2OK) return fail(arg.c_str());
     }
     if (fmi2ExitInitializationMode(c) != fmi2OK) return fail("exit initialization");
@@ -84,12 +99,14 @@ int main(int argc, char** argv) {
         double t0 = cpu_seconds();
         for (int j = 0; j < steps; ++j, ++k) {
             if (fmi2DoStep(c, static_cast<double>(k) * dt, dt, fmi2True) != fmi2OK) return fail("doStep");
-            if (fmi2GetReal(c, outputs.data(), outputs.size(), values.data()) != fmi2OK) return fail("getReal");
+            if (fmi2GetReal(c, outputs.data(), outputs.size(), values.data()) != fmi2OK)
+                return fail("getReal");
         }
         per_step.push_back((cpu_seconds() - t0) / steps * 1e6);
         t0 = cpu_seconds();
         for (int j = 0; j < steps; ++j)
-            if (fmi2GetReal(c, outputs.data(), outputs.size(), values.data()) != fmi2OK) return fail("getReal");
+            if (fmi2GetReal(c, outputs.data(), outputs.size(), values.data()) != fmi2OK)
+                return fail("getReal");
         per_get.push_back((cpu_seconds() - t0) / steps * 1e6);
     }
     std::printf("{\"do_step_us\": %.6g, \"get_real_us\": %.6g}\n", median(per_step), median(per_get));

@@ -49,17 +49,22 @@ int main(int argc, char** argv) {
         for (const std::string& note : sim.body().discretization().mesh_notes)
             notes += (notes.size() > 1 ? ", " : "") + json_string(note);
         notes += "]";
-        std::printf("{\"nodes\": %d, \"contact_nodes\": %zu, \"start_seconds\": %.6g, "
-                    "\"peak_mb\": %.1f, \"load\": %.17g, \"top_reaction_y\": %.17g, \"contact_path\": %s, \"notes\": %s",
-                    mesh.num_nodes(), mesh.contact_nodes.size(), start, peak_rss_mb(), o.normal_force,
-                    o.top_reaction[1], summary.c_str(), notes.c_str());
+        std::printf(
+            "{\"nodes\": %d, \"contact_nodes\": %zu, \"start_seconds\": %.6g, "
+            "\"peak_mb\": %.1f, \"load\": %.17g, \"top_reaction_y\": %.17g, \"contact_path\": %s, \"notes\": "
+            "%s",
+            mesh.num_nodes(), mesh.contact_nodes.size(), start, peak_rss_mb(), o.normal_force,
+            o.top_reaction[1], summary.c_str(), notes.c_str());
         const char* names[] = {"x", "z", "height", "pressure", "share"};
         for (int k = 0; k < 5; ++k) {
             std::printf(", \"%s\": [", names[k]);
             for (size_t i = 0; i < mesh.contact_nodes.size(); ++i) {
                 const Point& q = mesh.point(mesh.contact_nodes[i]);
-                const double v = k == 0 ? q.x : k == 1 ? q.z : k == 2 ? mesh.contact_heights[i]
-                                 : k == 3 ? edge.pressure[static_cast<Eigen::Index>(i)] : mesh.contact_shares[i];
+                const double v = k == 0   ? q.x
+                                 : k == 1 ? q.z
+                                 : k == 2 ? mesh.contact_heights[i]
+                                 : k == 3 ? edge.pressure[static_cast<Eigen::Index>(i)]
+                                          : mesh.contact_shares[i];
                 std::printf("%s%.17g", i ? ", " : "", v);
             }
             std::printf("]");

@@ -71,10 +71,10 @@ int main(int argc, char** argv) {
     Tally direct_tally{"cholmod_trailing_factor", 0};
 
     const std::vector<double> tolerances = {1e-6, 1e-8, 1e-10};
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                             Eigen::DiagonalPreconditioner<double>> jacobi;
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
-                             Eigen::IncompleteCholesky<double>> ichol;
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>>
+        jacobi;
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>
+        ichol;
     std::vector<Tally> tallies;
     auto t0 = Clock::now();
     jacobi.compute(K);
@@ -137,20 +137,21 @@ int main(int argc, char** argv) {
             t.max_error = std::max(t.max_error, (x - exact).norm() / exact.norm());
         }
     }
-    std::printf("{\"nx\": %d, \"dt\": %g, \"unknowns\": %ld, \"substeps\": %d, "
-                "\"factor_nonzeros\": %.0f, \"K_nonzeros\": %ld, \"direct_solve\": %.6e, "
-                "\"direct_max_error\": %.3e, \"iterative\": [",
-                p.nx, dt, static_cast<long>(n), substeps, direct.factor_nonzeros(),
-                static_cast<long>(K.nonZeros()), direct_tally.seconds / direct_tally.solves,
-                direct_tally.max_error);
+    std::printf(
+        "{\"nx\": %d, \"dt\": %g, \"unknowns\": %ld, \"substeps\": %d, "
+        "\"factor_nonzeros\": %.0f, \"K_nonzeros\": %ld, \"direct_solve\": %.6e, "
+        "\"direct_max_error\": %.3e, \"iterative\": [",
+        p.nx, dt, static_cast<long>(n), substeps, direct.factor_nonzeros(), static_cast<long>(K.nonZeros()),
+        direct_tally.seconds / direct_tally.solves, direct_tally.max_error);
     for (size_t i = 0; i < tallies.size(); ++i) {
         const Tally& t = tallies[i];
-        std::printf("%s{\"method\": \"%s\", \"tolerance\": %g, \"per_solve\": %.6e, "
-                    "\"setup\": %.4f, \"iterations\": %.2f, \"max_error\": %.3e, "
-                    "\"ratio_to_direct\": %.3f}",
-                    i ? ", " : "", t.method.c_str(), t.tolerance, t.seconds / t.solves, t.setup,
-                    double(t.iterations) / t.solves, t.max_error,
-                    (t.seconds / t.solves) / (direct_tally.seconds / direct_tally.solves));
+        std::printf(
+            "%s{\"method\": \"%s\", \"tolerance\": %g, \"per_solve\": %.6e, "
+            "\"setup\": %.4f, \"iterations\": %.2f, \"max_error\": %.3e, "
+            "\"ratio_to_direct\": %.3f}",
+            i ? ", " : "", t.method.c_str(), t.tolerance, t.seconds / t.solves, t.setup,
+            double(t.iterations) / t.solves, t.max_error,
+            (t.seconds / t.solves) / (direct_tally.seconds / direct_tally.solves));
     }
     std::printf("]}\n");
     return 0;

@@ -64,8 +64,8 @@ std::string json_array(const std::vector<double>& x) {
 }
 
 // Runs the scene on the body; prints its record.
-void run(const Scene& scene, std::unique_ptr<Body> body, const char* kind, int modes, double dt,
-         double setup, bool first) {
+void run(const Scene& scene, std::unique_ptr<Body> body, const char* kind, int modes, double dt, double setup,
+         bool first) {
     std::vector<double> normal, energy;
     double worst_balance = 0, scale = 0;
     std::string failure;
@@ -81,7 +81,10 @@ void run(const Scene& scene, std::unique_ptr<Body> body, const char* kind, int m
             normal.push_back(o.normal_force);
             energy.push_back(o.energy);
             scale = std::max({scale, o.energy, std::abs(o.clamp_work)});
-            worst_balance = std::max(worst_balance, std::abs(o.energy - E0 - (o.clamp_work + o.normal_contact_work + o.friction_work - o.damping_work)));
+            worst_balance =
+                std::max(worst_balance,
+                         std::abs(o.energy - E0 -
+                                  (o.clamp_work + o.normal_contact_work + o.friction_work - o.damping_work)));
         }
     } catch (const std::exception& e) {
         failure = e.what();
@@ -90,12 +93,13 @@ void run(const Scene& scene, std::unique_ptr<Body> body, const char* kind, int m
     }
     const double wall = seconds_since(t0);
     const double simulated = scene.interval * static_cast<double>(normal.size());
-    std::printf("%s\n  {\"scene\": \"%s\", \"body\": \"%s\", \"modes\": %d, \"dt\": %.6g, "
-                "\"setup_s\": %.6g, \"wall_per_simulated_s\": %.6g, \"balance\": %.6g, "
-                "\"failure\": \"%s\", \"normal_force\": %s, \"energy\": %s}",
-                first ? "" : ",", scene.name, kind, modes, dt, setup,
-                simulated > 0 ? wall / simulated : 0.0, scale > 0 ? worst_balance / scale : 0.0,
-                failure.c_str(), json_array(normal).c_str(), json_array(energy).c_str());
+    std::printf(
+        "%s\n  {\"scene\": \"%s\", \"body\": \"%s\", \"modes\": %d, \"dt\": %.6g, "
+        "\"setup_s\": %.6g, \"wall_per_simulated_s\": %.6g, \"balance\": %.6g, "
+        "\"failure\": \"%s\", \"normal_force\": %s, \"energy\": %s}",
+        first ? "" : ",", scene.name, kind, modes, dt, setup, simulated > 0 ? wall / simulated : 0.0,
+        scale > 0 ? worst_balance / scale : 0.0, failure.c_str(), json_array(normal).c_str(),
+        json_array(energy).c_str());
 }
 
 }  // namespace
@@ -137,7 +141,8 @@ int main(int argc, char** argv) {
             run(scene, std::move(massless), "massless", modes, p.internal_step, seconds_since(t0), false);
             t0 = Clock::now();
             auto carrying = std::make_unique<CraigBamptonStepper>(p, modes);
-            run(scene, std::move(carrying), "craig_bampton", modes, p.internal_step, seconds_since(t0), false);
+            run(scene, std::move(carrying), "craig_bampton", modes, p.internal_step, seconds_since(t0),
+                false);
         }
     }
     std::printf("]}\n");

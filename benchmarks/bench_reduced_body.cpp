@@ -92,14 +92,17 @@ int main(int argc, char** argv) {
     State s = full.initial_state(top);
     const double full_setup = seconds_since(t0);
     const Discretization& d = full.discretization();
-    Series reference = run(dt, stop, [&](double h) { return full.substep(s, h, load); },
-                           [&] { return 0.5 * s.v.dot(d.M * s.v) + 0.5 * s.u.dot(d.A * s.u); });
+    Series reference = run(
+        dt, stop, [&](double h) { return full.substep(s, h, load); },
+        [&] { return 0.5 * s.v.dot(d.M * s.v) + 0.5 * s.u.dot(d.A * s.u); });
     reference.setup = full_setup;
 
     std::printf("{\"nx\": %d, \"dt\": %.6g, \"stop\": %.6g, \"free_dofs\": %ld, \"contact_nodes\": %d,\n",
                 p.nx, dt, stop, static_cast<long>(d.A_free.rows()), full.num_contact_nodes());
-    std::printf(" \"full\": {\"setup_s\": %.6g, \"wall_s\": %.6g, \"substeps\": %d, \"wall_per_simulated_s\": %.6g},\n",
-                reference.setup, reference.wall, reference.substeps, reference.wall / stop);
+    std::printf(
+        " \"full\": {\"setup_s\": %.6g, \"wall_s\": %.6g, \"substeps\": %d, \"wall_per_simulated_s\": "
+        "%.6g},\n",
+        reference.setup, reference.wall, reference.substeps, reference.wall / stop);
     std::printf(" \"reduced\": [");
     bool first = true;
     for (double m : modes) {
@@ -120,21 +123,21 @@ int main(int argc, char** argv) {
         }
         for (double factor : factors) {
             ReducedState r = reduced.from_full(full.initial_state(top));
-            Series x = run(dt * factor, stop, [&](double h) { return reduced.substep(r, h, load); },
-                           [&] { return reduced.energy(r); });
-            std::printf("%s\n  {\"modes\": %d, \"residual\": %ld, \"dt\": %.6g, \"setup_s\": %.6g, "
-                        "\"basis_s\": %.6g, \"wall_s\": %.6g, \"wall_per_simulated_s\": %.6g, "
-                        "\"speedup\": %.6g, \"error_normal_force\": %.6g, "
-                        "\"error_friction_force\": %.6g, \"error_energy\": %.6g, "
-                        "\"highest_mode_hz\": %.6g, \"substep_us_pressed\": %.6g, "
-                        "\"substep_us_lifted\": %.6g}",
-                        first ? "" : ",", static_cast<int>(m),
-                        static_cast<long>(reduced.basis().residual.cols()), dt * factor, setup,
-                        reduced.basis().setup_seconds, x.wall, x.wall / stop, reference.wall / x.wall,
-                        l2_relative(x.normal, reference.normal), l2_relative(x.friction, reference.friction),
-                        l2_relative(x.energy, reference.energy),
-                        std::sqrt(reduced.basis().omega2.maxCoeff()) / (2 * M_PI), substep_us[0],
-                        substep_us[1]);
+            Series x = run(
+                dt * factor, stop, [&](double h) { return reduced.substep(r, h, load); },
+                [&] { return reduced.energy(r); });
+            std::printf(
+                "%s\n  {\"modes\": %d, \"residual\": %ld, \"dt\": %.6g, \"setup_s\": %.6g, "
+                "\"basis_s\": %.6g, \"wall_s\": %.6g, \"wall_per_simulated_s\": %.6g, "
+                "\"speedup\": %.6g, \"error_normal_force\": %.6g, "
+                "\"error_friction_force\": %.6g, \"error_energy\": %.6g, "
+                "\"highest_mode_hz\": %.6g, \"substep_us_pressed\": %.6g, "
+                "\"substep_us_lifted\": %.6g}",
+                first ? "" : ",", static_cast<int>(m), static_cast<long>(reduced.basis().residual.cols()),
+                dt * factor, setup, reduced.basis().setup_seconds, x.wall, x.wall / stop,
+                reference.wall / x.wall, l2_relative(x.normal, reference.normal),
+                l2_relative(x.friction, reference.friction), l2_relative(x.energy, reference.energy),
+                std::sqrt(reduced.basis().omega2.maxCoeff()) / (2 * M_PI), substep_us[0], substep_us[1]);
             first = false;
         }
     }

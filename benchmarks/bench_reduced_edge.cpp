@@ -85,25 +85,27 @@ Run simulate(const SceneParameters& p, int steps, double perturbation) {
 double relative_l2(const std::vector<double>& x, const std::vector<double>& reference) {
     if (x.size() != reference.size()) return NAN;
     double e = 0, r = 0;
-    for (size_t k = 0; k < x.size(); ++k) e += std::pow(x[k] - reference[k], 2), r += reference[k] * reference[k];
+    for (size_t k = 0; k < x.size(); ++k)
+        e += std::pow(x[k] - reference[k], 2), r += reference[k] * reference[k];
     return std::sqrt(e / r);
 }
 
 double largest_change(const std::vector<double>& x, const std::vector<double>& y) {
     if (x.size() != y.size()) return NAN;
     double change = 0, scale = 0;
-    for (size_t k = 0; k < x.size(); ++k) change = std::max(change, std::abs(x[k] - y[k])), scale = std::max(scale, std::abs(x[k]));
+    for (size_t k = 0; k < x.size(); ++k)
+        change = std::max(change, std::abs(x[k] - y[k])), scale = std::max(scale, std::abs(x[k]));
     return change / scale;
 }
 
-void print(const char* edge, int variant, int modes, const Run& run, const Run& perturbed,
-           const Run& full, bool first) {
-    std::printf("%s\n  {\"variant\": %d, \"edge\": \"%s\", \"modes\": %d, \"error_normal_force\": %.6g, "
-                "\"departure\": %.6g, \"perturbation\": %.6g, \"us_per_substep\": %.6g, "
-                "\"failure\": \"%s\"}",
-                first ? "" : ",", variant, edge, modes,
-                modes == 0 ? 0.0 : relative_l2(run.normal, full.normal), run.departure,
-                largest_change(run.normal, perturbed.normal), run.us_per_substep, run.failure.c_str());
+void print(const char* edge, int variant, int modes, const Run& run, const Run& perturbed, const Run& full,
+           bool first) {
+    std::printf(
+        "%s\n  {\"variant\": %d, \"edge\": \"%s\", \"modes\": %d, \"error_normal_force\": %.6g, "
+        "\"departure\": %.6g, \"perturbation\": %.6g, \"us_per_substep\": %.6g, "
+        "\"failure\": \"%s\"}",
+        first ? "" : ",", variant, edge, modes, modes == 0 ? 0.0 : relative_l2(run.normal, full.normal),
+        run.departure, largest_change(run.normal, perturbed.normal), run.us_per_substep, run.failure.c_str());
 }
 
 }  // namespace
@@ -141,8 +143,8 @@ int main(int argc, char** argv) {
                 r.modes = modes;
                 r.reduced_edge = edge;
                 const Run run = simulate(r, steps, 0), perturbed = simulate(r, steps, 1e-14);
-                print(edge == ReducedEdge::massless ? "massless" : "tangential_mass", variant,
-                      modes, run, perturbed, full, false);
+                print(edge == ReducedEdge::massless ? "massless" : "tangential_mass", variant, modes, run,
+                      perturbed, full, false);
             }
         }
     }

@@ -33,8 +33,8 @@ int main(int argc, char** argv) {
         // Every step a new substep size (the substep count stays 25 or 18, as alternating).
         {"changing every step", [](int k) { return (k % 2 ? 7e-5 : 1e-4) * (1 - 1e-6 * k); }},
     };
-    std::printf("{\"nx\": %d, \"internal_step\": %g, \"steps\": %d, \"schedules\": [", p.nx,
-                p.internal_step, steps);
+    std::printf("{\"nx\": %d, \"internal_step\": %g, \"steps\": %d, \"schedules\": [", p.nx, p.internal_step,
+                steps);
     bool first = true;
     for (const Schedule& s : schedules) {
         Simulation sim(p, top);
@@ -45,9 +45,10 @@ int main(int argc, char** argv) {
             substeps += sim.statistics().substeps;
         }
         const double seconds = seconds_since(t0);
-        std::printf("%s{\"schedule\": \"%s\", \"seconds\": %.4f, \"factorizations\": %d, "
-                    "\"substeps\": %ld}",
-                    first ? "" : ", ", s.name, seconds, sim.body().factorizations(), substeps);
+        std::printf(
+            "%s{\"schedule\": \"%s\", \"seconds\": %.4f, \"factorizations\": %d, "
+            "\"substeps\": %ld}",
+            first ? "" : ", ", s.name, seconds, sim.body().factorizations(), substeps);
         first = false;
     }
     std::printf("]}\n");

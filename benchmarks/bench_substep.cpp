@@ -8,8 +8,8 @@
 #include <Eigen/CholmodSupport>
 
 #include "bench_common.hpp"
-#include "simulation/simulation.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 using namespace bench;
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     if (argc > 4) p.friction_coefficient = std::atof(argv[4]);
     if (argc > 5) p.mass_matrix = static_cast<MassVariant>(std::atoi(argv[5]));
     const double top = argc > 6 ? std::atof(argv[6]) : -2.5e-5;  // > 0 lifts the body off
-    if (argc > 7) p.damping_stiffness = std::atof(argv[7]);  // Rayleigh damping C = alpha M + beta A
+    if (argc > 7) p.damping_stiffness = std::atof(argv[7]);      // Rayleigh damping C = alpha M + beta A
     if (argc > 8) p.damping_mass = std::atof(argv[8]);
 
     auto t0 = Clock::now();
@@ -108,11 +108,12 @@ int main(int argc, char** argv) {
         "\"split_solve\": %.6e, \"split_contact\": %.6e, \"split_update\": %.6e, "
         "\"contact_iterations\": %.3f, \"contact_solve_fraction\": %.3f, "
         "\"setup_assembly\": %.4f, \"setup_factor_delassus\": %.4f, \"peak_rss_mb\": %.1f, "
-        "\"top_displacement\": %g, \"floor_unconstrained\": %.6e, \"factor_nonzeros\": %.0f, \"newton_factorizations\": %.3f, \"energy_evaluation\": %.6e}\n",
-        p.nx, dt, p.friction_coefficient, static_cast<int>(p.mass_matrix), d.free_dofs.size(),
-        substeps, per_substep, floor, per_substep / floor, t.solve / substeps,
-        t.contact / substeps, t.update / substeps, double(iterations) / substeps,
-        double(solves) / substeps, setup_assembly, setup_factor, peak_rss_mb(), top, floor_unconstrained,
-        factor.factor_nonzeros(), newton_factors, energy_seconds / evaluations);
+        "\"top_displacement\": %g, \"floor_unconstrained\": %.6e, \"factor_nonzeros\": %.0f, "
+        "\"newton_factorizations\": %.3f, \"energy_evaluation\": %.6e}\n",
+        p.nx, dt, p.friction_coefficient, static_cast<int>(p.mass_matrix), d.free_dofs.size(), substeps,
+        per_substep, floor, per_substep / floor, t.solve / substeps, t.contact / substeps,
+        t.update / substeps, double(iterations) / substeps, double(solves) / substeps, setup_assembly,
+        setup_factor, peak_rss_mb(), top, floor_unconstrained, factor.factor_nonzeros(), newton_factors,
+        energy_seconds / evaluations);
     return e > 0 ? 0 : 1;
 }

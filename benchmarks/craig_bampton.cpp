@@ -43,7 +43,8 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
 
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
     Eigen::VectorXd e = Eigen::VectorXd::Zero(ncl);
-    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
+    for (Eigen::Index j = 0; j < ncl; ++j)
+        e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
     const Eigen::VectorXd Afc_e = d.A_free_clamped * e, Mfc_e = d.M_free_clamped * e;
     lift_ = Pi * Eigen::VectorXd(-fixed.solve(Eigen::MatrixXd(Pi.transpose() * Afc_e)).col(0));
 
@@ -73,7 +74,8 @@ CraigBamptonStepper::CraigBamptonStepper(const SceneParameters& params, int mode
     Bhat_.resize(nb, n);
     Blift_.resize(nb);
     for (int i = 0; i < nc; ++i) {  // N_i = -e_y(i), T_i = +e_x(i)
-        const int y = d.contact_y[static_cast<size_t>(i)], x = d.contact_tangential[0][static_cast<size_t>(i)];
+        const int y = d.contact_y[static_cast<size_t>(i)],
+                  x = d.contact_tangential[0][static_cast<size_t>(i)];
         Bhat_.row(i) = -T_.row(y);
         Bhat_.row(nc + i) = T_.row(x);
         Blift_[i] = -S[y];
@@ -226,9 +228,8 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     double& top_rate = s.v[n + 1];
 
     const double w_t = 0.5 * (load.top_start + load.top_end) - top;
-    rhs_ = c2 * (mass_ * ydot + m_s_ * lift_rate + m_c_ * top_rate) -
-           stiffness_ * y - a_s_ * lift_at - a_c_ * top -
-           ((c1 + c2 * alpha) * w_t) * m_t_ - ((1 + c2 * beta) * w_t) * a_t_;
+    rhs_ = c2 * (mass_ * ydot + m_s_ * lift_rate + m_c_ * top_rate) - stiffness_ * y - a_s_ * lift_at -
+           a_c_ * top - ((c1 + c2 * alpha) * w_t) * m_t_ - ((1 + c2 * beta) * w_t) * a_t_;
     w_ = ops.stiffness.solve(rhs_);
     contact_u_ = Bhat_ * y + Blift_ * lift_at;
     bw_ = Bhat_ * w_ + Blift_ * w_t;
@@ -255,7 +256,8 @@ SubstepReport CraigBamptonStepper::substep(State& s, double dt, const SubstepLoa
     const Eigen::VectorXd& coupling_c = damping_coupling_;
     if (params_.damped())
         report.work.damping = (du_.dot(damping_ * du_) + 2 * du_t * coupling_c.dot(du_) +
-                               (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) / dt;
+                               (alpha * mass_tt + beta * stiffness_tt) * du_t * du_t) /
+                              dt;
     // The clamp's force: the residual of the lift's and the clamp's rows, less the contact
     // forces' share through the lift.
     double r = m_t_.dot(c1 * w_ - c2 * ydot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +

@@ -12,9 +12,9 @@
 #include <memory>
 
 #include "body/body.hpp"
-#include "reduced/clamp_rows.hpp"
-#include "contact/contact_solver.hpp"
 #include "body/stepper.hpp"
+#include "contact/contact_solver.hpp"
+#include "reduced/clamp_rows.hpp"
 
 namespace contactbody {
 
@@ -70,12 +70,12 @@ private:
     SceneParameters params_;
     Discretization disc_;
     int modes_ = 0;
-    Eigen::MatrixXd T_;        // free dofs x (m + 2 n_c)
-    Eigen::VectorXd lift_;     // free dofs: the clamp's static response, the edge held
-    Eigen::MatrixXd mass_, stiffness_, damping_;  // M_hat, A_hat, C_hat (dense)
+    Eigen::MatrixXd T_;                             // free dofs x (m + 2 n_c)
+    Eigen::VectorXd lift_;                          // free dofs: the clamp's static response, the edge held
+    Eigen::MatrixXd mass_, stiffness_, damping_;    // M_hat, A_hat, C_hat (dense)
     Eigen::LLT<Eigen::MatrixXd> stiffness_factor_;  // of A_hat: the A-orthogonal projection
-    Eigen::MatrixXd Bhat_;     // B T
-    Eigen::VectorXd Blift_;    // B lift (zero: the lift holds the edge)
+    Eigen::MatrixXd Bhat_;                          // B T
+    Eigen::VectorXd Blift_;                         // B lift (zero: the lift holds the edge)
     // Couplings with the lift S and the clamp e: m_s = T^T M_ff S, m_c = T^T M_fc e,
     // a_s = T^T A_ff S, a_c = T^T A_fc e, and their scalars.
     Eigen::VectorXd m_s_, m_c_, a_s_, a_c_, m_t_, a_t_;

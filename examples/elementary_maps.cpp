@@ -25,8 +25,7 @@ int mask_of(const std::vector<ElementarySolution>& list) {
 }
 
 // Largest distance from a solution of `from` to the nearest one of `to`.
-double set_distance(const std::vector<ElementarySolution>& from,
-                    const std::vector<ElementarySolution>& to) {
+double set_distance(const std::vector<ElementarySolution>& from, const std::vector<ElementarySolution>& to) {
     double worst = 0;
     for (const ElementarySolution& s : from) {
         double best = 1e300;
@@ -51,8 +50,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "elementary_maps: N must be at least 2\n");
         return 2;
     }
-    ElementaryExample example =
-        ElementaryExample::from_material(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
+    ElementaryExample example = ElementaryExample::from_material(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
     const bool rate = argc == 17;
     if (rate) {
         ContactProblem::RateLaw law;
@@ -75,21 +73,22 @@ int main(int argc, char** argv) {
     double worst_violation = 0, worst_distance = 0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-            const Eigen::Vector2d f(v[7] + (v[8] - v[7]) * i / (n - 1),
-                                    v[9] + (v[10] - v[9]) * j / (n - 1));
+            const Eigen::Vector2d f(v[7] + (v[8] - v[7]) * i / (n - 1), v[9] + (v[10] - v[9]) * j / (n - 1));
             const double tol = 1e-8 * (1 + f.lpNorm<Eigen::Infinity>());
             int failed = 0;
             const auto found = example.solver_solutions(f, solver, &failed);
-            const auto closed = rate ? example.rate_solutions(f)
-                                     : example.closed_form_solutions(f, -1e-12 * (1 + f.lpNorm<Eigen::Infinity>()));
+            const auto closed =
+                rate ? example.rate_solutions(f)
+                     : example.closed_form_solutions(f, -1e-12 * (1 + f.lpNorm<Eigen::Infinity>()));
             double violation = 0;
-            for (const ElementarySolution& s : found) violation = std::max(violation, example.violation(f, s.x));
+            for (const ElementarySolution& s : found)
+                violation = std::max(violation, example.violation(f, s.x));
             // On sigma_5 (F = c/b) the solutions form the segment S_5: every solution found
             // must solve (23); the closed forms S_1, S_2 are its end points.
-            const bool continuum = critical && example.in_sigma5(f, tol) &&
-                                   (f - Eigen::Vector2d(-example.b() * example.u_tau_old(),
-                                                        example.c() * example.u_tau_old()))
-                                           .lpNorm<Eigen::Infinity>() > tol;
+            const bool continuum =
+                critical && example.in_sigma5(f, tol) &&
+                (f - Eigen::Vector2d(-example.b() * example.u_tau_old(), example.c() * example.u_tau_old()))
+                        .lpNorm<Eigen::Infinity>() > tol;
             const double distance =
                 continuum ? 0 : std::max(set_distance(found, closed), set_distance(closed, found));
             ++points;
@@ -112,8 +111,8 @@ int main(int argc, char** argv) {
         "\"points\": %ld, \"agree\": %ld, \"one_solution\": %ld, \"two_solutions\": %ld, "
         "\"three_solutions\": %ld, \"continuum_points\": %ld, \"failed_starts\": %ld, "
         "\"max_violation\": %.3e, \"max_set_distance\": %.3e}\n",
-        example.a(), example.b(), example.c(), example.c() / example.b(), example.friction(),
-        points, agree, by_count[1], by_count[2], by_count[3], continuum_points, failed_total,
-        worst_violation, worst_distance);
+        example.a(), example.b(), example.c(), example.c() / example.b(), example.friction(), points, agree,
+        by_count[1], by_count[2], by_count[3], continuum_points, failed_total, worst_violation,
+        worst_distance);
     return out ? 0 : 1;
 }

@@ -82,9 +82,8 @@ struct Linearization {
     Eigen::VectorXd lift;      // steady u_y of every contact node (0 if touching)
 };
 
-static Linearization linearize(const Discretization& d, const Eigen::MatrixXd& M,
-                               const Eigen::MatrixXd& A, const std::vector<bool>& touching,
-                               double F, double top) {
+static Linearization linearize(const Discretization& d, const Eigen::MatrixXd& M, const Eigen::MatrixXd& A,
+                               const std::vector<bool>& touching, double F, double top) {
     const Eigen::Index nf = M.rows();
     Linearization L;
     std::vector<bool> held(static_cast<size_t>(nf), false);
@@ -112,7 +111,8 @@ static Linearization linearize(const Discretization& d, const Eigen::MatrixXd& M
     Eigen::VectorXd rhs = -clamp_force(L.rows);
     for (size_t i = 0; i < d.contact_y.size(); ++i)
         if (touching[i])
-            rhs[L.position[static_cast<size_t>(d.contact_tangential[0][i])]] += F * clamp_force[d.contact_y[i]];
+            rhs[L.position[static_cast<size_t>(d.contact_tangential[0][i])]] +=
+                F * clamp_force[d.contact_y[i]];
     const Eigen::VectorXd steady = L.KF.partialPivLu().solve(rhs);
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_y.size());
     L.pressure = Eigen::VectorXd::Zero(nc);
@@ -132,14 +132,19 @@ int main(int argc, char** argv) {
     bool lift_off = false;
     std::vector<const char*> args;
     for (int a = 1; a < argc; ++a) {
-        if (std::strncmp(argv[a], "--slope=", 8) == 0) slope = std::atof(argv[a] + 8);
-        else if (std::strncmp(argv[a], "--top=", 6) == 0) top = std::atof(argv[a] + 6);
-        else if (std::strcmp(argv[a], "--lift-off") == 0) lift_off = true;
-        else args.push_back(argv[a]);
+        if (std::strncmp(argv[a], "--slope=", 8) == 0)
+            slope = std::atof(argv[a] + 8);
+        else if (std::strncmp(argv[a], "--top=", 6) == 0)
+            top = std::atof(argv[a] + 6);
+        else if (std::strcmp(argv[a], "--lift-off") == 0)
+            lift_off = true;
+        else
+            args.push_back(argv[a]);
     }
     if (args.size() < 3) {
-        std::fprintf(stderr, "usage: sliding_stability [--slope=DFDV] [--top=U] [--lift-off] NX "
-                             "FRICTION MASS_MATRIX [BETA ...]\n");
+        std::fprintf(stderr,
+                     "usage: sliding_stability [--slope=DFDV] [--top=U] [--lift-off] NX "
+                     "FRICTION MASS_MATRIX [BETA ...]\n");
         return 2;
     }
     SceneParameters p;
@@ -164,13 +169,17 @@ int main(int argc, char** argv) {
         bool changed = false;
         for (size_t i = 0; i < nc; ++i) {
             const Eigen::Index k = static_cast<Eigen::Index>(i);
-            if (touching[i] && L.pressure[k] < 0) touching[i] = false, changed = true;
-            else if (!touching[i] && L.lift[k] < 0) touching[i] = true, changed = true;
+            if (touching[i] && L.pressure[k] < 0)
+                touching[i] = false, changed = true;
+            else if (!touching[i] && L.lift[k] < 0)
+                touching[i] = true, changed = true;
         }
         if (!changed) break;
         if (!seen.insert(touching).second) {
-            std::fprintf(stderr, "sliding_stability: no admissible steady contact set (the "
-                                 "active sets cycle after %d passes)\n", active_set_iterations + 1);
+            std::fprintf(stderr,
+                         "sliding_stability: no admissible steady contact set (the "
+                         "active sets cycle after %d passes)\n",
+                         active_set_iterations + 1);
             return 1;
         }
         L = linearize(d, M, A, touching, F, top);
@@ -187,8 +196,7 @@ int main(int argc, char** argv) {
     const Eigen::MatrixXd Mm = MF(massive, massive);
     Eigen::MatrixXd Km = KF(massive, massive);
     if (!massless.empty())
-        Km -= KF(massive, massless) *
-              KF(massless, massless).partialPivLu().solve(KF(massless, massive));
+        Km -= KF(massive, massless) * KF(massless, massless).partialPivLu().solve(KF(massless, massive));
     const Eigen::EigenSolver<Eigen::MatrixXd> eig(Mm.partialPivLu().solve(Km), false);
     if (eig.info() != Eigen::Success) {
         std::fprintf(stderr, "sliding_stability: the eigenvalue iteration did not converge\n");
@@ -214,10 +222,13 @@ int main(int argc, char** argv) {
     Eigen::MatrixXd interface_damping = Eigen::MatrixXd::Zero(modes, modes);
     for (size_t i = 0; i < nc; ++i) {
         if (!touching[i] || slope == 0) continue;
-        const Eigen::Index x = condensed[static_cast<size_t>(L.position[static_cast<size_t>(d.contact_tangential[0][i])])];
+        const Eigen::Index x =
+            condensed[static_cast<size_t>(L.position[static_cast<size_t>(d.contact_tangential[0][i])])];
         if (x < 0) {
-            std::fprintf(stderr, "sliding_stability: --slope needs a mass on the contact x dofs "
-                                 "(mass_matrix %d has none)\n", static_cast<int>(p.mass_matrix));
+            std::fprintf(stderr,
+                         "sliding_stability: --slope needs a mass on the contact x dofs "
+                         "(mass_matrix %d has none)\n",
+                         static_cast<int>(p.mass_matrix));
             return 2;
         }
         interface_damping(x, x) = slope * L.pressure[static_cast<Eigen::Index>(i)];
@@ -236,8 +247,7 @@ int main(int argc, char** argv) {
         for (Eigen::Index k = 0; k < modes && slope == 0; ++k) {
             const std::complex<double> omega2 = eig.eigenvalues()[k], b = beta * omega2;
             const std::complex<double> root = std::sqrt(b * b - 4.0 * omega2);
-            const std::complex<double> q =
-                -0.5 * (b + (std::real(std::conj(b) * root) >= 0 ? root : -root));
+            const std::complex<double> q = -0.5 * (b + (std::real(std::conj(b) * root) >= 0 ? root : -root));
             for (const std::complex<double> s : {q, omega2 / q})
                 if (s.real() > rate) {
                     rate = s.real();
@@ -245,8 +255,10 @@ int main(int argc, char** argv) {
                 }
         }
         char item[128];
-        std::snprintf(item, sizeof item, "%s{\"beta\": %.6e, \"max_growth_rate\": %.6e, "
-                      "\"frequency_hz\": %.6e}", a > 0 ? ", " : "", beta, rate, freq);
+        std::snprintf(item, sizeof item,
+                      "%s{\"beta\": %.6e, \"max_growth_rate\": %.6e, "
+                      "\"frequency_hz\": %.6e}",
+                      a > 0 ? ", " : "", beta, rate, freq);
         damped += item;
     }
     damped += "]";
@@ -259,17 +271,17 @@ int main(int argc, char** argv) {
     }
     pressures += "]";
     lifted += "]";
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("{\"nx\": %d, \"h\": %g, \"friction\": %g, \"mass_matrix\": %d, \"dofs\": %ld, "
-                "\"modes\": %ld, \"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
-                "\"min_real_omega2\": %.6e, \"slope\": %.6e, \"top_displacement\": %.6e, "
-                "\"lift_off\": %s, \"active_set_iterations\": %d, \"lifted_nodes\": %s, "
-                "\"normal_force\": %.9e, \"min_pressure\": %.6e, \"pressure\": %s, "
-                "\"seconds\": %.2f, \"damped\": %s}\n",
-                p.nx, p.width / p.nx, F, static_cast<int>(p.mass_matrix), static_cast<long>(n),
-                static_cast<long>(modes), growth, frequency, growing, min_real, slope, top,
-                lift_off ? "true" : "false", active_set_iterations, lifted.c_str(),
-                L.pressure.sum(), L.pressure.minCoeff(), pressures.c_str(), seconds, damped.c_str());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf(
+        "{\"nx\": %d, \"h\": %g, \"friction\": %g, \"mass_matrix\": %d, \"dofs\": %ld, "
+        "\"modes\": %ld, \"max_growth_rate\": %.6e, \"frequency_hz\": %.6e, \"growing_modes\": %d, "
+        "\"min_real_omega2\": %.6e, \"slope\": %.6e, \"top_displacement\": %.6e, "
+        "\"lift_off\": %s, \"active_set_iterations\": %d, \"lifted_nodes\": %s, "
+        "\"normal_force\": %.9e, \"min_pressure\": %.6e, \"pressure\": %s, "
+        "\"seconds\": %.2f, \"damped\": %s}\n",
+        p.nx, p.width / p.nx, F, static_cast<int>(p.mass_matrix), static_cast<long>(n),
+        static_cast<long>(modes), growth, frequency, growing, min_real, slope, top,
+        lift_off ? "true" : "false", active_set_iterations, lifted.c_str(), L.pressure.sum(),
+        L.pressure.minCoeff(), pressures.c_str(), seconds, damped.c_str());
     return 0;
 }

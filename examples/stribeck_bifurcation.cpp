@@ -19,8 +19,7 @@ using namespace contactbody;
 namespace {
 
 // Distinct solutions (relative 1e-7 of the largest multiplier) of p from the starts.
-std::vector<Eigen::VectorXd> solutions(const ContactProblem& p, const Eigen::VectorXd& solved,
-                                       int* failed) {
+std::vector<Eigen::VectorXd> solutions(const ContactProblem& p, const Eigen::VectorXd& solved, int* failed) {
     const Eigen::Index n = p.gap_limit.size();
     const double scale = std::max(1e-300, solved.lpNorm<Eigen::Infinity>());
     std::vector<Eigen::VectorXd> starts = {solved, Eigen::VectorXd::Zero(2 * n)};
@@ -61,7 +60,9 @@ std::vector<Eigen::VectorXd> solutions(const ContactProblem& p, const Eigen::Vec
 
 int main(int argc, char** argv) {
     if (argc != 10 && argc != 12) {
-        std::fprintf(stderr, "usage: stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA [MODES EDGE]\n");
+        std::fprintf(
+            stderr,
+            "usage: stribeck_bifurcation MASS_MATRIX NX DT STEPS F_D RATIO V_S V BETA [MODES EDGE]\n");
         return 2;
     }
     SceneParameters p;
@@ -105,11 +106,12 @@ int main(int argc, char** argv) {
         }
     }
     const double energy_end = sim.observables().energy;
-    std::printf("{\"mass_matrix\": %s, \"nx\": %d, \"dt\": %g, \"steps\": %d, \"most_solutions\": %d, "
-                "\"substeps_with_several\": %d, \"first\": %d, \"failed_starts\": %d, \"energy_end\": %.17g, "
-                "\"modes\": %d, \"reduced_edge\": %d",
-                argv[1], p.nx, dt, steps, most, several, first, failed_starts, energy_end, p.modes,
-                p.modes > 0 ? (reduced_edge_has_tangential_mass(p) ? 2 : 1) : 0);
+    std::printf(
+        "{\"mass_matrix\": %s, \"nx\": %d, \"dt\": %g, \"steps\": %d, \"most_solutions\": %d, "
+        "\"substeps_with_several\": %d, \"first\": %d, \"failed_starts\": %d, \"energy_end\": %.17g, "
+        "\"modes\": %d, \"reduced_edge\": %d",
+        argv[1], p.nx, dt, steps, most, several, first, failed_starts, energy_end, p.modes,
+        p.modes > 0 ? (reduced_edge_has_tangential_mass(p) ? 2 : 1) : 0);
     // The trajectories from each solution of the first ambiguous substep.
     std::printf(", \"branches\": [");
     for (size_t b = 0; b < alternatives.size(); ++b) {
@@ -121,10 +123,11 @@ int main(int argc, char** argv) {
         const double chosen = (branch.state().lambda - alternatives[b]).lpNorm<Eigen::Infinity>();
         for (int k = first + 1; k < steps; ++k) branch.do_step(dt, in);
         const Observables& o = branch.observables();
-        std::printf("%s{\"took_it\": %s, \"energy_end\": %.17g, \"friction_force_end\": %.17g, "
-                    "\"slipping_end\": %d}",
-                    b ? ", " : "", chosen <= 1e-9 * alternatives[b].lpNorm<Eigen::Infinity>() ? "true" : "false",
-                    o.energy, o.friction_force[0], o.slipping_contact_nodes);
+        std::printf(
+            "%s{\"took_it\": %s, \"energy_end\": %.17g, \"friction_force_end\": %.17g, "
+            "\"slipping_end\": %d}",
+            b ? ", " : "", chosen <= 1e-9 * alternatives[b].lpNorm<Eigen::Infinity>() ? "true" : "false",
+            o.energy, o.friction_force[0], o.slipping_contact_nodes);
     }
     std::printf("]}\n");
     return 0;

@@ -31,8 +31,7 @@ constexpr unsigned restorable = saveable | Error;
 // The shared shim, returning fmi2Status.
 template <class Body>
 fmi2Status fmi2_guarded(Instance* instance, const char* function, Body&& body) {
-    return static_cast<fmi2Status>(
-        guarded(instance, function, [&] { return static_cast<int>(body()); }));
+    return static_cast<fmi2Status>(guarded(instance, function, [&] { return static_cast<int>(body()); }));
 }
 
 bool initialized(const Instance* instance) {
@@ -47,19 +46,19 @@ const Variable& variable(unsigned vr) {
 
 }  // namespace
 
-#define BEGIN(function, states)                                   \
-    if (!c) return fmi2Error;                                     \
-    auto* instance = static_cast<Instance*>(c);                   \
+#define BEGIN(function, states)                 \
+    if (!c) return fmi2Error;                   \
+    auto* instance = static_cast<Instance*>(c); \
     if (!instance->allowed(function, states)) return fmi2Error;
-#define REQUIRE(function, pointer, count)                                              \
-    if ((count) > 0 && !(pointer)) {                                                    \
-        instance->error(function, std::string(#pointer) + " is NULL but its size is " + \
-                                      std::to_string(count));                          \
-        return fmi2Error;                                                               \
+#define REQUIRE(function, pointer, count)                                                             \
+    if ((count) > 0 && !(pointer)) {                                                                  \
+        instance->error(function,                                                                     \
+                        std::string(#pointer) + " is NULL but its size is " + std::to_string(count)); \
+        return fmi2Error;                                                                             \
     }
-#define NOT_SUPPORTED(function, what)                                      \
-    BEGIN(function, any_state)                                             \
-    instance->error(function, std::string("not supported: ") + (what));    \
+#define NOT_SUPPORTED(function, what)                                   \
+    BEGIN(function, any_state)                                          \
+    instance->error(function, std::string("not supported: ") + (what)); \
     return fmi2Error;
 
 namespace {
@@ -69,8 +68,8 @@ template <class Value, class Each>
 fmi2Status for_each_variable(fmi2Component c, const char* function, unsigned states,
                              const fmi2ValueReference vr[], size_t nvr, Value* value, Each&& each) {
     BEGIN(function, states)
-    REQUIRE(function, vr, nvr) REQUIRE(function, value, nvr)
-    return fmi2_guarded(instance, function, [&] {
+    REQUIRE(function, vr, nvr)
+    REQUIRE(function, value, nvr) return fmi2_guarded(instance, function, [&] {
         for (size_t k = 0; k < nvr; ++k) each(instance, variable(vr[k]), value[k]);
         return fmi2OK;
     });
@@ -91,14 +90,13 @@ const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char* fmi2GetVersion(void) { return fmi2Version; }
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
-                              fmi2String fmuResourceLocation,
-                              const fmi2CallbackFunctions* functions, fmi2Boolean /*visible*/,
-                              fmi2Boolean loggingOn) {
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions* functions,
+                              fmi2Boolean /*visible*/, fmi2Boolean loggingOn) {
     if (!functions) return nullptr;
     auto fail = [&](const char* message) -> fmi2Component {
         if (functions->logger)
-            functions->logger(functions->componentEnvironment, instanceName ? instanceName : "",
-                              fmi2Error, "logStatusError", "fmi2Instantiate: %s", message);
+            functions->logger(functions->componentEnvironment, instanceName ? instanceName : "", fmi2Error,
+                              "logStatusError", "fmi2Instantiate: %s", message);
         return nullptr;
     };
     if (!instanceName || !*instanceName) return fail("instanceName is missing");
@@ -136,13 +134,11 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
         instance->set_debug_logging("fmi2SetDebugLogging", loggingOn, nCategories, categories));
 }
 
-fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean /*toleranceDefined*/,
-                               fmi2Real /*tolerance*/, fmi2Real startTime,
-                               fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean /*toleranceDefined*/, fmi2Real /*tolerance*/,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     BEGIN("fmi2SetupExperiment", Instantiated)
     return fmi2_guarded(instance, "fmi2SetupExperiment", [&] {
-        if (stopTimeDefined && !(stopTime >= startTime))
-            throw ModelError("stopTime must be >= startTime");
+        if (stopTimeDefined && !(stopTime >= startTime)) throw ModelError("stopTime must be >= startTime");
         instance->model.set_start_time(startTime);
         instance->last_successful_time = startTime;
         return fmi2OK;
@@ -181,28 +177,21 @@ fmi2Status fmi2Reset(fmi2Component c) {
 
 // ---- getters and setters ----
 
-fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                       fmi2Real value[]) {
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
     return for_each_variable(c, "fmi2GetReal", readable, vr, nvr, value,
-                             [](Instance* i, const Variable& v, fmi2Real& x) {
-                                 x = i->model.get_real(v);
-                             });
+                             [](Instance* i, const Variable& v, fmi2Real& x) { x = i->model.get_real(v); });
 }
 
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Integer value[]) {
-    return for_each_variable(c, "fmi2GetInteger", readable, vr, nvr, value,
-                             [](Instance* i, const Variable& v, fmi2Integer& x) {
-                                 x = i->model.get_integer(v);
-                             });
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    return for_each_variable(
+        c, "fmi2GetInteger", readable, vr, nvr, value,
+        [](Instance* i, const Variable& v, fmi2Integer& x) { x = i->model.get_integer(v); });
 }
 
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                       const fmi2Real value[]) {
-    return for_each_variable(c, "fmi2SetReal", settable, vr, nvr, value,
-                             [](Instance* i, const Variable& v, const fmi2Real& x) {
-                                 i->model.set_real(v, x, initialized(i));
-                             });
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    return for_each_variable(
+        c, "fmi2SetReal", settable, vr, nvr, value,
+        [](Instance* i, const Variable& v, const fmi2Real& x) { i->model.set_real(v, x, initialized(i)); });
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -213,12 +202,10 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                              });
 }
 
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         fmi2String value[]) {
-    return for_each_variable(c, "fmi2GetString", readable, vr, nvr, value,
-                             [](Instance* i, const Variable& v, fmi2String& x) {
-                                 x = i->model.get_string(v);
-                             });
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    return for_each_variable(
+        c, "fmi2GetString", readable, vr, nvr, value,
+        [](Instance* i, const Variable& v, fmi2String& x) { x = i->model.get_string(v); });
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -230,8 +217,7 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 }
 
 // This FMU has no Boolean variables: any value reference is refused.
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Boolean value[]) {
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
     return for_each_variable(c, "fmi2GetBoolean", readable, vr, nvr, value, refuse("Boolean"));
 }
 
@@ -240,11 +226,9 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
     return for_each_variable(c, "fmi2SetBoolean", settable, vr, nvr, value, refuse("Boolean"));
 }
 
-
 // ---- stepping and status ----
 
-fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
-                      fmi2Real communicationStepSize,
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
                       fmi2Boolean /*noSetFMUStatePriorToCurrentPoint*/) {
     BEGIN("fmi2DoStep", StepComplete)
     const fmi2Status status = fmi2_guarded(instance, "fmi2DoStep", [&] {
@@ -256,13 +240,10 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
     return status;
 }
 
-fmi2Status fmi2CancelStep(fmi2Component c) {
-    NOT_SUPPORTED("fmi2CancelStep", "steps are never asynchronous")
-}
+fmi2Status fmi2CancelStep(fmi2Component c){NOT_SUPPORTED("fmi2CancelStep", "steps are never asynchronous")}
 
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind /*s*/, fmi2Status* /*value*/) {
-    NOT_SUPPORTED("fmi2GetStatus", "steps are never asynchronous")
-}
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind /*s*/, fmi2Status* /*value*/){
+    NOT_SUPPORTED("fmi2GetStatus", "steps are never asynchronous")}
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
     BEGIN("fmi2GetRealStatus", StepComplete | StepFailed | Terminated)
@@ -275,10 +256,8 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* 
     return fmi2OK;
 }
 
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind /*s*/,
-                                fmi2Integer* /*value*/) {
-    NOT_SUPPORTED("fmi2GetIntegerStatus", "no integer status is defined")
-}
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind /*s*/, fmi2Integer* /*value*/){
+    NOT_SUPPORTED("fmi2GetIntegerStatus", "no integer status is defined")}
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
     BEGIN("fmi2GetBooleanStatus", StepComplete | StepFailed | Terminated)
@@ -293,16 +272,13 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
     return fmi2OK;
 }
 
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind /*s*/,
-                               fmi2String* /*value*/) {
-    NOT_SUPPORTED("fmi2GetStringStatus", "no string status is defined")
-}
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind /*s*/, fmi2String* /*value*/){
+    NOT_SUPPORTED("fmi2GetStringStatus", "no string status is defined")}
 
 // ---- capabilities this FMU does not declare ----
 
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
-                                       size_t nvr, const fmi2Integer order[],
-                                       const fmi2Real value[]) {
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
     BEGIN("fmi2SetRealInputDerivatives", InitializationMode | StepComplete)
     REQUIRE("fmi2SetRealInputDerivatives", vr, nvr)
     REQUIRE("fmi2SetRealInputDerivatives", order, nvr)
@@ -315,15 +291,12 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
-                                        const fmi2Integer[], fmi2Real[]) {
-    NOT_SUPPORTED("fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0")
-}
+                                        const fmi2Integer[], fmi2Real[]){
+    NOT_SUPPORTED("fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0")}
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference[], size_t,
-                                        const fmi2ValueReference[], size_t, const fmi2Real[],
-                                        fmi2Real[]) {
-    NOT_SUPPORTED("fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false")
-}
+                                        const fmi2ValueReference[], size_t, const fmi2Real[], fmi2Real[]){
+    NOT_SUPPORTED("fmi2GetDirectionalDerivative", "providesDirectionalDerivative is false")}
 
 // ---- FMU state: plain data owned by the instance, bytes with a versioned header ----
 
@@ -353,8 +326,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, si
         serialized_fmu_state_size(instance, "fmi2SerializedFMUstateSize", FMUstate, size));
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte bytes[],
-                                 size_t size) {
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte bytes[], size_t size) {
     BEGIN("fmi2SerializeFMUstate", any_state)
     REQUIRE("fmi2SerializeFMUstate", FMUstate, 1)
     REQUIRE("fmi2SerializeFMUstate", bytes, 1)
@@ -362,8 +334,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
         serialize_fmu_state(instance, "fmi2SerializeFMUstate", FMUstate, bytes, size));
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
-                                   size_t size, fmi2FMUstate* FMUstate) {
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate* FMUstate) {
     BEGIN("fmi2DeSerializeFMUstate", any_state)
     REQUIRE("fmi2DeSerializeFMUstate", serializedState, 1)
     REQUIRE("fmi2DeSerializeFMUstate", FMUstate, 1)

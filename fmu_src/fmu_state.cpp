@@ -155,9 +155,12 @@ std::vector<char> serialize(const FmuState& s) {
     w.value<uint32_t>(static_cast<uint32_t>(stored_variables()));
     for (const Variable& v : variables()) {
         if (v.is_array()) continue;  // read from the simulation's edge, stored below
-        if (v.real) w.value(v.real(values));
-        else if (v.integer) w.value<int32_t>(v.integer(values));
-        else w.string(v.string(values));
+        if (v.real)
+            w.value(v.real(values));
+        else if (v.integer)
+            w.value<int32_t>(v.integer(values));
+        else
+            w.string(v.string(values));
     }
     w.value(s.model.start_time);
     for (double x : s.model.input_rates) w.value(x);
@@ -178,8 +181,8 @@ std::vector<char> serialize(const FmuState& s) {
         w.value(sim.initial_energy);
         w.doubles(sim.factor_substeps);
         visit(sim.observables, [&](const auto& x) { w.value(x); });
-        for (const Eigen::VectorXd* x : {&sim.edge.pressure, &sim.edge.friction[0],
-                                         &sim.edge.slip_velocity[0], &sim.edge.gap})
+        for (const Eigen::VectorXd* x :
+             {&sim.edge.pressure, &sim.edge.friction[0], &sim.edge.slip_velocity[0], &sim.edge.gap})
             w.vector(*x);
         for (size_t t = 1; t < tangents; ++t) {
             w.vector(sim.edge.friction[t]);
@@ -316,8 +319,10 @@ FmuState deserialize(const char* bytes, size_t size) {
             if (!(dt > 0)) r.fail("cached substep sizes must be > 0");
         visit(sim.observables, [&](auto& x) {
             using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, double>) x = r.finite("observable");
-            else x = r.value<int32_t>("observable");
+            if constexpr (std::is_same_v<T, double>)
+                x = r.finite("observable");
+            else
+                x = r.value<int32_t>("observable");
         });
         EdgeSnapshot& edge = sim.edge;
         edge.pressure = r.vector("edge pressure", nc);
@@ -344,7 +349,8 @@ FmuState deserialize(const char* bytes, size_t size) {
         f.pattern.resize(static_cast<size_t>(pattern));
         for (signed char& x : f.pattern) {
             x = r.value<int8_t>("contact factorization node state");
-            if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3) r.fail("invalid contact factorization node state");
+            if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3)
+                r.fail("invalid contact factorization node state");
         }
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");

@@ -14,19 +14,26 @@ namespace {
 
 const char* name(Causality c) {
     switch (c) {
-        case Causality::parameter: return "parameter";
-        case Causality::input: return "input";
-        case Causality::output: return "output";
+        case Causality::parameter:
+            return "parameter";
+        case Causality::input:
+            return "input";
+        case Causality::output:
+            return "output";
     }
     return "";
 }
 
 const char* name(Variability v) {
     switch (v) {
-        case Variability::fixed: return "fixed";
-        case Variability::tunable: return "tunable";
-        case Variability::continuous: return "continuous";
-        case Variability::discrete: return "discrete";
+        case Variability::fixed:
+            return "fixed";
+        case Variability::tunable:
+            return "tunable";
+        case Variability::continuous:
+            return "continuous";
+        case Variability::discrete:
+            return "discrete";
     }
     return "";
 }
@@ -36,11 +43,20 @@ std::string escaped(const std::string& text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -122,14 +138,18 @@ std::string fmi2(void) {
     x << R"(<?xml version="1.0" encoding="UTF-8"?>
 <fmiModelDescription
   fmiVersion="2.0"
-  modelName=")" << model_identifier << R"("
-  guid=")" << guid << R"("
-  description=")" << description << R"("
+  modelName=")"
+      << model_identifier << R"("
+  guid=")"
+      << guid << R"("
+  description=")"
+      << description << R"("
   generationTool="ContactBody generate_model_description"
   variableNamingConvention="structured"
   numberOfEventIndicators="0">
   <CoSimulation
-    modelIdentifier=")" << model_identifier << R"("
+    modelIdentifier=")"
+      << model_identifier << R"("
     canHandleVariableCommunicationStepSize="true"
     canInterpolateInputs="true"
     maxOutputDerivativeOrder="0"
@@ -157,24 +177,31 @@ std::string fmi2(void) {
         if (!v.in(Standard::fmi2)) continue;
         ++index;
         if (v.causality == Causality::output) outputs.push_back(index);
-        x << "    <!-- " << index << " --><ScalarVariable name=\"" << v.name
-          << "\" valueReference=\"" << v.value_reference << "\" description=\"" << escaped(v.description)
-          << "\" causality=\"" << name(v.causality) << "\" variability=\"" << name(v.variability)
-          << "\"";
+        x << "    <!-- " << index << " --><ScalarVariable name=\"" << v.name << "\" valueReference=\""
+          << v.value_reference << "\" description=\"" << escaped(v.description) << "\" causality=\""
+          << name(v.causality) << "\" variability=\"" << name(v.variability) << "\"";
         if (v.causality == Causality::output) x << " initial=\"calculated\"";
         x << ">\n      <";
         switch (v.type) {
-            case Type::Real: x << "Real"; break;
-            case Type::Integer: x << "Integer"; break;
+            case Type::Real:
+                x << "Real";
+                break;
+            case Type::Integer:
+                x << "Integer";
+                break;
             case Type::Enumeration:
                 x << "Enumeration declaredType=\"" << enumeration_type(v).name << "\"";
                 break;
-            case Type::String: x << "String"; break;
+            case Type::String:
+                x << "String";
+                break;
         }
         if (*v.unit) x << " unit=\"" << v.unit << "\"";
         write_limits(x, v);
-        if (v.type == Type::String) x << " start=\"" << escaped(v.string_start) << "\"";
-        else if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
+        if (v.type == Type::String)
+            x << " start=\"" << escaped(v.string_start) << "\"";
+        else if (v.causality != Causality::output)
+            x << " start=\"" << number(v.start) << "\"";
         x << "/>\n    </ScalarVariable>\n";
     }
     x << "  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n";
@@ -192,13 +219,17 @@ std::string fmi3(void) {
     x << R"(<?xml version="1.0" encoding="UTF-8"?>
 <fmiModelDescription
   fmiVersion="3.0"
-  modelName=")" << model_identifier << R"("
-  instantiationToken=")" << guid << R"("
-  description=")" << description << R"("
+  modelName=")"
+      << model_identifier << R"("
+  instantiationToken=")"
+      << guid << R"("
+  description=")"
+      << description << R"("
   generationTool="ContactBody generate_model_description"
   variableNamingConvention="structured">
   <CoSimulation
-    modelIdentifier=")" << model_identifier << R"("
+    modelIdentifier=")"
+      << model_identifier << R"("
     canHandleVariableCommunicationStepSize="true"
     canGetAndSetFMUState="true"
     canSerializeFMUState="true"
@@ -224,7 +255,8 @@ std::string fmi3(void) {
     write_log_categories_and_experiment(x);
     x << "  <ModelVariables>\n"
       << "    <Float64 name=\"time\" valueReference=\"" << time_value_reference
-      << "\" causality=\"independent\" variability=\"continuous\" unit=\"s\" description=\"Simulation time\"/>\n";
+      << "\" causality=\"independent\" variability=\"continuous\" unit=\"s\" description=\"Simulation "
+         "time\"/>\n";
     unsigned edge_nodes_reference = 0;
     for (const Variable& v : variables())
         if (v.name == std::string("edge_nodes")) edge_nodes_reference = v.value_reference;
@@ -234,9 +266,9 @@ std::string fmi3(void) {
         const char* element = v.type == Type::Enumeration ? "Enumeration" : fmi3_type(v);
         const char* causality = v.structural ? "structuralParameter" : name(v.causality);
         if (v.causality == Causality::output) outputs.push_back(v.value_reference);
-        x << "    <" << element << " name=\"" << v.name << "\" valueReference=\""
-          << v.value_reference << "\" description=\"" << escaped(v.description)
-          << "\" causality=\"" << causality << "\" variability=\"" << name(v.variability) << "\"";
+        x << "    <" << element << " name=\"" << v.name << "\" valueReference=\"" << v.value_reference
+          << "\" description=\"" << escaped(v.description) << "\" causality=\"" << causality
+          << "\" variability=\"" << name(v.variability) << "\"";
         if (v.type == Type::Enumeration) x << " declaredType=\"" << enumeration_type(v).name << "\"";
         if (*v.unit) x << " unit=\"" << v.unit << "\"";
         write_limits(x, v);
@@ -245,8 +277,8 @@ std::string fmi3(void) {
         if (v.type == Type::String)
             x << ">\n      <Start value=\"" << escaped(v.string_start) << "\"/>\n    </String>\n";
         else if (v.is_array())
-            x << ">\n      <Dimension valueReference=\"" << edge_nodes_reference << "\"/>\n    </"
-              << element << ">\n";
+            x << ">\n      <Dimension valueReference=\"" << edge_nodes_reference << "\"/>\n    </" << element
+              << ">\n";
         else
             x << "/>\n";
     }

@@ -6,13 +6,20 @@ namespace {
 
 const char* state_name(FmiState s) {
     switch (s) {
-        case Instantiated: return "Instantiated";
-        case InitializationMode: return "InitializationMode";
-        case StepComplete: return "StepComplete";
-        case StepFailed: return "StepFailed";
-        case Terminated: return "Terminated";
-        case Error: return "Error";
-        case ConfigurationMode: return "ConfigurationMode";
+        case Instantiated:
+            return "Instantiated";
+        case InitializationMode:
+            return "InitializationMode";
+        case StepComplete:
+            return "StepComplete";
+        case StepFailed:
+            return "StepFailed";
+        case Terminated:
+            return "Terminated";
+        case Error:
+            return "Error";
+        case ConfigurationMode:
+            return "ConfigurationMode";
     }
     return "unknown";
 }
@@ -42,8 +49,7 @@ bool Instance::allowed(const char* function, unsigned states) const {
     return false;
 }
 
-int Instance::set_debug_logging(const char* function, bool on, size_t n,
-                                const char* const categories[]) {
+int Instance::set_debug_logging(const char* function, bool on, size_t n, const char* const categories[]) {
     if (n > 0 && !categories) {
         error(function, "categories is NULL but nCategories > 0");
         return Status::error;
@@ -64,9 +70,12 @@ int Instance::set_debug_logging(const char* function, bool on, size_t n,
     // loggingOn enabled before); off for listed ones: those off. No categories: all of them.
     logging_on = on;
     for (size_t c = 0; c < category_on.size(); ++c) {
-        if (n == 0) category_on[c] = on;
-        else if (on) category_on[c] = requested[c];
-        else if (requested[c]) category_on[c] = false;
+        if (n == 0)
+            category_on[c] = on;
+        else if (on)
+            category_on[c] = requested[c];
+        else if (requested[c])
+            category_on[c] = false;
     }
     if (on && n > 0 && requested[static_cast<size_t>(LogCategory::all)]) category_on.fill(true);
     return Status::ok;

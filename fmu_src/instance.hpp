@@ -31,8 +31,7 @@ enum class LogCategory { events, warning, error, all, contact_solver };
 enum class LogRule { fmi2_errors_always, fmi3_settings_only };
 
 struct Instance {
-    Instance(std::string name, Logger logger, bool logging_on,
-             LogRule rule = LogRule::fmi2_errors_always);
+    Instance(std::string name, Logger logger, bool logging_on, LogRule rule = LogRule::fmi2_errors_always);
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;

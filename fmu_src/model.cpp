@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "util/c_file.hpp"
 #include "mesh/gmsh.hpp"
+#include "util/c_file.hpp"
 #include "util/text.hpp"
 
 namespace contactbody::fmu {
@@ -35,19 +35,22 @@ void ContactBodyModel::set_defaults(const std::vector<std::pair<std::string, std
     for (const auto& [name, text] : values) {
         const Variable* v = find_variable(name);
         if (!v || v->causality == Causality::output)
-            throw ModelError(concat("resources/start_values.txt: ", name,
-                                    " is not a parameter or input of this FMU"));
+            throw ModelError(
+                concat("resources/start_values.txt: ", name, " is not a parameter or input of this FMU"));
         if (v->string) {
             set_string(*v, text.c_str(), false);
             continue;
         }
         double x = 0;
         if (!parse_number(text, x))
-            throw ModelError(concat("resources/start_values.txt: ", name, " = '", text,
-                                    "' is not a number"));
-        if (v->real) set_real(*v, x, false);
-        else if (x != static_cast<int>(x)) throw ModelError(concat("resources/start_values.txt: ", name, " = '", text, "' is not an integer"));
-        else set_integer(*v, static_cast<int>(x), false);
+            throw ModelError(concat("resources/start_values.txt: ", name, " = '", text, "' is not a number"));
+        if (v->real)
+            set_real(*v, x, false);
+        else if (x != static_cast<int>(x))
+            throw ModelError(
+                concat("resources/start_values.txt: ", name, " = '", text, "' is not an integer"));
+        else
+            set_integer(*v, static_cast<int>(x), false);
     }
     defaults_ = values_;
 }
@@ -69,8 +72,7 @@ void ContactBodyModel::check_writable(const Variable& v, bool initialized) const
     if (v.causality == Causality::output)
         throw ModelError(concat("variable ", v.name, " is an output and cannot be set"));
     if (initialized && !v.settable_after_initialization())
-        throw ModelError(concat("parameter ", v.name,
-                                " is fixed and cannot be set after initialization"));
+        throw ModelError(concat("parameter ", v.name, " is fixed and cannot be set after initialization"));
 }
 
 void ContactBodyModel::check_settable(const Variable& v, double value, bool initialized) const {
@@ -92,8 +94,7 @@ void ContactBodyModel::set_real(const Variable& v, double value, bool initialize
 }
 
 void ContactBodyModel::set_integer(const Variable& v, int value, bool initialized) {
-    if (!v.integer)
-        throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
+    if (!v.integer) throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     check_settable(v, value, initialized);
     v.integer(values_) = value;
     if (v.after_set) v.after_set(values_, resources_);
@@ -121,8 +122,7 @@ double ContactBodyModel::get_real(const Variable& v) {
 }
 
 int ContactBodyModel::get_integer(const Variable& v) {
-    if (!v.integer)
-        throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
+    if (!v.integer) throw ModelError(concat("variable ", v.name, " is not of type Integer or Enumeration"));
     if (v.causality == Causality::output) refresh_outputs();
     return v.integer(values_);
 }
@@ -174,8 +174,8 @@ void ContactBodyModel::build_simulation(const Values& values) {
             sim_->restart(scene, values.top_displacement, start_time_, values.top_force, sliding_speed);
         } else {
             sim_.reset();  // before the new one: never two discretizations in memory
-            sim_ = std::make_unique<Simulation>(scene, values.top_displacement, start_time_,
-                                                values.top_force, sliding_speed);
+            sim_ = std::make_unique<Simulation>(scene, values.top_displacement, start_time_, values.top_force,
+                                                sliding_speed);
         }
     } catch (const std::invalid_argument& e) {
         sim_.reset();
@@ -192,16 +192,16 @@ void ContactBodyModel::open_field_output() {
     fields_.reset();
     edge_.reset();
     if (values_.edge_output_interval > 0 && values_.result_directory.empty())
-        throw ModelError("edge_output_interval > 0 needs a result_directory for the edge "
-                         "history file");
+        throw ModelError(
+            "edge_output_interval > 0 needs a result_directory for the edge "
+            "history file");
     if (values_.result_directory.empty()) return;
     try {
-        fields_ = std::make_unique<FieldWriter>(sim_->body().discretization().mesh,
-                                                values_.result_directory);
+        fields_ = std::make_unique<FieldWriter>(sim_->body().discretization().mesh, values_.result_directory);
         if (values_.edge_output_interval > 0)
-            edge_ = std::make_unique<EdgeWriter>(
-                join_path(values_.result_directory, "contactbody_edge.npy"),
-                sim_->body().num_contact_nodes(), sim_->body().discretization().mesh.tangents());
+            edge_ = std::make_unique<EdgeWriter>(join_path(values_.result_directory, "contactbody_edge.npy"),
+                                                 sim_->body().num_contact_nodes(),
+                                                 sim_->body().discretization().mesh.tangents());
     } catch (const std::exception& e) {
         throw ModelError(e.what());
     }
@@ -307,9 +307,8 @@ void ContactBodyModel::load(const ModelState& state) {
             if (v.causality != Causality::parameter || v.variability != Variability::fixed) continue;
             if (v.string) {
                 if (v.string(values_) != v.string(saved))
-                    throw ModelError(concat("the state was saved with ", v.name, " = '",
-                                            v.string(saved), "', this instance has '",
-                                            v.string(values_), "'"));
+                    throw ModelError(concat("the state was saved with ", v.name, " = '", v.string(saved),
+                                            "', this instance has '", v.string(values_), "'"));
                 continue;
             }
             const double mine = v.real ? v.real(values_) : v.integer(values_);
@@ -368,8 +367,8 @@ void ContactBodyModel::do_step(double current_time, double h) {
     const double t = sim_->time();
     if (!std::isfinite(current_time) ||
         std::abs(current_time - t) > 1e-9 * std::max(1.0, std::abs(t)) + 1e-12)
-        throw ModelError(concat("currentCommunicationPoint ", current_time,
-                                " does not match the FMU's time ", t));
+        throw ModelError(
+            concat("currentCommunicationPoint ", current_time, " does not match the FMU's time ", t));
     // Each input's value at the step's start and its rate across the step: the derivative the
     // master set, or with input_interpolation = ramp and no derivative, the line from the
     // value at the previous communication point to the one set now.
@@ -397,8 +396,7 @@ void ContactBodyModel::do_step(double current_time, double h) {
         if (fields_) write_due_fields();
         if (edge_) write_due_edge();
     } catch (const NumericalFailure& e) {
-        throw StepError(concat("step from t = ", t, " failed, state restored to its start: ",
-                                e.what()));
+        throw StepError(concat("step from t = ", t, " failed, state restored to its start: ", e.what()));
     } catch (const std::invalid_argument& e) {
         throw ModelError(e.what());
     }

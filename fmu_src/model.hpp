@@ -20,7 +20,7 @@ namespace contactbody::fmu {
 struct ModelState {
     Values values;
     double start_time = 0;
-    std::array<double, num_inputs> input_rates{};  // d/dt of each input (input_index order)
+    std::array<double, num_inputs> input_rates{};      // d/dt of each input (input_index order)
     std::array<double, num_inputs> previous_inputs{};  // at the last communication point
     bool has_simulation = false;
     SimulationSnapshot simulation;
@@ -95,7 +95,7 @@ private:
     std::array<double, num_inputs> previous_inputs_{};  // where input_interpolation = ramp starts
     std::unique_ptr<Simulation> sim_;
     std::unique_ptr<FieldWriter> fields_;  // present while result_directory is set
-    State field_state_;  // the reduced body's state expanded for field output
+    State field_state_;                    // the reduced body's state expanded for field output
     uint64_t next_field_output_ = 0;
     std::unique_ptr<EdgeWriter> edge_;  // present while edge_output_interval > 0
     uint64_t next_edge_output_ = 0;

@@ -28,9 +28,9 @@ void log_step(Instance* instance, const char* function, Simulation& sim) {
     const int factorizations = sim.body().factorizations();
     if (factorizations != instance->factorizations_logged) {
         instance->factorizations_logged = factorizations;
-        instance->log(Status::ok, LogCategory::events,
-                      std::string(sim.body().operator_name()) + " (operator " +
-                          std::to_string(factorizations) + ")");
+        instance->log(
+            Status::ok, LogCategory::events,
+            std::string(sim.body().operator_name()) + " (operator " + std::to_string(factorizations) + ")");
     }
     const StepStatistics& s = sim.statistics();
     if (s.refinements > 0) {
@@ -44,8 +44,10 @@ void log_step(Instance* instance, const char* function, Simulation& sim) {
                   "substeps " + std::to_string(s.substeps) + ", contact solves " +
                       std::to_string(s.contact_solves) + ", Newton iterations " +
                       std::to_string(s.contact_iterations) + " (max " +
-                      std::to_string(s.max_contact_iterations) + " in one substep), Gauss-Seidel "
-                      "sweeps " + std::to_string(s.gauss_seidel_sweeps));
+                      std::to_string(s.max_contact_iterations) +
+                      " in one substep), Gauss-Seidel "
+                      "sweeps " +
+                      std::to_string(s.gauss_seidel_sweeps));
 }
 
 void log_initialized(Instance* instance, const char* function) {
@@ -106,8 +108,7 @@ int serialized_fmu_state_size(Instance* instance, const char* function, void* st
     });
 }
 
-int serialize_fmu_state(Instance* instance, const char* function, void* state, char bytes[],
-                        size_t size) {
+int serialize_fmu_state(Instance* instance, const char* function, void* state, char bytes[], size_t size) {
     return guarded(instance, function, [&] {
         const std::vector<char> data = serialize(*known_state(instance, state));
         if (size != data.size())
@@ -118,8 +119,8 @@ int serialize_fmu_state(Instance* instance, const char* function, void* state, c
     });
 }
 
-int deserialize_fmu_state(Instance* instance, const char* function, const char bytes[],
-                          size_t size, void** state) {
+int deserialize_fmu_state(Instance* instance, const char* function, const char bytes[], size_t size,
+                          void** state) {
     return guarded(instance, function, [&] {
         FmuState parsed = deserialize(bytes, size);
         if (*state) {  // reuse the given state, as both standards allow

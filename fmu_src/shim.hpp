@@ -50,9 +50,8 @@ int get_fmu_state(Instance* instance, const char* function, void** state);
 int set_fmu_state(Instance* instance, const char* function, void* state);
 int free_fmu_state(Instance* instance, const char* function, void** state);
 int serialized_fmu_state_size(Instance* instance, const char* function, void* state, size_t* size);
-int serialize_fmu_state(Instance* instance, const char* function, void* state, char bytes[],
-                        size_t size);
-int deserialize_fmu_state(Instance* instance, const char* function, const char bytes[],
-                          size_t size, void** state);
+int serialize_fmu_state(Instance* instance, const char* function, void* state, char bytes[], size_t size);
+int deserialize_fmu_state(Instance* instance, const char* function, const char bytes[], size_t size,
+                          void** state);
 
 }  // namespace contactbody::fmu

@@ -20,8 +20,8 @@ constexpr int model_dimension = CONTACTBODY_MODEL_DIMENSION;
 static_assert(model_dimension == 2 || model_dimension == 3, "CONTACTBODY_MODEL_DIMENSION is 2 or 3");
 constexpr bool solid_model = model_dimension == 3;
 constexpr const char* model_identifier = solid_model ? "ContactBody3D" : "ContactBody";
-constexpr const char* guid = solid_model ? "{b1d7e3a4-6c2f-4e9a-8b05-3f7a9c1d2e68}"
-                                         : "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
+constexpr const char* guid =
+    solid_model ? "{b1d7e3a4-6c2f-4e9a-8b05-3f7a9c1d2e68}" : "{6f1c2a8e-4b7d-4e21-9c3a-5d8e0b7f2c41}";
 // What a value of the 2D model's body, per metre of thickness, is for the 3D model's.
 constexpr const char* per_body(const char* planar, const char* solid) { return solid_model ? solid : planar; }
 // The 3D model's default body, in its FMU's resources folder (the rectangle is 2D).
@@ -44,11 +44,11 @@ struct Values {
     double static_friction_ratio;
     double stribeck_velocity, viscous_friction;
     double max_energy, max_energy_ratio;
-    int modes;  // 0: the full body
-    int reduced_edge;  // ReducedEdge
+    int modes;                     // 0: the full body
+    int reduced_edge;              // ReducedEdge
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
-    double edge_output_interval;  // 0: no edge history
+    double edge_output_interval;     // 0: no edge history
     Tangential foundation_velocity;  // foundation_velocity and (the 3D model's) the z one
     double top_displacement, top_force;
     Observables out;
@@ -65,8 +65,13 @@ enum class Standard : unsigned { fmi2 = 1, fmi3 = 2, both = 3 };
 
 // The inputs, in the order of StepInputs' values (Variable::input).
 // (foundation_velocity_z: the 3D model's only; the 2D model's stays 0.)
-enum class Input : int { none = -1, foundation_velocity = 0, top_displacement = 1, top_force = 2,
-                         foundation_velocity_z = 3 };
+enum class Input : int {
+    none = -1,
+    foundation_velocity = 0,
+    top_displacement = 1,
+    top_force = 2,
+    foundation_velocity_z = 3
+};
 constexpr int num_inputs = 4;
 
 // One variable, declared once in variables.cpp's table with the builders there (real,
@@ -82,8 +87,8 @@ struct Variable {
     Variability variability;
     const char* unit;  // "" for none
     const char* description;
-    double start;      // for parameters and inputs (String variables: string_start)
-    double min, max;   // inclusive limits written to the XML; NaN for none
+    double start;     // for parameters and inputs (String variables: string_start)
+    double min, max;  // inclusive limits written to the XML; NaN for none
     // Exactly one of real / integer / string is set, by type (none for the arrays).
     std::function<double&(Values&)> real;
     std::function<int&(Values&)> integer;
@@ -111,9 +116,7 @@ struct Variable {
     bool settable_after_initialization() const {
         return causality == Causality::input || variability == Variability::tunable;
     }
-    bool in(Standard s) const {
-        return static_cast<unsigned>(standard) & static_cast<unsigned>(s);
-    }
+    bool in(Standard s) const { return static_cast<unsigned>(standard) & static_cast<unsigned>(s); }
     bool is_array() const { return edge_real || edge_state; }
 
     // Modifiers for the table's rows.

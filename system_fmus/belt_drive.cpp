@@ -16,19 +16,31 @@ namespace companion {
 namespace {
 
 enum : unsigned {
-    motor_inertia, pulley_inertia, shaft_stiffness, shaft_damping, pulley_radius, contact_width,
-    torque_amplitude, torque_ramp_time,
-    motor_torque, friction_force,
-    belt_velocity, motor_speed, shaft_torque, load_force, load_work, drive_work,
-    speed_setpoint, speed_gain,  // appended: the references above stay as they were
+    motor_inertia,
+    pulley_inertia,
+    shaft_stiffness,
+    shaft_damping,
+    pulley_radius,
+    contact_width,
+    torque_amplitude,
+    torque_ramp_time,
+    motor_torque,
+    friction_force,
+    belt_velocity,
+    motor_speed,
+    shaft_torque,
+    load_force,
+    load_work,
+    drive_work,
+    speed_setpoint,
+    speed_gain,  // appended: the references above stay as they were
     count
 };
 enum { phi_m, w_m, phi_p, w_p, x_load_work, x_drive_work };
 
 double torque(const double* v, const double* x, double t) {
     const double r = ramp(t, v[torque_ramp_time]);
-    return v[motor_torque] + v[torque_amplitude] * r +
-           v[speed_gain] * (v[speed_setpoint] * r - x[w_m]);
+    return v[motor_torque] + v[torque_amplitude] * r + v[speed_gain] * (v[speed_setpoint] * r - x[w_m]);
 }
 
 double shaft(const double* v, const double* x) {  // N m, from the motor to the pulley
@@ -63,29 +75,52 @@ void outputs(double* v, const double* x, double t) {
 }
 
 const Model the_model{
-    "BeltDrive", "{3b9e2f4c-7a1d-4c55-8e0b-2d6f9a1c7e31}",
+    "BeltDrive",
+    "{3b9e2f4c-7a1d-4c55-8e0b-2d6f9a1c7e31}",
     "Motor, compliant shaft and belt pulley; the belt is ContactBody's foundation",
     {
-        {"motor_inertia", motor_inertia, Causality::parameter, 2e-4, "kg.m2", "Motor rotor inertia J_m", true},
-        {"pulley_inertia", pulley_inertia, Causality::parameter, 1e-4, "kg.m2", "Pulley and belt inertia J_p (at the pulley)", true},
-        {"shaft_stiffness", shaft_stiffness, Causality::parameter, 200, "N.m/rad", "Torsional stiffness k of the shaft", true},
-        {"shaft_damping", shaft_damping, Causality::parameter, 0.02, "N.m.s/rad", "Torsional damping c of the shaft"},
-        {"pulley_radius", pulley_radius, Causality::parameter, 0.05, "m", "Pulley radius r: belt velocity = r w_p", true},
-        {"contact_width", contact_width, Causality::parameter, 0.01, "m", "Thickness of the body (out of plane): friction_force [N/m] x width = force on the belt [N]", true},
-        {"torque_amplitude", torque_amplitude, Causality::parameter, 3.0, "N.m", "Motor torque reached at torque_ramp_time (added to the input motor_torque)"},
-        {"torque_ramp_time", torque_ramp_time, Causality::parameter, 5e-3, "s", "Time of the linear torque ramp from 0 (0: a step)"},
-        {"motor_torque", motor_torque, Causality::input, 0, "N.m", "Extra motor torque (input), added to the ramp"},
-        {"friction_force", friction_force, Causality::input, 0, "N/m", "ContactBody's friction_force (per metre of thickness; the step's average): the body pulls the belt back with friction_force x contact_width"},
-        {"belt_velocity", belt_velocity, Causality::output, 0, "m/s", "Belt velocity r w_p at the end of the step: feeds ContactBody's foundation_velocity"},
+        {"motor_inertia", motor_inertia, Causality::parameter, 2e-4, "kg.m2", "Motor rotor inertia J_m",
+         true},
+        {"pulley_inertia", pulley_inertia, Causality::parameter, 1e-4, "kg.m2",
+         "Pulley and belt inertia J_p (at the pulley)", true},
+        {"shaft_stiffness", shaft_stiffness, Causality::parameter, 200, "N.m/rad",
+         "Torsional stiffness k of the shaft", true},
+        {"shaft_damping", shaft_damping, Causality::parameter, 0.02, "N.m.s/rad",
+         "Torsional damping c of the shaft"},
+        {"pulley_radius", pulley_radius, Causality::parameter, 0.05, "m",
+         "Pulley radius r: belt velocity = r w_p", true},
+        {"contact_width", contact_width, Causality::parameter, 0.01, "m",
+         "Thickness of the body (out of plane): friction_force [N/m] x width = force on the belt [N]", true},
+        {"torque_amplitude", torque_amplitude, Causality::parameter, 3.0, "N.m",
+         "Motor torque reached at torque_ramp_time (added to the input motor_torque)"},
+        {"torque_ramp_time", torque_ramp_time, Causality::parameter, 5e-3, "s",
+         "Time of the linear torque ramp from 0 (0: a step)"},
+        {"motor_torque", motor_torque, Causality::input, 0, "N.m",
+         "Extra motor torque (input), added to the ramp"},
+        {"friction_force", friction_force, Causality::input, 0, "N/m",
+         "ContactBody's friction_force (per metre of thickness; the step's average): the body pulls the belt "
+         "back with friction_force x contact_width"},
+        {"belt_velocity", belt_velocity, Causality::output, 0, "m/s",
+         "Belt velocity r w_p at the end of the step: feeds ContactBody's foundation_velocity"},
         {"motor_speed", motor_speed, Causality::output, 0, "rad/s", "Motor speed w_m"},
         {"shaft_torque", shaft_torque, Causality::output, 0, "N.m", "Torque in the shaft"},
-        {"load_force", load_force, Causality::output, 0, "N", "Force of the body on the belt, friction_force x contact_width (opposing +x motion)"},
-        {"load_work", load_work, Causality::output, 0, "J", "Work of the belt on the body since t0: int friction_force contact_width belt_velocity dt"},
+        {"load_force", load_force, Causality::output, 0, "N",
+         "Force of the body on the belt, friction_force x contact_width (opposing +x motion)"},
+        {"load_work", load_work, Causality::output, 0, "J",
+         "Work of the belt on the body since t0: int friction_force contact_width belt_velocity dt"},
         {"drive_work", drive_work, Causality::output, 0, "J", "Work of the motor torque since t0"},
-        {"speed_setpoint", speed_setpoint, Causality::parameter, 0, "rad/s", "Motor speed the controller holds (reached at torque_ramp_time, ramped like the torque); used with speed_gain > 0"},
-        {"speed_gain", speed_gain, Causality::parameter, 0, "N.m.s/rad", "Proportional speed control: adds speed_gain (setpoint - motor_speed) to the motor torque; 0 = none (a pure torque source)"},
+        {"speed_setpoint", speed_setpoint, Causality::parameter, 0, "rad/s",
+         "Motor speed the controller holds (reached at torque_ramp_time, ramped like the torque); used with "
+         "speed_gain > 0"},
+        {"speed_gain", speed_gain, Causality::parameter, 0, "N.m.s/rad",
+         "Proportional speed control: adds speed_gain (setpoint - motor_speed) to the motor torque; 0 = none "
+         "(a pure torque source)"},
     },
-    6, 1e-6, initial_states, derivatives, outputs};
+    6,
+    1e-6,
+    initial_states,
+    derivatives,
+    outputs};
 
 }  // namespace
 

@@ -39,8 +39,6 @@ struct Model {
 const Model& model();  // defined by each model's file
 
 // A load ramped linearly from 0 at t = 0 to 1 at ramp_time, then held (ramp_time 0: a step).
-inline double ramp(double t, double ramp_time) {
-    return ramp_time > 0 ? std::min(1.0, t / ramp_time) : 1.0;
-}
+inline double ramp(double t, double ramp_time) { return ramp_time > 0 ? std::min(1.0, t / ramp_time) : 1.0; }
 
 }  // namespace companion

@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,11 +25,16 @@ using companion::model;
 enum class Phase : int32_t { instantiated, initialization, step_complete, terminated, error };
 const char* phase_name(Phase p) {
     switch (p) {
-    case Phase::instantiated: return "Instantiated";
-    case Phase::initialization: return "InitializationMode";
-    case Phase::step_complete: return "StepComplete";
-    case Phase::terminated: return "Terminated";
-    case Phase::error: return "Error";
+        case Phase::instantiated:
+            return "Instantiated";
+        case Phase::initialization:
+            return "InitializationMode";
+        case Phase::step_complete:
+            return "StepComplete";
+        case Phase::terminated:
+            return "Terminated";
+        case Phase::error:
+            return "Error";
     }
     return "?";
 }
@@ -61,8 +66,8 @@ void log(Instance* inst, fmi2Status status, const char* function, const std::str
     if (!inst->callbacks.logger) return;
     if (status == fmi2OK && !inst->logging) return;
     inst->callbacks.logger(inst->callbacks.componentEnvironment, inst->name.c_str(), status,
-                           status == fmi2OK ? "logEvents" : "logStatusError", "%s: %s",
-                           function, message.c_str());
+                           status == fmi2OK ? "logEvents" : "logStatusError", "%s: %s", function,
+                           message.c_str());
 }
 
 fmi2Status fail(Instance* inst, const char* function, const std::string& message) {
@@ -77,9 +82,9 @@ bool allowed(Instance* inst, const char* function, std::initializer_list<Phase> 
     return false;
 }
 
-#define ENTRY(function, ...)                                                    \
-    if (!c) return fmi2Error;                                                   \
-    Instance* inst = static_cast<Instance*>(c);                                 \
+#define ENTRY(function, ...)                    \
+    if (!c) return fmi2Error;                   \
+    Instance* inst = static_cast<Instance*>(c); \
     if (!allowed(inst, function, {__VA_ARGS__})) return fmi2Error
 
 const companion::Variable* variable(fmi2ValueReference vr) {
@@ -116,8 +121,7 @@ bool integrate(Snapshot& s, double h, Workspace& w) {
     auto &v = w.v, &start = w.start, &k1 = w.k1, &k2 = w.k2, &k3 = w.k3, &k4 = w.k4, &y = w.y;
     auto at = [&](double t) {
         for (size_t i = 0; i < n; ++i)
-            if (m.variables[i].causality == Causality::input)
-                v[i] = start[i] + s.rates[i] * (t - t0);
+            if (m.variables[i].causality == Causality::input) v[i] = start[i] + s.rates[i] * (t - t0);
     };
     for (int j = 0; j < steps; ++j) {
         const double t = t0 + j * dt;
@@ -131,8 +135,7 @@ bool integrate(Snapshot& s, double h, Workspace& w) {
         for (size_t i = 0; i < k; ++i) y[i] = s.x[i] + dt * k3[i];
         at(t + dt);
         m.derivatives(v.data(), y.data(), t + dt, k4.data());
-        for (size_t i = 0; i < k; ++i)
-            s.x[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+        for (size_t i = 0; i < k; ++i) s.x[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
     }
     at(t0 + h);
     for (size_t i = 0; i < n; ++i)
@@ -170,8 +173,7 @@ bool deserialize(const char* data, size_t size, Snapshot& s, std::string& why) {
     const uint64_t nv = model().variables.size(), nx = static_cast<uint64_t>(model().num_states);
     const size_t expected = 4 + 4 + 8 + 8 + 8 + 8 * (2 * nv + nx);
     if (size != expected) {
-        why = "state has " + std::to_string(size) + " bytes, this FMU's has " +
-              std::to_string(expected);
+        why = "state has " + std::to_string(size) + " bytes, this FMU's has " + std::to_string(expected);
         return false;
     }
     uint32_t version;
@@ -203,17 +205,14 @@ extern "C" {
 const char* fmi2GetTypesPlatform() { return fmi2TypesPlatform; }
 const char* fmi2GetVersion() { return fmi2Version; }
 
-fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
-                              fmi2String resource_location,
-                              const fmi2CallbackFunctions* callbacks, fmi2Boolean,
-                              fmi2Boolean logging) {
+fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, fmi2String resource_location,
+                              const fmi2CallbackFunctions* callbacks, fmi2Boolean, fmi2Boolean logging) {
     if (!name || !guid || !callbacks) return nullptr;
     if (type != fmi2CoSimulation || std::strcmp(guid, model().guid) != 0) {
         if (callbacks->logger)
-            callbacks->logger(callbacks->componentEnvironment, name, fmi2Error,
-                              "logStatusError", "fmi2Instantiate: %s",
-                              type != fmi2CoSimulation ? "only co-simulation is supported"
-                                                       : "GUID does not match");
+            callbacks->logger(
+                callbacks->componentEnvironment, name, fmi2Error, "logStatusError", "fmi2Instantiate: %s",
+                type != fmi2CoSimulation ? "only co-simulation is supported" : "GUID does not match");
         return nullptr;
     }
     Instance* inst = new (std::nothrow) Instance;
@@ -224,8 +223,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     start_values(inst->s);
     try {  // a configured copy's start values (contactbody.system's SSP components)
         const auto& vars = model().variables;
-        for (const auto& [name, text] : contactbody::fmu::read_start_values(
-                 contactbody::fmu::start_values_path(resource_location))) {
+        for (const auto& [name, text] :
+             contactbody::fmu::read_start_values(contactbody::fmu::start_values_path(resource_location))) {
             auto v = std::find_if(vars.begin(), vars.end(),
                                   [&](const companion::Variable& x) { return name == x.name; });
             double x = 0;
@@ -239,8 +238,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
         }
     } catch (const std::exception& e) {
         if (callbacks->logger)
-            callbacks->logger(callbacks->componentEnvironment, name, fmi2Error,
-                              "logStatusError", "fmi2Instantiate: %s", e.what());
+            callbacks->logger(callbacks->componentEnvironment, name, fmi2Error, "logStatusError",
+                              "fmi2Instantiate: %s", e.what());
         delete inst;
         return nullptr;
     }
@@ -251,14 +250,14 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
 void fmi2FreeInstance(fmi2Component c) { delete static_cast<Instance*>(c); }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t, const fmi2String[]) {
-    ENTRY("fmi2SetDebugLogging", Phase::instantiated, Phase::initialization,
-          Phase::step_complete, Phase::terminated, Phase::error);
+    ENTRY("fmi2SetDebugLogging", Phase::instantiated, Phase::initialization, Phase::step_complete,
+          Phase::terminated, Phase::error);
     inst->logging = on;
     return fmi2OK;
 }
 
-fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean, fmi2Real, fmi2Real start,
-                               fmi2Boolean, fmi2Real) {
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean, fmi2Real, fmi2Real start, fmi2Boolean,
+                               fmi2Real) {
     ENTRY("fmi2SetupExperiment", Phase::instantiated);
     if (!std::isfinite(start)) return fail(inst, "fmi2SetupExperiment", "start time not finite");
     inst->s.time = start;
@@ -292,8 +291,8 @@ fmi2Status fmi2Terminate(fmi2Component c) {
 }
 
 fmi2Status fmi2Reset(fmi2Component c) {
-    ENTRY("fmi2Reset", Phase::instantiated, Phase::initialization, Phase::step_complete,
-          Phase::terminated, Phase::error);
+    ENTRY("fmi2Reset", Phase::instantiated, Phase::initialization, Phase::step_complete, Phase::terminated,
+          Phase::error);
     inst->s = Snapshot{};
     start_values(inst->s);
     inst->s.values = inst->defaults;
@@ -301,8 +300,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
-    ENTRY("fmi2GetReal", Phase::initialization, Phase::step_complete, Phase::terminated,
-          Phase::error);
+    ENTRY("fmi2GetReal", Phase::initialization, Phase::step_complete, Phase::terminated, Phase::error);
     if (n > 0 && (!vr || !value)) return fail(inst, "fmi2GetReal", "null array");
     if (inst->s.phase == Phase::initialization) update_outputs(inst->s);
     for (size_t i = 0; i < n; ++i) {
@@ -313,8 +311,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     return fmi2OK;
 }
 
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
-                       const fmi2Real value[]) {
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real value[]) {
     ENTRY("fmi2SetReal", Phase::instantiated, Phase::initialization, Phase::step_complete);
     if (n > 0 && (!vr || !value)) return fail(inst, "fmi2SetReal", "null array");
     for (size_t i = 0; i < n; ++i) {  // all checked before any is set
@@ -395,16 +392,16 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* state) {
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t* size) {
-    ENTRY("fmi2SerializedFMUstateSize", Phase::instantiated, Phase::initialization,
-          Phase::step_complete, Phase::terminated, Phase::error);
+    ENTRY("fmi2SerializedFMUstateSize", Phase::instantiated, Phase::initialization, Phase::step_complete,
+          Phase::terminated, Phase::error);
     if (!state || !size) return fail(inst, "fmi2SerializedFMUstateSize", "null pointer");
     *size = serialize(*static_cast<const Snapshot*>(state)).size();
     return fmi2OK;
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size) {
-    ENTRY("fmi2SerializeFMUstate", Phase::instantiated, Phase::initialization,
-          Phase::step_complete, Phase::terminated, Phase::error);
+    ENTRY("fmi2SerializeFMUstate", Phase::instantiated, Phase::initialization, Phase::step_complete,
+          Phase::terminated, Phase::error);
     if (!state || !bytes) return fail(inst, "fmi2SerializeFMUstate", "null pointer");
     const std::vector<char> data = serialize(*static_cast<const Snapshot*>(state));
     if (size < data.size()) return fail(inst, "fmi2SerializeFMUstate", "buffer too small");
@@ -414,8 +411,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte b
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size,
                                    fmi2FMUstate* state) {
-    ENTRY("fmi2DeSerializeFMUstate", Phase::instantiated, Phase::initialization,
-          Phase::step_complete, Phase::terminated, Phase::error);
+    ENTRY("fmi2DeSerializeFMUstate", Phase::instantiated, Phase::initialization, Phase::step_complete,
+          Phase::terminated, Phase::error);
     if (!bytes || !state) return fail(inst, "fmi2DeSerializeFMUstate", "null pointer");
     Snapshot parsed;
     std::string why;
@@ -429,26 +426,22 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference[], size_t,
-                                        const fmi2ValueReference[], size_t, const fmi2Real[],
-                                        fmi2Real[]) {
+                                        const fmi2ValueReference[], size_t, const fmi2Real[], fmi2Real[]) {
     ENTRY("fmi2GetDirectionalDerivative", Phase::initialization, Phase::step_complete);
     return fail(inst, "fmi2GetDirectionalDerivative", "not provided (see modelDescription)");
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                                        const fmi2Integer order[], const fmi2Real value[]) {
-    ENTRY("fmi2SetRealInputDerivatives", Phase::instantiated, Phase::initialization,
-          Phase::step_complete);
-    if (n > 0 && (!vr || !order || !value))
-        return fail(inst, "fmi2SetRealInputDerivatives", "null array");
+    ENTRY("fmi2SetRealInputDerivatives", Phase::instantiated, Phase::initialization, Phase::step_complete);
+    if (n > 0 && (!vr || !order || !value)) return fail(inst, "fmi2SetRealInputDerivatives", "null array");
     for (size_t i = 0; i < n; ++i) {
         const companion::Variable* v = variable(vr[i]);
         if (!v || v->causality != Causality::input)
             return fail(inst, "fmi2SetRealInputDerivatives",
                         "value reference " + std::to_string(vr[i]) + " is not an input");
         if (order[i] != 1 || !std::isfinite(value[i]))
-            return fail(inst, "fmi2SetRealInputDerivatives",
-                        "only finite first derivatives are supported");
+            return fail(inst, "fmi2SetRealInputDerivatives", "only finite first derivatives are supported");
     }
     for (size_t i = 0; i < n; ++i) inst->s.rates[vr[i]] = value[i];
     return fmi2OK;
@@ -465,17 +458,17 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean) {
     if (!(h > 0) || !std::isfinite(h))
         return fail(inst, "fmi2DoStep", "communicationStepSize must be > 0 and finite");
     if (!(std::abs(t - inst->s.time) <= 1e-9 * std::max(1.0, std::abs(t)) + 1e-12))
-        return fail(inst, "fmi2DoStep", "currentCommunicationPoint " + std::to_string(t) +
-                                            " does not match the FMU's time " +
-                                            std::to_string(inst->s.time));
+        return fail(inst, "fmi2DoStep",
+                    "currentCommunicationPoint " + std::to_string(t) + " does not match the FMU's time " +
+                        std::to_string(inst->s.time));
     if (h / model().internal_step > 1e9) return fail(inst, "fmi2DoStep", "step too large");
     Snapshot& saved = inst->work.saved;
     saved = inst->s;
     if (!integrate(inst->s, h, inst->work)) {
         inst->s = saved;
         inst->s.phase = Phase::error;
-        return fail(inst, "fmi2DoStep", "the state became non-finite; state restored to t = " +
-                                            std::to_string(saved.time));
+        return fail(inst, "fmi2DoStep",
+                    "the state became non-finite; state restored to t = " + std::to_string(saved.time));
     }
     return fmi2OK;
 }

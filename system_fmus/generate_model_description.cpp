@@ -12,10 +12,18 @@ namespace {
 
 // SI base-unit exponents of the units the companions use.
 const std::map<std::string, std::string> units = {
-    {"kg", R"(kg="1")"}, {"kg.m2", R"(kg="1" m="2")"}, {"m", R"(m="1")"}, {"s", R"(s="1")"},
-    {"N", R"(kg="1" m="1" s="-2")"}, {"N/m", R"(kg="1" s="-2")"}, {"N.m", R"(kg="1" m="2" s="-2")"},
-    {"J", R"(kg="1" m="2" s="-2")"}, {"m/s", R"(m="1" s="-1")"}, {"rad/s", R"(s="-1" rad="1")"},
-    {"N.m/rad", R"(kg="1" m="2" s="-2" rad="-1")"}, {"N.m.s/rad", R"(kg="1" m="2" s="-1" rad="-1")"},
+    {"kg", R"(kg="1")"},
+    {"kg.m2", R"(kg="1" m="2")"},
+    {"m", R"(m="1")"},
+    {"s", R"(s="1")"},
+    {"N", R"(kg="1" m="1" s="-2")"},
+    {"N/m", R"(kg="1" s="-2")"},
+    {"N.m", R"(kg="1" m="2" s="-2")"},
+    {"J", R"(kg="1" m="2" s="-2")"},
+    {"m/s", R"(m="1" s="-1")"},
+    {"rad/s", R"(s="-1" rad="1")"},
+    {"N.m/rad", R"(kg="1" m="2" s="-2" rad="-1")"},
+    {"N.m.s/rad", R"(kg="1" m="2" s="-1" rad="-1")"},
     {"N.s/m", R"(kg="1" s="-1")"},
 };
 
@@ -32,8 +40,8 @@ int main(int argc, char** argv) {
     const companion::Model& m = companion::model();
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"" << m.name << "\" guid=\""
-      << m.guid << "\"\n  description=\"" << m.description
+      << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"" << m.name << "\" guid=\"" << m.guid
+      << "\"\n  description=\"" << m.description
       << "\"\n  generationTool=\"ContactBody system_fmus\" variableNamingConvention=\"flat\" "
          "numberOfEventIndicators=\"0\">\n"
       << "  <CoSimulation modelIdentifier=\"" << m.name
@@ -62,18 +70,17 @@ int main(int argc, char** argv) {
         }
         x << "    <ScalarVariable name=\"" << v.name << "\" valueReference=\"" << i << "\"";
         switch (v.causality) {
-        case Causality::parameter:
-            x << " causality=\"parameter\" variability=\"fixed\" initial=\"exact\"";
-            break;
-        case Causality::input:
-            x << " causality=\"input\" variability=\"continuous\"";
-            break;
-        case Causality::output:
-            x << " causality=\"output\" variability=\"continuous\" initial=\"calculated\"";
-            break;
+            case Causality::parameter:
+                x << " causality=\"parameter\" variability=\"fixed\" initial=\"exact\"";
+                break;
+            case Causality::input:
+                x << " causality=\"input\" variability=\"continuous\"";
+                break;
+            case Causality::output:
+                x << " causality=\"output\" variability=\"continuous\" initial=\"calculated\"";
+                break;
         }
-        x << "\n      description=\"" << v.description << "\">\n      <Real unit=\"" << v.unit
-          << "\"";
+        x << "\n      description=\"" << v.description << "\">\n      <Real unit=\"" << v.unit << "\"";
         if (v.causality != Causality::output) x << " start=\"" << number(v.start) << "\"";
         x << "/>\n    </ScalarVariable>\n";
     }

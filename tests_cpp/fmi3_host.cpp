@@ -31,8 +31,7 @@ void check(fmi3Status status, const char* what) {
     if (status != fmi3OK) fail(what);
 }
 
-void log_message(fmi3InstanceEnvironment, fmi3Status status, fmi3String category,
-                 fmi3String message) {
+void log_message(fmi3InstanceEnvironment, fmi3Status status, fmi3String category, fmi3String message) {
     std::fprintf(stderr, "[fmi3_host %d %s] %s\n", static_cast<int>(status), category, message);
 }
 
@@ -40,19 +39,32 @@ void log_message(fmi3InstanceEnvironment, fmi3Status status, fmi3String category
 
 int main(int argc, char** argv) {
     if (argc < 10) {
-        std::fprintf(stderr, "usage: fmi3_host LIBRARY TOKEN NX|- STATE_IN|- T0 STEPS H OUTPUTS "
-                             "STATE_OUT VR:COUNT...\n");
+        std::fprintf(stderr,
+                     "usage: fmi3_host LIBRARY TOKEN NX|- STATE_IN|- T0 STEPS H OUTPUTS "
+                     "STATE_OUT VR:COUNT...\n");
         return 2;
     }
     void* library = host::load_library(argv[1]);
     if (!library) fail("loading the library");
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); if (!f) fail(#f)
-    LOAD(fmi3InstantiateCoSimulation); LOAD(fmi3EnterConfigurationMode);
-    LOAD(fmi3ExitConfigurationMode); LOAD(fmi3SetUInt64); LOAD(fmi3EnterInitializationMode);
-    LOAD(fmi3ExitInitializationMode); LOAD(fmi3DoStep); LOAD(fmi3GetFloat64);
-    LOAD(fmi3GetFMUState); LOAD(fmi3SetFMUState); LOAD(fmi3FreeFMUState);
-    LOAD(fmi3SerializedFMUStateSize); LOAD(fmi3SerializeFMUState); LOAD(fmi3DeserializeFMUState);
-    LOAD(fmi3Terminate); LOAD(fmi3FreeInstance);
+#define LOAD(f)                                                      \
+    auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); \
+    if (!f) fail(#f)
+    LOAD(fmi3InstantiateCoSimulation);
+    LOAD(fmi3EnterConfigurationMode);
+    LOAD(fmi3ExitConfigurationMode);
+    LOAD(fmi3SetUInt64);
+    LOAD(fmi3EnterInitializationMode);
+    LOAD(fmi3ExitInitializationMode);
+    LOAD(fmi3DoStep);
+    LOAD(fmi3GetFloat64);
+    LOAD(fmi3GetFMUState);
+    LOAD(fmi3SetFMUState);
+    LOAD(fmi3FreeFMUState);
+    LOAD(fmi3SerializedFMUStateSize);
+    LOAD(fmi3SerializeFMUState);
+    LOAD(fmi3DeserializeFMUState);
+    LOAD(fmi3Terminate);
+    LOAD(fmi3FreeInstance);
 #undef LOAD
     const double t0 = std::strtod(argv[5], nullptr), h = std::strtod(argv[7], nullptr);
     const int steps = std::atoi(argv[6]);
@@ -67,9 +79,8 @@ int main(int argc, char** argv) {
     }
 
     // loggingOn: under FMI 3.0 the FMU says nothing, not even its errors, while it is off.
-    fmi3Instance c = fmi3InstantiateCoSimulation("fmi3_host", argv[2], "", fmi3False, fmi3True,
-                                                 fmi3False, fmi3False, nullptr, 0, nullptr,
-                                                 log_message, nullptr);
+    fmi3Instance c = fmi3InstantiateCoSimulation("fmi3_host", argv[2], "", fmi3False, fmi3True, fmi3False,
+                                                 fmi3False, nullptr, 0, nullptr, log_message, nullptr);
     if (!c) fail("fmi3InstantiateCoSimulation");
     if (std::string(argv[3]) != "-") {
         const fmi3ValueReference nx = 3;
@@ -86,8 +97,9 @@ int main(int argc, char** argv) {
         std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (bytes.empty()) fail("reading STATE_IN");
         fmi3FMUState state = nullptr;
-        check(fmi3DeserializeFMUState(c, reinterpret_cast<const fmi3Byte*>(bytes.data()),
-                                      bytes.size(), &state), "fmi3DeserializeFMUState");
+        check(
+            fmi3DeserializeFMUState(c, reinterpret_cast<const fmi3Byte*>(bytes.data()), bytes.size(), &state),
+            "fmi3DeserializeFMUState");
         check(fmi3SetFMUState(c, state), "fmi3SetFMUState");
         check(fmi3FreeFMUState(c, &state), "fmi3FreeFMUState");
     }
@@ -98,13 +110,11 @@ int main(int argc, char** argv) {
     for (int k = 0; k < steps; ++k) {
         fmi3Boolean event = fmi3True, terminate = fmi3True, early = fmi3True;
         fmi3Float64 reached = -1;
-        check(fmi3DoStep(c, t0 + k * h, h, fmi3True, &event, &terminate, &early, &reached),
-              "fmi3DoStep");
+        check(fmi3DoStep(c, t0 + k * h, h, fmi3True, &event, &terminate, &early, &reached), "fmi3DoStep");
         // The FMU's time is its own sum of steps: t0 + (k + 1) h up to round-off.
         if (event || terminate || early || std::abs(reached - (t0 + (k + 1) * h)) > 1e-12)
             fail("fmi3DoStep's flags");
-        check(fmi3GetFloat64(c, vrs.data(), vrs.size(), values.data(), values.size()),
-              "fmi3GetFloat64");
+        check(fmi3GetFloat64(c, vrs.data(), vrs.size(), values.data(), values.size()), "fmi3GetFloat64");
         for (size_t i = 0; i < values.size(); ++i) std::fprintf(out, i ? " %a" : "%a", values[i]);
         std::fprintf(out, "\n");
     }

@@ -17,8 +17,8 @@ extern "C" {
 
 namespace host {
 
-inline void logger(fmi2ComponentEnvironment, fmi2String instance, fmi2Status status,
-                   fmi2String category, fmi2String message, ...) {
+inline void logger(fmi2ComponentEnvironment, fmi2String instance, fmi2Status status, fmi2String category,
+                   fmi2String message, ...) {
     va_list args;
     va_start(args, message);
     std::fprintf(stderr, "[%s %d %s] ", instance, static_cast<int>(status), category);

@@ -28,18 +28,30 @@ int main(int argc, char** argv) {
     }
     void* lib = host::load_library(argv[1]);
     if (!lib) return 2;
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(lib, #f)); expect(f != nullptr, #f)
-    LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
-    LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal); LOAD(fmi2SetReal);
-    LOAD(fmi2GetFMUstate); LOAD(fmi2SetFMUstate); LOAD(fmi2FreeFMUstate);
-    LOAD(fmi2SerializedFMUstateSize); LOAD(fmi2SerializeFMUstate); LOAD(fmi2DeSerializeFMUstate);
-    LOAD(fmi2Terminate); LOAD(fmi2FreeInstance);
+#define LOAD(f)                                                  \
+    auto* f = reinterpret_cast<f##TYPE*>(host::symbol(lib, #f)); \
+    expect(f != nullptr, #f)
+    LOAD(fmi2Instantiate);
+    LOAD(fmi2SetupExperiment);
+    LOAD(fmi2EnterInitializationMode);
+    LOAD(fmi2ExitInitializationMode);
+    LOAD(fmi2DoStep);
+    LOAD(fmi2GetReal);
+    LOAD(fmi2SetReal);
+    LOAD(fmi2GetFMUstate);
+    LOAD(fmi2SetFMUstate);
+    LOAD(fmi2FreeFMUstate);
+    LOAD(fmi2SerializedFMUstateSize);
+    LOAD(fmi2SerializeFMUstate);
+    LOAD(fmi2DeSerializeFMUstate);
+    LOAD(fmi2Terminate);
+    LOAD(fmi2FreeInstance);
 #undef LOAD
     if (failures) return 1;
 
     fmi2CallbackFunctions callbacks = {logger, nullptr, nullptr, nullptr, nullptr};
-    fmi2Component c = fmi2Instantiate("host", fmi2CoSimulation, argv[2], "", &callbacks, fmi2False,
-                                      fmi2False);
+    fmi2Component c =
+        fmi2Instantiate("host", fmi2CoSimulation, argv[2], "", &callbacks, fmi2False, fmi2False);
     expect(c != nullptr, "instantiate");
     if (!c) return 1;
     expect(fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0) == fmi2OK, "setup");

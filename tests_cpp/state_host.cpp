@@ -37,34 +37,50 @@ int main(int argc, char** argv) {
         char* end = nullptr;
         const auto vr = static_cast<fmi2ValueReference>(std::strtoul(argv[2], &end, 10));
         if (*end != '=') fail("reading a parameter (--real VR=VALUE, --integer VR=VALUE)");
-        if (std::string(argv[1]) == "--real") reals.emplace_back(vr, std::strtod(end + 1, nullptr));
-        else integers.emplace_back(vr, std::atoi(end + 1));
+        if (std::string(argv[1]) == "--real")
+            reals.emplace_back(vr, std::strtod(end + 1, nullptr));
+        else
+            integers.emplace_back(vr, std::atoi(end + 1));
         argc -= 2;
         argv += 2;
     }
     if (argc < 9) {
-        std::fprintf(stderr, "usage: state_host [--real VR=VALUE | --integer VR=VALUE]... LIBRARY GUID "
-                             "STATE_IN|- T0 STEPS H OUTPUTS STATE_OUT VR...\n");
+        std::fprintf(stderr,
+                     "usage: state_host [--real VR=VALUE | --integer VR=VALUE]... LIBRARY GUID "
+                     "STATE_IN|- T0 STEPS H OUTPUTS STATE_OUT VR...\n");
         return 2;
     }
     void* library = host::load_library(argv[1]);
     if (!library) fail("loading the library");
-#define LOAD(f) auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); if (!f) fail(#f)
-    LOAD(fmi2Instantiate); LOAD(fmi2SetupExperiment); LOAD(fmi2EnterInitializationMode);
-    LOAD(fmi2ExitInitializationMode); LOAD(fmi2DoStep); LOAD(fmi2GetReal); LOAD(fmi2SetReal);
+#define LOAD(f)                                                      \
+    auto* f = reinterpret_cast<f##TYPE*>(host::symbol(library, #f)); \
+    if (!f) fail(#f)
+    LOAD(fmi2Instantiate);
+    LOAD(fmi2SetupExperiment);
+    LOAD(fmi2EnterInitializationMode);
+    LOAD(fmi2ExitInitializationMode);
+    LOAD(fmi2DoStep);
+    LOAD(fmi2GetReal);
+    LOAD(fmi2SetReal);
     LOAD(fmi2SetInteger);
-    LOAD(fmi2GetFMUstate); LOAD(fmi2SetFMUstate); LOAD(fmi2FreeFMUstate);
-    LOAD(fmi2SerializedFMUstateSize); LOAD(fmi2SerializeFMUstate); LOAD(fmi2DeSerializeFMUstate);
-    LOAD(fmi2Terminate); LOAD(fmi2FreeInstance);
+    LOAD(fmi2GetFMUstate);
+    LOAD(fmi2SetFMUstate);
+    LOAD(fmi2FreeFMUstate);
+    LOAD(fmi2SerializedFMUstateSize);
+    LOAD(fmi2SerializeFMUstate);
+    LOAD(fmi2DeSerializeFMUstate);
+    LOAD(fmi2Terminate);
+    LOAD(fmi2FreeInstance);
 #undef LOAD
     const double t0 = std::strtod(argv[4], nullptr), h = std::strtod(argv[6], nullptr);
     const int steps = std::atoi(argv[5]);
     std::vector<fmi2ValueReference> vrs;
-    for (int i = 9; i < argc; ++i) vrs.push_back(static_cast<fmi2ValueReference>(std::strtoul(argv[i], nullptr, 10)));
+    for (int i = 9; i < argc; ++i)
+        vrs.push_back(static_cast<fmi2ValueReference>(std::strtoul(argv[i], nullptr, 10)));
 
     fmi2CallbackFunctions callbacks = {logger, nullptr, nullptr, nullptr, nullptr};
-    fmi2Component c = fmi2Instantiate("state_host", fmi2CoSimulation, argv[2], "", &callbacks,
-                                      fmi2False, fmi2False);
+    fmi2Component c =
+        fmi2Instantiate("state_host", fmi2CoSimulation, argv[2], "", &callbacks, fmi2False, fmi2False);
     if (!c) fail("fmi2Instantiate");
     for (const auto& [vr, value] : reals) check(fmi2SetReal(c, &vr, 1, &value), "fmi2SetReal");
     for (const auto& [vr, value] : integers) check(fmi2SetInteger(c, &vr, 1, &value), "fmi2SetInteger");

@@ -39,7 +39,8 @@ namespace {
 
 // 100 warm steps: none allocates but one that made a warning (its message; once per kind and
 // run). Returns the contact solves they made, so that a test can see the solver ran.
-long expect_no_allocation(Simulation& sim, const StepInputs& in, const std::function<void()>& after_step = {}) {
+long expect_no_allocation(Simulation& sim, const StepInputs& in,
+                          const std::function<void()>& after_step = {}) {
     long contact_solves = 0;
     for (int k = 0; k < 100; ++k) {
         armed = true;
@@ -80,14 +81,13 @@ TEST_P(NoAllocation, InTheStepLoopOnceWarm) {
     armed = true;
     sim.do_step(1e-4, in);  // cold: factorization and workspaces
     armed = false;
-    EXPECT_GT(allocations.exchange(0), 0);  // the counter does see the library's allocations
+    EXPECT_GT(allocations.exchange(0), 0);               // the counter does see the library's allocations
     for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);  // sizes every workspace
-    EXPECT_GT(expect_no_allocation(sim, in), 0);  // the loop did exercise the contact solver
+    EXPECT_GT(expect_no_allocation(sim, in), 0);         // the loop did exercise the contact solver
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, NoAllocation,
-                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
-                                            ::testing::Values(1.2, 0.0),
+                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4), ::testing::Values(1.2, 0.0),
                                             ::testing::Bool()));
 
 // The same on the sparse contact solve (sparse_contact.hpp): its held factor's
@@ -103,10 +103,15 @@ TEST_P(NoAllocation, OnTheSparseContactSolveOnceWarm) {
     for (int k = 0; k < 50; ++k) sim.do_step(1e-4, in);
     ASSERT_TRUE(body.sparse_contact());
     int slipping_rows = 0;  // steps that ended on a factor with slipping rows (its LU)
-    EXPECT_GT(expect_no_allocation(sim, in, [&] {
-                  const std::vector<signed char> pattern = body.contact_factorization().pattern;
-                  slipping_rows += std::any_of(pattern.begin(), pattern.end(), [](signed char x) { return x == 3 || x == -3; });
-              }), 0);
+    EXPECT_GT(expect_no_allocation(sim, in,
+                                   [&] {
+                                       const std::vector<signed char> pattern =
+                                           body.contact_factorization().pattern;
+                                       slipping_rows +=
+                                           std::any_of(pattern.begin(), pattern.end(),
+                                                       [](signed char x) { return x == 3 || x == -3; });
+                                   }),
+              0);
     if (std::get<1>(GetParam()) > 0) EXPECT_GT(slipping_rows, 0);
 }
 

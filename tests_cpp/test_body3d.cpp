@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,7 +30,7 @@ namespace {
 struct Box {
     int nx = 2, ny = 5, nz = 2;
     double width = 0.1, height = 0.1, depth = 0.1;
-    double angle = 0;  // rotation about y (radians) of the whole box
+    double angle = 0;       // rotation about y (radians) of the whole box
     bool mirrored = false;  // every tetrahedron's nodes listed in the other orientation
     int folded = -1;        // this tetrahedron alone listed in the other orientation
     bool contact_as_lines = false;
@@ -52,7 +52,8 @@ std::string box_file(const Box& b, const std::string& name) {
                 ++count;
             }
     const auto element = [&](int type, int physical, std::vector<int> n) {
-        std::string e = std::to_string(++tag) + " " + std::to_string(type) + " 2 " + std::to_string(physical) + " 1";
+        std::string e =
+            std::to_string(++tag) + " " + std::to_string(type) + " 2 " + std::to_string(physical) + " 1";
         for (int v : n) e += " " + std::to_string(v);
         elements += e + "\n";
     };
@@ -93,12 +94,13 @@ std::string box_file(const Box& b, const std::string& name) {
                 }
             }
     std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n";
-    text += std::string(b.contact_as_lines ? "1" : "2") + " 1 \"contact\"\n2 2 \"clamp\"\n3 3 \"body\"\n$EndPhysicalNames\n";
+    text += std::string(b.contact_as_lines ? "1" : "2") +
+            " 1 \"contact\"\n2 2 \"clamp\"\n3 3 \"body\"\n$EndPhysicalNames\n";
     text += "$Nodes\n" + std::to_string(count) + "\n" + nodes + "$EndNodes\n";
     text += "$Elements\n" + std::to_string(tag) + "\n" + elements + "$EndElements\n";
     // Each test its own file: ctest runs the tests in parallel processes.
-    const std::string path = ::testing::TempDir() +
-                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
+    const std::string path =
+        ::testing::TempDir() + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
     FILE* f = std::fopen(path.c_str(), "wb");
     std::fputs(text.c_str(), f);
     std::fclose(f);
@@ -159,7 +161,8 @@ TEST(Body3D, RedistributedMassNeedsFiveCellsAcrossTheBoxHeight) {
             const Mesh m = read_box(b, notes);
             const SparseMatrix M = scalar_mass_matrix(m, 1000);
             if (ny <= 3) {
-                EXPECT_NE(thrown([&] { redistributed_mass(m, M, notes); }).find("cannot carry M_r"), std::string::npos);
+                EXPECT_NE(thrown([&] { redistributed_mass(m, M, notes); }).find("cannot carry M_r"),
+                          std::string::npos);
                 continue;
             }
             redistributed_mass(m, M, notes);
@@ -234,7 +237,8 @@ TEST(Body3D, MassAndRedistributedMassKeepTheTenMoments) {
     // Positive definite off the contact nodes.
     std::vector<int> keep;
     for (int n = 0; n < m.num_nodes(); ++n)
-        if (std::find(m.contact_nodes.begin(), m.contact_nodes.end(), n) == m.contact_nodes.end()) keep.push_back(n);
+        if (std::find(m.contact_nodes.begin(), m.contact_nodes.end(), n) == m.contact_nodes.end())
+            keep.push_back(n);
     Eigen::MatrixXd kept(keep.size(), keep.size());
     for (size_t i = 0; i < keep.size(); ++i)
         for (size_t j = 0; j < keep.size(); ++j) kept(i, j) = dense(keep[i], keep[j]);
@@ -249,7 +253,8 @@ TEST(Body3D, MirroredMeshIsTurnedOverAndItsBodyIsTheSame) {
     const Mesh b = read_gmsh_mesh(box_file(mirrored, "mirrored.msh"), 1000000, notes);
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_NE(notes[0].find("every tetrahedron had negative volume"), std::string::npos) << notes[0];
-    EXPECT_EQ(Eigen::MatrixXd(stiffness_matrix(a, 3e8, 1.5e8)), Eigen::MatrixXd(stiffness_matrix(b, 3e8, 1.5e8)));
+    EXPECT_EQ(Eigen::MatrixXd(stiffness_matrix(a, 3e8, 1.5e8)),
+              Eigen::MatrixXd(stiffness_matrix(b, 3e8, 1.5e8)));
 }
 
 TEST(Body3D, BadTetrahedralFilesAreRefusedWithTheirLine) {
@@ -262,17 +267,20 @@ TEST(Body3D, BadTetrahedralFilesAreRefusedWithTheirLine) {
     lines.contact_as_lines = true;
     const std::string lines_error = thrown([&] { read_box(lines, notes); });
     EXPECT_NE(lines_error.find("must be a group of boundary surfaces (dimension 2), not of lines"),
-              std::string::npos) << lines_error;
+              std::string::npos)
+        << lines_error;
     EXPECT_NE(lines_error.find(", line "), std::string::npos);
     // A second-order tetrahedron (type 11) is named as such.
-    const std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
-                             "$Elements\n1\n1 11 2 3 1 1 1 1 1 1 1 1 1 1 1\n$EndElements\n";
+    const std::string text =
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n"
+        "$Elements\n1\n1 11 2 3 1 1 1 1 1 1 1 1 1 1 1\n$EndElements\n";
     const std::string path = ::testing::TempDir() + "second_order.msh";
     FILE* f = std::fopen(path.c_str(), "wb");
     std::fputs(text.c_str(), f);
     std::fclose(f);
     const std::string second = thrown([&] { read_gmsh_mesh(path, 1000000, notes); });
-    EXPECT_NE(second.find("line 10: element 1 is a 10-node (second-order) tetrahedron"), std::string::npos) << second;
+    EXPECT_NE(second.find("line 10: element 1 is a 10-node (second-order) tetrahedron"), std::string::npos)
+        << second;
 }
 
 TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndAZVelocity) {
@@ -281,17 +289,21 @@ TEST(Body3D, ATwoDimensionalModelRefusesATetrahedralMeshAndAZVelocity) {
     EXPECT_NE(thrown([&] { discretize(p); }).find("it holds tetrahedra, a 3D body"), std::string::npos);
     p.dimension = 3;
     p.mesh.clear();
-    EXPECT_NE(thrown([&] { check_parameters(p); }).find("a 3D body comes from a Gmsh file"), std::string::npos);
+    EXPECT_NE(thrown([&] { check_parameters(p); }).find("a 3D body comes from a Gmsh file"),
+              std::string::npos);
     // A 2D body (the rectangle) has no z: neither a z velocity of its foundation nor of itself.
     SceneParameters planar;
     planar.nx = planar.ny = 4;
     planar.initial_velocity[2] = 1;
-    EXPECT_NE(thrown([&] { check_parameters(planar); }).find("initial_velocity_z must be 0 for a 2D body"), std::string::npos);
+    EXPECT_NE(thrown([&] { check_parameters(planar); }).find("initial_velocity_z must be 0 for a 2D body"),
+              std::string::npos);
     planar.initial_velocity[2] = 0;
     Simulation sim(planar, -1e-5);
     StepInputs in;
     in.foundation_velocity[1] = 0.5;
-    EXPECT_NE(thrown([&] { sim.do_step(1e-5, in); }).find("a 2D body (plane strain in x-y) has no z direction"), std::string::npos);
+    EXPECT_NE(
+        thrown([&] { sim.do_step(1e-5, in); }).find("a 2D body (plane strain in x-y) has no z direction"),
+        std::string::npos);
 }
 
 // Isotropic friction (Remark 4.4): a box pressed on a foundation sliding in the direction
@@ -344,7 +356,8 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
         const SubstepReport r = body.substep(s, dt, load);
         works += r.work;
         out.least_substep_dissipation = std::min(out.least_substep_dissipation, r.work.friction_dissipation);
-        scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction), std::abs(works.foundation)});
+        scale =
+            std::max({scale, std::abs(works.clamp), std::abs(works.friction), std::abs(works.foundation)});
         out.normal += r.normal_force;
         out.friction_x += r.friction_force[0];
         out.friction_z += r.friction_force[1];
@@ -356,8 +369,10 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
             const double size = std::hypot(tx, tz);
             if (pressure <= 0) continue;
             const int node = mesh.contact_nodes[static_cast<size_t>(i)];
-            const double sx = s.u[mesh.dof(node, 0)] - before.u[mesh.dof(node, 0)] - load.foundation_velocity[0] * dt;
-            const double sz = s.u[mesh.dof(node, 2)] - before.u[mesh.dof(node, 2)] - load.foundation_velocity[1] * dt;
+            const double sx =
+                s.u[mesh.dof(node, 0)] - before.u[mesh.dof(node, 0)] - load.foundation_velocity[0] * dt;
+            const double sz =
+                s.u[mesh.dof(node, 2)] - before.u[mesh.dof(node, 2)] - load.foundation_velocity[1] * dt;
             const double slip = std::hypot(sx, sz);
             // A node that stuck in the substep before holds with the static coefficient; with
             // a slip-rate law F is the law's at the slip speed |slip| / dt.
@@ -370,14 +385,17 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
             }
             ++out.slipping;
             out.worst_cone = std::max(out.worst_cone, std::abs(size / (Fi * pressure) - 1));
-            out.worst_law = std::max(out.worst_law, std::abs(size - Fi * pressure) / s.lambda.lpNorm<Eigen::Infinity>());
+            out.worst_law =
+                std::max(out.worst_law, std::abs(size - Fi * pressure) / s.lambda.lpNorm<Eigen::Infinity>());
             // friction along -slip: cos of the angle between lambda_T and -slip is 1
             out.worst_direction = std::max(out.worst_direction, 1 + (tx * sx + tz * sz) / (size * slip));
         }
     }
     out.energy = energy(s);
     out.dissipation = works.friction_dissipation;
-    out.balance = std::abs(out.energy - E0 - (works.clamp + works.normal_contact + works.friction - works.damping)) / scale;
+    out.balance =
+        std::abs(out.energy - E0 - (works.clamp + works.normal_contact + works.friction - works.damping)) /
+        scale;
     return out;
 }
 
@@ -386,8 +404,8 @@ Sliding slide(MassVariant variant, double heading, double turn, double F, int su
 TEST(Body3D, IsotropicFrictionClosesTheEnergyBalanceAndObeysTheLawInEveryVariant) {
     for (int v = 0; v < num_mass_variants; ++v) {
         SCOPED_TRACE(v);
-        const Sliding r = slide(static_cast<MassVariant>(v), 0.6, 0, 0.5, 200, v == 1 ? 1.5 : 1.0,
-                                v == 2 ? 1e-7 : 0);
+        const Sliding r =
+            slide(static_cast<MassVariant>(v), 0.6, 0, 0.5, 200, v == 1 ? 1.5 : 1.0, v == 2 ? 1e-7 : 0);
         EXPECT_LT(r.balance, 1e-9);
         EXPECT_GT(r.slipping, 100);
         EXPECT_GT(r.dissipation, 0);
@@ -463,9 +481,11 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
                 const SubstepReport rb = condensed.substep(b, dt, load);
                 wa += ra.work;
                 wb += rb.work;
-                least_dissipation = std::min({least_dissipation, ra.work.friction_dissipation, rb.work.friction_dissipation});
+                least_dissipation =
+                    std::min({least_dissipation, ra.work.friction_dissipation, rb.work.friction_dissipation});
                 scale = std::max(scale, std::abs(rb.normal_force));
-                work_scale = std::max({work_scale, std::abs(wb.clamp), std::abs(wb.friction), std::abs(wb.foundation)});
+                work_scale = std::max(
+                    {work_scale, std::abs(wb.clamp), std::abs(wb.friction), std::abs(wb.foundation)});
                 worst = std::max({worst, std::abs(ra.normal_force - rb.normal_force),
                                   std::abs(ra.friction_force[0] - rb.friction_force[0]),
                                   std::abs(ra.friction_force[1] - rb.friction_force[1]),
@@ -485,7 +505,8 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
             if (creeping) EXPECT_GT(sticking, 100);
             EXPECT_LT(worst / scale, 1e-8);
             EXPECT_LT(worst_work / work_scale, 1e-9);
-            const double balance = std::abs(energy(sparse, a) - E0 - (wa.clamp + wa.normal_contact + wa.friction - wa.damping));
+            const double balance =
+                std::abs(energy(sparse, a) - E0 - (wa.clamp + wa.normal_contact + wa.friction - wa.damping));
             EXPECT_LT(balance / work_scale, 1e-9);
             EXPECT_GE(least_dissipation, -1e-12 * work_scale);  // friction never creates energy
             RecordProperty(creeping ? "creeping_newton_iterations" : "sliding_newton_iterations", iterations);
@@ -537,7 +558,8 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
     EXPECT_NEAR(ra.friction_force[0], rb.friction_force[0], 1e-8 * rb.normal_force);
     EXPECT_NEAR(ra.friction_force[1], rb.friction_force[1], 1e-8 * rb.normal_force);
-    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
+    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0,
+                1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
 }
 
 // Where a refactorization costs more held solves than GCR may take (a tetrahedral body of a
@@ -560,7 +582,8 @@ TEST(Body3D, ACostlyFactorSolvesAPatternOnTheFactorItHas) {
     EXPECT_EQ(ra.active_nodes, (b.nx + 1) * (b.nz + 1));
     EXPECT_EQ(step.sparse.sparse_refactorizations(), 0);
     EXPECT_NEAR(ra.normal_force, rb.normal_force, 1e-8 * rb.normal_force);
-    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0, 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
+    EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0,
+                1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
 }
 
 // Stick and slip under a foundation that creeps and turns its heading by a right angle over
@@ -699,12 +722,13 @@ TEST(Body3D, ReducedBodyWithEveryModeIsTheFullBody) {
     std::vector<Case> cases;
     for (double F : {0.0, 0.4}) {
         for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact})
-            for (auto edge : {ReducedEdge::massless, ReducedEdge::tangential_mass}) cases.push_back({v, edge, F});
+            for (auto edge : {ReducedEdge::massless, ReducedEdge::tangential_mass})
+                cases.push_back({v, edge, F});
         cases.push_back({MassVariant::redistributed_both, ReducedEdge::massless, F});
     }
     for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(static_cast<int>(c.variant)) + " " + std::to_string(static_cast<int>(c.edge)) +
-                     " F = " + std::to_string(c.friction));
+        SCOPED_TRACE(std::to_string(static_cast<int>(c.variant)) + " " +
+                     std::to_string(static_cast<int>(c.edge)) + " F = " + std::to_string(c.friction));
         SceneParameters p = box_scene(Box{}, "box_reduced.msh", c.variant);
         p.initial_velocity[1] = -1;
         p.reduced_edge = c.edge;

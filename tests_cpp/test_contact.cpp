@@ -187,7 +187,7 @@ TEST(ContactSolver, SlipRateLawSolvedByNewtonAndByGaussSeidel) {
     p.W = 0.1 * R * R.transpose() + Eigen::MatrixXd::Identity(2 * n, 2 * n);
     p.a.resize(2 * n);
     for (int i = 0; i < n; ++i) {
-        p.a[i] = 0.5 + 0.2 * u(rng);          // pressed
+        p.a[i] = 0.5 + 0.2 * u(rng);                      // pressed
         p.a[n + i] = (i % 3 == 0 ? 0.05 : 2.0) * u(rng);  // some stick, most slip
     }
     p.gap_limit = Eigen::VectorXd::Zero(n);
@@ -244,7 +244,7 @@ TEST(ContactSolver, DiscProblemSolvedByNewtonAndNodeByNode) {
         p.W = 0.1 * R * R.transpose() + Eigen::MatrixXd::Identity(m, m);
         p.a.resize(m);
         for (int i = 0; i < n; ++i) {
-            p.a[i] = 0.5 + 0.2 * u(rng);  // pressed
+            p.a[i] = 0.5 + 0.2 * u(rng);                  // pressed
             const double size = i % 3 == 0 ? 0.05 : 2.0;  // some stick, most slip
             p.a[n + i] = size * u(rng);
             p.a[2 * n + i] = size * u(rng);
@@ -323,7 +323,7 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
     for (int step = 0; step < 200; ++step) {
         const double t = 0.004 * step;
         for (int i = 0; i < n; ++i) {
-            p.a[i] = scale * (0.6 * std::sin(t + phase[i]) + 0.3);     // pressed, or lifting off
+            p.a[i] = scale * (0.6 * std::sin(t + phase[i]) + 0.3);        // pressed, or lifting off
             p.a[n + i] = scale * 0.3 * std::cos(1.3 * t + 2 * phase[i]);  // sticking or slipping
         }
         // A solver with no past, given the projecting one's factored pattern and warm start,
@@ -333,11 +333,9 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
         a_iterations += refactoring.solve(p, refactor_options, a_lambda).iterations;
         b_iterations += updating.solve(p, update_options, b_lambda).iterations;
         c_iterations += projecting.solve(p, project_options, c_lambda).iterations;
-        ASSERT_LE((a_lambda - b_lambda).lpNorm<Eigen::Infinity>(),
-                  1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
+        ASSERT_LE((a_lambda - b_lambda).lpNorm<Eigen::Infinity>(), 1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
             << "step " << step;
-        ASSERT_LE((a_lambda - c_lambda).lpNorm<Eigen::Infinity>(),
-                  1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
+        ASSERT_LE((a_lambda - c_lambda).lpNorm<Eigen::Infinity>(), 1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
             << "step " << step;
         if (step % 20 == 7 && !base.empty()) {
             ContactSolver fresh;
@@ -398,8 +396,8 @@ TEST(SlidingProduct, EqualsThePlainProductAndDependsOnLambdaAlone) {
 }
 
 TEST(ElementaryExample, RateSolutionsWithoutRateDependenceAreTheClosedForms) {
-    for (const auto& [m1, m2, F] : {std::tuple{0.0, 1.0, 2.5}, std::tuple{1.0, 0.0, 2.5},
-                                    std::tuple{0.0, 0.0, 1.0}}) {
+    for (const auto& [m1, m2, F] :
+         {std::tuple{0.0, 1.0, 2.5}, std::tuple{1.0, 0.0, 2.5}, std::tuple{0.0, 0.0, 1.0}}) {
         const ElementaryExample e = elementary(m1, m2, F);
         int compared = 0;
         for (int i = 0; i <= 20; ++i)

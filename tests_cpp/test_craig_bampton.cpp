@@ -68,9 +68,8 @@ TEST(CraigBampton, AllModesGiveTheFullBody) {
         const double E = energy(full, s);
         EXPECT_LT(std::abs(energy(cb, r) - E) / E, 1e-10);
         double worst_work = 0;
-        Works::for_each(full_works, cb_works, [&](double x, double y) {
-            worst_work = std::max(worst_work, std::abs(x - y));
-        });
+        Works::for_each(full_works, cb_works,
+                        [&](double x, double y) { worst_work = std::max(worst_work, std::abs(x - y)); });
         EXPECT_LT(worst_work / E, 1e-10);
     }
 }
@@ -93,8 +92,8 @@ TEST(CraigBampton, EnergyBalanceClosesWithFewModes) {
             works += cb.substep(r, dt, load_at(k, dt)).work;
             scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction)});
         }
-        const double balance = energy(cb, r) - E0 -
-                               (works.clamp + works.normal_contact + works.friction - works.damping);
+        const double balance =
+            energy(cb, r) - E0 - (works.clamp + works.normal_contact + works.friction - works.damping);
         EXPECT_LT(std::abs(balance) / scale, 1e-9);
         EXPECT_GT(works.damping, 0);
     }

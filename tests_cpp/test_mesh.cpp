@@ -131,7 +131,8 @@ TEST(Mesh, GmshFilesOfBothVersionsGiveTheSameMesh) {
 TEST(Mesh, AClockwiseFileIsTurnedOverAndTheNoteSaysSo) {
     std::string text = msh41;
     for (const auto& [from, to] : {std::pair<std::string, std::string>{"4 1 5 4", "4 1 4 5"},
-                                   {"5 5 2 3", "5 5 3 2"}, {"6 5 3 4", "6 5 4 3"}})
+                                   {"5 5 2 3", "5 5 3 2"},
+                                   {"6 5 3 4", "6 5 4 3"}})
         text.replace(text.find(from), from.size(), to);
     std::vector<std::string> notes;
     const Mesh m = read_gmsh_mesh(write_file("clockwise.msh", text), max_nodes, notes);

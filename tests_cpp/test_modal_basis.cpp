@@ -55,7 +55,8 @@ void expect_identities(const Discretization& d, const ModalBasis& b) {
     EXPECT_LT(relative(reduced - exact, exact), 1e-9);
     // The lift: A_ff S + A_fc e = 0.
     Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(d.clamped_dofs.size()));
-    for (size_t j = 0; j < d.clamped_dofs.size(); ++j) e[static_cast<Eigen::Index>(j)] = d.clamped_dofs[j] % 2;
+    for (size_t j = 0; j < d.clamped_dofs.size(); ++j)
+        e[static_cast<Eigen::Index>(j)] = d.clamped_dofs[j] % 2;
     const Eigen::VectorXd load = d.A_free_clamped * e;
     EXPECT_LT(relative(A * b.lift + load, load), 1e-9);
 }
@@ -91,10 +92,11 @@ TEST(ModalBasis, IdentitiesHoldForEveryVariant) {
 // 4), normal and tangential (2), none (0 and 3).
 TEST(ModalBasis, AllModesSpanTheBodyWithAMasslessResidual) {
     const int n = 4, nc = n + 1;
-    const std::pair<MassVariant, int> cases[] = {
-        {MassVariant::standard, 0}, {MassVariant::redistributed_normal, nc},
-        {MassVariant::redistributed_both, 2 * nc}, {MassVariant::standard_implicit_contact, 0},
-        {MassVariant::redistributed_implicit_contact, nc}};
+    const std::pair<MassVariant, int> cases[] = {{MassVariant::standard, 0},
+                                                 {MassVariant::redistributed_normal, nc},
+                                                 {MassVariant::redistributed_both, 2 * nc},
+                                                 {MassVariant::standard_implicit_contact, 0},
+                                                 {MassVariant::redistributed_implicit_contact, nc}};
     for (const auto& [variant, massless] : cases) {
         SCOPED_TRACE(static_cast<int>(variant));
         const Discretization d = discretize(scene(n, variant));

@@ -116,9 +116,8 @@ static void expect_all_modes_give_the_full_body(bool force_control, ReducedEdge 
         const double E = full_energy(full.discretization(), s);
         EXPECT_LT(std::abs(reduced.energy(r) - E) / E, 1e-10);
         double worst_work = 0;
-        Works::for_each(full_works, reduced_works, [&](double x, double y) {
-            worst_work = std::max(worst_work, std::abs(x - y));
-        });
+        Works::for_each(full_works, reduced_works,
+                        [&](double x, double y) { worst_work = std::max(worst_work, std::abs(x - y)); });
         EXPECT_LT(worst_work / E, 1e-10);
     }
 }
@@ -174,8 +173,8 @@ static void expect_energy_balance_with_few_modes(bool force_control, ReducedEdge
             scale = std::max({scale, std::abs(works.clamp), std::abs(works.friction)});
         }
         EXPECT_GT(touching, 100);
-        const double balance = reduced.energy(r) - E0 -
-                               (works.clamp + works.normal_contact + works.friction - works.damping);
+        const double balance =
+            reduced.energy(r) - E0 - (works.clamp + works.normal_contact + works.friction - works.damping);
         EXPECT_LT(std::abs(balance) / scale, 1e-9);
         EXPECT_GT(works.damping, 0);
     }

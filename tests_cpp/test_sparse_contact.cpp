@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "linalg/pattern_lu.hpp"
-#include "simulation/simulation.hpp"
 #include "contact/sparse_contact.hpp"
+#include "linalg/pattern_lu.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "simulation/simulation.hpp"
 
 using namespace contactbody;
 
@@ -77,8 +77,8 @@ TEST_P(SparseAgainstCondensed, SameSolutions) {
             << c.name << " step " << k;
         const Observables& oa = sparse.observables();
         const Observables& ob = condensed.observables();
-        const double energy = std::max({std::abs(ob.energy), std::abs(ob.kinetic_energy),
-                                        std::abs(ob.strain_energy), 1e-30});
+        const double energy =
+            std::max({std::abs(ob.energy), std::abs(ob.kinetic_energy), std::abs(ob.strain_energy), 1e-30});
         EXPECT_LE(std::abs(oa.energy - ob.energy), 1e-9 * energy) << c.name << " step " << k;
         EXPECT_LE(std::abs(oa.kinetic_energy - ob.kinetic_energy), 1e-9 * energy) << c.name << " step " << k;
         EXPECT_LE(std::abs(oa.strain_energy - ob.strain_energy), 1e-9 * energy) << c.name << " step " << k;
@@ -214,7 +214,8 @@ TEST(PatternLu, FactorsAgainOnlyWhatTheChangedValuesReach) {
     std::vector<Eigen::Triplet<double>> entries;
     for (int i = 0; i < n; ++i) {
         entries.emplace_back(i, i, 4 + std::sin(i));
-        if (i + 1 < n) entries.emplace_back(i, i + 1, std::cos(i)), entries.emplace_back(i + 1, i, std::sin(2 * i));
+        if (i + 1 < n)
+            entries.emplace_back(i, i + 1, std::cos(i)), entries.emplace_back(i + 1, i, std::sin(2 * i));
     }
     SparseMatrix A(n, n);
     A.setFromTriplets(entries.begin(), entries.end());
@@ -283,10 +284,15 @@ TEST(HeldOperator, SlippingRowsHoldTheirSlipLaw) {
         if (!contact[static_cast<size_t>(k)]) EXPECT_NEAR(r[k], 0, 1e-9 * rhs.norm()) << "free row " << k;
     for (Eigen::Index i = 0; i < n; ++i) {
         const int y = held.dof(i), xdof = held.dof(n + i);
-        if (hold[static_cast<size_t>(i)]) EXPECT_DOUBLE_EQ(x[y], values[i]);
-        else EXPECT_NEAR(r[y], 0, 1e-9 * rhs.norm());
-        if (hold[static_cast<size_t>(n + i)]) EXPECT_DOUBLE_EQ(x[xdof], values[n + i]);
-        else EXPECT_NEAR(r[xdof] - slip[static_cast<size_t>(i)] * 0.3 * r[y], 0, 1e-9 * rhs.norm()) << "node " << i;
+        if (hold[static_cast<size_t>(i)])
+            EXPECT_DOUBLE_EQ(x[y], values[i]);
+        else
+            EXPECT_NEAR(r[y], 0, 1e-9 * rhs.norm());
+        if (hold[static_cast<size_t>(n + i)])
+            EXPECT_DOUBLE_EQ(x[xdof], values[n + i]);
+        else
+            EXPECT_NEAR(r[xdof] - slip[static_cast<size_t>(i)] * 0.3 * r[y], 0, 1e-9 * rhs.norm())
+                << "node " << i;
     }
 }
 
@@ -349,8 +355,9 @@ TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
         EXPECT_GE(run.solves, run.iterations - run.warm + run.krylov);
         EXPECT_LE(10 * (run.solves - run.iterations + run.warm - run.krylov), run.iterations);
         const std::vector<signed char>& pattern = run.factor_pattern;
-        EXPECT_EQ(std::any_of(pattern.begin(), pattern.end(), [](signed char x) { return x == 3 || x == -3; }),
-                  path == Stepper::ContactPath::sparse);
+        EXPECT_EQ(
+            std::any_of(pattern.begin(), pattern.end(), [](signed char x) { return x == 3 || x == -3; }),
+            path == Stepper::ContactPath::sparse);
     }
     EXPECT_LT(2 * runs[0].solves, runs[1].solves);
     EXPECT_LE((runs[0].lambda - runs[1].lambda).cwiseAbs().maxCoeff(),

@@ -18,8 +18,20 @@ using namespace contactbody;
 
 namespace {
 
-const double values[] = {0.0, -0.0, 1.0, -2.5, 0.1, 1.0 / 3, 123456.0, 1234567.0, 1e-5, 2.5e-7,
-                         6.02214076e23, -1.6e-19, 1e300, 4.9e-324,
+const double values[] = {0.0,
+                         -0.0,
+                         1.0,
+                         -2.5,
+                         0.1,
+                         1.0 / 3,
+                         123456.0,
+                         1234567.0,
+                         1e-5,
+                         2.5e-7,
+                         6.02214076e23,
+                         -1.6e-19,
+                         1e300,
+                         4.9e-324,
                          std::numeric_limits<double>::infinity(),
                          -std::numeric_limits<double>::infinity(),
                          std::numeric_limits<double>::quiet_NaN()};
@@ -66,15 +78,15 @@ TEST(Text, MessagesAsAnOstringstreamBuildsThem) {
 }
 
 TEST(Text, ReadsWholeFiniteNumbers) {
-    const std::pair<const char*, double> good[] = {{"1.5", 1.5}, {"  -3e-2\t", -0.03}, {"+2", 2},
-                                                   {".5", 0.5}, {"7.", 7}, {"1E3", 1000}};
+    const std::pair<const char*, double> good[] = {{"1.5", 1.5}, {"  -3e-2\t", -0.03}, {"+2", 2}, {".5", 0.5},
+                                                   {"7.", 7},    {"1E3", 1000}};
     for (const auto& [text, value] : good) {
         double x = 0;
         EXPECT_TRUE(parse_number(text, x)) << text;
         EXPECT_EQ(x, value) << text;
     }
-    for (const char* text : {"", "  ", "1.5x", "1,5", "inf", "nan", "-inf", "1e999", "+-1", "++1",
-                             "--1", "0x10", "1 2", "e5"}) {
+    for (const char* text :
+         {"", "  ", "1.5x", "1,5", "inf", "nan", "-inf", "1e999", "+-1", "++1", "--1", "0x10", "1 2", "e5"}) {
         double x = 0;
         EXPECT_FALSE(parse_number(text, x)) << '\'' << text << '\'';
     }
@@ -83,8 +95,9 @@ TEST(Text, ReadsWholeFiniteNumbers) {
 class Files : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = join_path(::testing::TempDir(), std::string("c_file_") +
-                                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = join_path(
+            ::testing::TempDir(),
+            std::string("c_file_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     }
     std::string dir_;
 };

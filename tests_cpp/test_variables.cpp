@@ -36,8 +36,8 @@ TEST(Variables, EachModelHasItsRows) {
         EXPECT_TRUE(planar.count(name)) << name;
         EXPECT_FALSE(solid.count(name)) << name;
     }
-    for (const char* name : {"foundation_velocity_z", "initial_velocity_z", "friction_force_z", "top_reaction_z",
-                             "edge_z", "edge_friction_z", "edge_slip_velocity_z"}) {
+    for (const char* name : {"foundation_velocity_z", "initial_velocity_z", "friction_force_z",
+                             "top_reaction_z", "edge_z", "edge_friction_z", "edge_slip_velocity_z"}) {
         EXPECT_FALSE(planar.count(name)) << name;
         EXPECT_TRUE(solid.count(name)) << name;
     }
@@ -88,10 +88,14 @@ TEST(Variables, SceneTakesEveryParameter) {
     const SceneParameters defaults = values.scene();
     for (const Variable& v : variables()) {
         if (v.causality != Causality::parameter || v.fmu_only) continue;
-        if (v.real) v.real(values) = v.start + 1;
-        else if (v.string) v.string(values) += "mesh.msh";
-        else if (v.type == Type::Enumeration) v.integer(values) = v.start == 0 ? 1 : 0;
-        else v.integer(values) = static_cast<int>(v.start) + 1;
+        if (v.real)
+            v.real(values) = v.start + 1;
+        else if (v.string)
+            v.string(values) += "mesh.msh";
+        else if (v.type == Type::Enumeration)
+            v.integer(values) = v.start == 0 ? 1 : 0;
+        else
+            v.integer(values) = static_cast<int>(v.start) + 1;
     }
     const SceneParameters changed = values.scene();
     int fields = 0;
@@ -113,8 +117,10 @@ TEST(Variables, OutputsReadTheirObservable) {
     Observables::for_each(
         [&](const char* name, auto& field) {
             if (!find_variable(name)) return;  // the other model's (the z components)
-            if constexpr (std::is_same_v<std::decay_t<decltype(field)>, int>) field = n++;
-            else field = x++;
+            if constexpr (std::is_same_v<std::decay_t<decltype(field)>, int>)
+                field = n++;
+            else
+                field = x++;
         },
         values.out);
     std::set<double> seen;
@@ -137,10 +143,14 @@ TEST(Variables, SameDiscretizationFollowsTheDeclaration) {
         [&](const char* name, Reuse reuse, auto& mine) {
             using Field = std::decay_t<decltype(mine)>;
             const Field kept = mine;
-            if constexpr (std::is_same_v<Field, bool>) mine = !mine;
-            else if constexpr (std::is_enum_v<Field>) mine = static_cast<Field>(static_cast<int>(mine) == 0 ? 1 : 0);
-            else if constexpr (std::is_same_v<Field, std::string>) mine = mine + "other.msh";
-            else mine = mine + 1;
+            if constexpr (std::is_same_v<Field, bool>)
+                mine = !mine;
+            else if constexpr (std::is_enum_v<Field>)
+                mine = static_cast<Field>(static_cast<int>(mine) == 0 ? 1 : 0);
+            else if constexpr (std::is_same_v<Field, std::string>)
+                mine = mine + "other.msh";
+            else
+                mine = mine + 1;
             const bool expected_same = reuse == Reuse::keeps_discretization;
             EXPECT_EQ(same_discretization(base, other), expected_same) << name;
             (expected_same ? keeping : rebuilding)++;

@@ -4,9 +4,9 @@
 #include "util/text.hpp"
 
 #include <algorithm>
-#include <type_traits>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -33,7 +33,8 @@ Simplex<D> simplex(const Mesh& mesh, const int* cell) {
     Simplex<D> s;
     if constexpr (D == 2) {
         const Point p[3] = {mesh.point(cell[0]), mesh.point(cell[1]), mesh.point(cell[2])};
-        const double area = 0.5 * ((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
+        const double area =
+            0.5 * ((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y));
         for (int a = 0; a < 3; ++a) {
             const Point& q1 = p[(a + 1) % 3];
             const Point& q2 = p[(a + 2) % 3];
@@ -157,8 +158,8 @@ template <int D>
 Moments<D> moment_row(const Point& pi, const Point& pj) {
     Moments<D> c;
     if constexpr (D == 2) {
-        c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), pi.x * pj.x,
-            0.5 * (pi.x * pj.y + pj.x * pi.y), pi.y * pj.y;
+        c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), pi.x * pj.x, 0.5 * (pi.x * pj.y + pj.x * pi.y),
+            pi.y * pj.y;
     } else {
         c << 1, 0.5 * (pi.x + pj.x), 0.5 * (pi.y + pj.y), 0.5 * (pi.z + pj.z), pi.x * pj.x,
             0.5 * (pi.x * pj.y + pj.x * pi.y), 0.5 * (pi.x * pj.z + pj.x * pi.z), pi.y * pj.y,
@@ -221,24 +222,26 @@ double StrainEnergy::operator()(const Eigen::VectorXd& u) const {
             const double exx = grad_u[0][0], eyy = grad_u[1][1];
             // summed in the order the 2D body's bits were made in
             const int n1 = e.nodes[1], n2 = e.nodes[2];
-            const double gamma = e.grad[0][1] * (u[2 * n1] - u[2 * n0]) + e.grad[1][1] * (u[2 * n2] - u[2 * n0]) +
+            const double gamma = e.grad[0][1] * (u[2 * n1] - u[2 * n0]) +
+                                 e.grad[1][1] * (u[2 * n2] - u[2 * n0]) +
                                  e.grad[0][0] * (u[2 * n1 + 1] - u[2 * n0 + 1]) +
                                  e.grad[1][0] * (u[2 * n2 + 1] - u[2 * n0 + 1]);
             const double trace = exx + eyy, shear = exx - eyy;
-            energy += e.measure * (0.5 * (lambda_ + mu_) * trace * trace +
-                                   0.5 * mu_ * (shear * shear + gamma * gamma));
+            energy += e.measure *
+                      (0.5 * (lambda_ + mu_) * trace * trace + 0.5 * mu_ * (shear * shear + gamma * gamma));
         } else {
             // (lambda + 2 mu/3)/2 (tr e)^2 + mu/3 sum (e_ii - e_jj)^2 + mu/2 sum gamma_ij^2
             const double exx = grad_u[0][0], eyy = grad_u[1][1], ezz = grad_u[2][2];
             const double trace = exx + eyy + ezz;
-            const double normal = (exx - eyy) * (exx - eyy) + (eyy - ezz) * (eyy - ezz) + (ezz - exx) * (ezz - exx);
+            const double normal =
+                (exx - eyy) * (exx - eyy) + (eyy - ezz) * (eyy - ezz) + (ezz - exx) * (ezz - exx);
             double shear = 0;
             for (const auto& pair : shear_pair) {
                 const double gamma = grad_u[pair[0]][pair[1]] + grad_u[pair[1]][pair[0]];
                 shear += gamma * gamma;
             }
-            energy += e.measure * (0.5 * (lambda_ + 2 * mu_ / 3) * trace * trace + mu_ / 3 * normal +
-                                   0.5 * mu_ * shear);
+            energy += e.measure *
+                      (0.5 * (lambda_ + 2 * mu_ / 3) * trace * trace + mu_ / 3 * normal + 0.5 * mu_ * shear);
         }
     }
     return energy;
@@ -280,8 +283,8 @@ namespace {
 // norm (KLR's); w_e = m_e the least change relative to each entry, which changes entry e by
 // the fraction c_e . y of itself, whatever its size. `largest_fraction`: max |c_e . y|.
 template <int D>
-Triplets corrected_entries(const Triplets& kept, const std::vector<Point>& p,
-                           const Moments<D>& target, bool relative, double& largest_fraction) {
+Triplets corrected_entries(const Triplets& kept, const std::vector<Point>& p, const Moments<D>& target,
+                           bool relative, double& largest_fraction) {
     constexpr int K = moment_count<D>;
     Eigen::Matrix<double, K, K> CWCt = Eigen::Matrix<double, K, K>::Zero();
     Moments<D> Cm = Moments<D>::Zero();
@@ -310,8 +313,7 @@ bool positive_definite_off_contact(const Triplets& entries, const std::vector<ch
         if (!is_contact[k]) position[k] = n++;
     Triplets restricted;
     restricted.reserve(entries.size());
-    for (const auto& e : entries)
-        restricted.emplace_back(position[e.row()], position[e.col()], e.value());
+    for (const auto& e : entries) restricted.emplace_back(position[e.row()], position[e.col()], e.value());
     Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(n, restricted));
     return llt.info() == Eigen::Success;
 }
@@ -344,8 +346,8 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, K, K>> eig(CCt);
     if (eig.eigenvalues()(0) <= 1e-12 * eig.eigenvalues()(K - 1))
         throw std::invalid_argument(
-            "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the " +
-            moment_words<D> + " moments "
+            "mass redistribution: " + mesh_name(mesh) + " is too coarse to keep the " + moment_words<D> +
+            " moments "
             "without its contact nodes (the rectangle needs ny >= 2); use mass_matrix = 0 or 3");
 
     // The least change in the Frobenius norm, where it is positive definite (every rectangle
@@ -362,7 +364,8 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
         if (!positive_definite_off_contact(corrected, is_contact) && mesh.is_rectangle())
             throw std::invalid_argument(
                 "mass redistribution: M_r is not positive definite on this mesh (nx = " +
-                std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) + "). On the "
+                std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) +
+                "). On the "
                 "rectangle it depends on nx and ny only (measured for any width and height): ny = "
                 "3 fails for nx >= 3, every other ny >= 2 is carried (checked up to nx = 1000); a "
                 "larger nx does not help. Use ny = 2, 4 or more, or mass_matrix = 0 or 3 "
@@ -370,7 +373,8 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
         if (!positive_definite_off_contact(corrected, is_contact)) {
             Text msg;
             msg << "mass redistribution: " << mesh_name(mesh) << " cannot carry M_r. Removing "
-                << "the contact nodes' normal mass and restoring the " << moment_words<D> << " moments changes the other "
+                << "the contact nodes' normal mass and restoring the "
+                << moment_words<D> << " moments changes the other "
                 << "entries by up to " << format_number(fraction) << " of themselves here, and the "
                 << "result is not positive definite (changes below 1/4 of every entry would keep it "
                 << "so). Use a mesh with more cells between the contact group and the rest of the "

@@ -34,9 +34,9 @@ public:
 
 private:
     struct Element {
-        std::array<int, 4> nodes;                 // dim + 1 of them
+        std::array<int, 4> nodes;                   // dim + 1 of them
         std::array<std::array<double, 3>, 3> grad;  // gradients of the shape functions of nodes 1..dim
-        double measure;                           // area or volume
+        double measure;                             // area or volume
     };
     std::vector<Element> elements_;
     int dim_ = 2;

@@ -38,15 +38,17 @@ bool redistributes_normal(MassVariant v) {
 }
 
 bool contact_at_end_of_step(MassVariant v) {
-    return v == MassVariant::standard_implicit_contact ||
-           v == MassVariant::redistributed_implicit_contact;
+    return v == MassVariant::standard_implicit_contact || v == MassVariant::redistributed_implicit_contact;
 }
 
 bool reduced_edge_has_tangential_mass(const SceneParameters& p) {
     switch (p.reduced_edge) {
-        case ReducedEdge::massless: return false;
-        case ReducedEdge::tangential_mass: return true;
-        case ReducedEdge::by_variant: break;
+        case ReducedEdge::massless:
+            return false;
+        case ReducedEdge::tangential_mass:
+            return true;
+        case ReducedEdge::by_variant:
+            break;
     }
     // The tangential mass where the variant has mass at the contact (0, 3, 4), the massless
     // edge for variants 1 and 2 (docs/decisions.md, "The reduced body's contact edge").
@@ -56,8 +58,9 @@ bool reduced_edge_has_tangential_mass(const SceneParameters& p) {
 void check_parameters(const SceneParameters& p) {
     if (p.dimension != 2 && p.dimension != 3) reject("dimension", "2 or 3", p.dimension);
     if (p.dimension == 3 && p.mesh.empty())
-        throw std::invalid_argument("mesh is empty: a 3D body comes from a Gmsh file of first-order "
-                                    "tetrahedra (the built-in rectangle is 2D)");
+        throw std::invalid_argument(
+            "mesh is empty: a 3D body comes from a Gmsh file of first-order "
+            "tetrahedra (the built-in rectangle is 2D)");
     require_positive("width", p.width);
     require_positive("height", p.height);
     if (p.mesh.empty()) {  // the rectangle's cells (a mesh file is checked as it is read)
@@ -86,8 +89,7 @@ void check_parameters(const SceneParameters& p) {
     if (!(p.viscous_friction >= 0 && p.viscous_friction <= max_viscous_friction))
         reject("viscous_friction", "in [0, 100] s/m", p.viscous_friction);
     const int variant = static_cast<int>(p.mass_matrix);
-    if (variant < 0 || variant >= num_mass_variants)
-        reject("mass_matrix", "0, 1, 2, 3 or 4", variant);
+    if (variant < 0 || variant >= num_mass_variants) reject("mass_matrix", "0, 1, 2, 3 or 4", variant);
     if (redistributes_normal(p.mass_matrix) && p.mesh.empty() && p.ny < 2)
         reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
     require_positive("internal_step", p.internal_step);
@@ -100,16 +102,21 @@ void check_parameters(const SceneParameters& p) {
         const std::string name = std::string("initial_velocity_") + component_letter(c);
         const double v = p.initial_velocity[static_cast<size_t>(c)];
         if (!std::isfinite(v)) reject(name.c_str(), "finite", v);
-        if (c >= p.dimension && v != 0) reject(name.c_str(), "0 for a 2D body (plane strain in x-y has no z)", v);
+        if (c >= p.dimension && v != 0)
+            reject(name.c_str(), "0 for a 2D body (plane strain in x-y has no z)", v);
         moving = moving || v != 0;
     }
     if (p.static_initial_state && moving) {
         Text msg;
         msg << "initial_state = static starts the body at rest, so ";
         for (int c = 0; c < p.dimension; ++c)
-            msg << (c == 0 ? "" : c + 1 == p.dimension ? " and " : ", ") << "initial_velocity_" << component_letter(c);
+            msg << (c == 0                 ? ""
+                    : c + 1 == p.dimension ? " and "
+                                           : ", ")
+                << "initial_velocity_" << component_letter(c);
         msg << " must be 0 (got ";
-        for (int c = 0; c < p.dimension; ++c) msg << (c ? ", " : "") << p.initial_velocity[static_cast<size_t>(c)];
+        for (int c = 0; c < p.dimension; ++c)
+            msg << (c ? ", " : "") << p.initial_velocity[static_cast<size_t>(c)];
         msg << " m/s): set them to 0, or use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
@@ -132,8 +139,8 @@ constexpr const char* cells_of_dimension[] = {"", "", "triangles, a 2D body", "t
 void check_dimension(const Mesh& mesh, const SceneParameters& p) {
     if (mesh.dim != p.dimension) {
         Text msg;
-        msg << "mesh " << mesh.source << ", line 0: it holds "
-            << cells_of_dimension[mesh.dim] << "; this model's "
+        msg << "mesh " << mesh.source << ", line 0: it holds " << cells_of_dimension[mesh.dim]
+            << "; this model's "
             << "bodies are " << p.dimension << "D"
             << (p.dimension == 2 ? " (plane strain, forces in N/m) and need a mesh with first-order "
                                    "triangles in the x-y plane"
@@ -142,7 +149,8 @@ void check_dimension(const Mesh& mesh, const SceneParameters& p) {
     }
     if (!(p.lambda + 2 * p.mu / mesh.dim > 0)) {  // (in 2D, lambda + mu > 0: checked above)
         Text rule;
-        rule << "such that lambda + 2 mu / " << mesh.dim << " > 0 for a " << mesh.dim << "D body (a positive bulk modulus)";
+        rule << "such that lambda + 2 mu / " << mesh.dim << " > 0 for a " << mesh.dim
+             << "D body (a positive bulk modulus)";
         reject("lambda", rule.str(), p.lambda);
     }
 }
@@ -224,7 +232,8 @@ Discretization discretize(const SceneParameters& p) {
     for (int node : d.mesh.contact_nodes) {
         d.contact_y.push_back(d.free_index[d.mesh.dof(node, Mesh::normal)]);
         for (int t = 0; t < d.mesh.tangents(); ++t)
-            d.contact_tangential[static_cast<size_t>(t)].push_back(d.free_index[d.mesh.dof(node, tangent_component(t))]);
+            d.contact_tangential[static_cast<size_t>(t)].push_back(
+                d.free_index[d.mesh.dof(node, tangent_component(t))]);
     }
     return d;
 }
@@ -248,7 +257,8 @@ void Discretization::remove_translation(const Eigen::VectorXd& u, Eigen::VectorX
 
 std::vector<int> Discretization::contact_unknowns() const {
     std::vector<int> dofs(contact_y);
-    for (const std::vector<int>& tangent : contact_tangential) dofs.insert(dofs.end(), tangent.begin(), tangent.end());
+    for (const std::vector<int>& tangent : contact_tangential)
+        dofs.insert(dofs.end(), tangent.begin(), tangent.end());
     return dofs;
 }
 

@@ -144,7 +144,6 @@ constexpr int max_reduced_modes = 2000;
 // c_v |v| adds 1 to F at |v| = 1 / c_v: 100 s/m does so at 1 cm/s.
 constexpr double max_viscous_friction = 100;
 
-
 // Throws std::invalid_argument naming the first offending parameter (the FMU's variable names).
 void check_parameters(const SceneParameters& p);
 // What a body of this mesh's dimension cannot take yet (3D: friction and the reduced body);
@@ -156,9 +155,9 @@ struct Discretization {
     Mesh mesh;
     std::vector<std::string> mesh_notes;  // what reading the mesh did that the log should say
     bool contact_at_end_of_step = false;  // else on u^{k+1/2} (the paper's midpoint)
-    SparseMatrix A;                 // all dofs
-    StrainEnergy strain_energy;     // 1/2 u^T A u, >= 0 and exact for translations
-    SparseMatrix M;                 // the variant's mass matrix, all dofs
+    SparseMatrix A;                       // all dofs
+    StrainEnergy strain_energy;           // 1/2 u^T A u, >= 0 and exact for translations
+    SparseMatrix M;                       // the variant's mass matrix, all dofs
     // The unknowns ("free", n_f of them): every dof that is neither clamped nor tied to the
     // top plate, then, under force control, the plate's vertical displacement w (plate_index).
     // expand (all dofs x free) maps them to all dofs: its transpose sums the plate's rows.
@@ -174,7 +173,7 @@ struct Discretization {
     RowMajorSparseMatrix M_free_rows, A_free_rows;  // row-major: every substep multiplies by them
     SparseMatrix A_free_clamped, M_free_clamped;
     RowMajorSparseMatrix M_top_rows, A_top_rows;  // few rows, read row by row
-    SparseMatrix A_free, M_free;    // free x free (M_free with the plate's mass)
+    SparseMatrix A_free, M_free;                  // free x free (M_free with the plate's mass)
     // Rayleigh damping C = alpha M + beta A and the same blocks of it; all empty (no
     // entries) when undamped, so that the undamped scheme is computed exactly as before.
     SparseMatrix C;

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "contact/contact_solver.hpp"
 #include "assembly/discretization.hpp"
+#include "contact/contact_solver.hpp"
 
 namespace contactbody {
 

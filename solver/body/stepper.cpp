@@ -1,13 +1,13 @@
 #include "body/stepper.hpp"
 
-#include "util/text.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "util/text.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <stdexcept>
-#include <cmath>
 
 namespace contactbody {
 
@@ -16,7 +16,9 @@ namespace {
 // Adds the time since the last lap to one of the timings (no cost when timing is off).
 class Laps {
 public:
-    explicit Laps(bool on) : on_(on) { if (on_) last_ = std::chrono::steady_clock::now(); }
+    explicit Laps(bool on) : on_(on) {
+        if (on_) last_ = std::chrono::steady_clock::now();
+    }
     void lap(double& into) {
         if (!on_) return;
         const auto now = std::chrono::steady_clock::now();
@@ -40,8 +42,8 @@ struct Stepper::Factor {
     double dt = 0;
     int id = 0;  // the factorization's number: W is rebuilt when another factor is used
     std::unique_ptr<TrailingCholesky> cholesky;
-    Eigen::MatrixXd G;         // trailing positions x (N, T)
-    Eigen::MatrixXd delassus;  // G^T G, (N, T) x (N, T)
+    Eigen::MatrixXd G;            // trailing positions x (N, T)
+    Eigen::MatrixXd delassus;     // G^T G, (N, T) x (N, T)
     SparseMatrix K_free_clamped;  // the coupling of free and clamped dofs in K
     // The sparse contact solve's operator instead of cholesky, G and delassus (wants_sparse).
     std::unique_ptr<HeldOperator> held;
@@ -161,8 +163,7 @@ State Stepper::paper_initial_state(const Discretization& d, const SceneParameter
     // The clamp starts where it is driven, at every height it spans (a side face too): the
     // first substep would otherwise move it there at once, with work no one counts.
     for (int n : mesh.top_nodes) s.u[mesh.dof(n, Mesh::normal)] = top_displacement;
-    for (int dof : d.moving_dofs)
-        s.v[dof] = p.initial_velocity[static_cast<size_t>(mesh.component(dof))];
+    for (int dof : d.moving_dofs) s.v[dof] = p.initial_velocity[static_cast<size_t>(mesh.component(dof))];
     const Eigen::Index nc = static_cast<Eigen::Index>(d.contact_tangential[0].size());
     s.lambda.setZero(p.friction_coefficient > 0 ? mesh.dim * nc : nc);  // N, then x (and z)
     s.sticking.setZero(nc);
@@ -190,9 +191,9 @@ int Stepper::held_unknowns_per_node(double friction) const {
     return friction > 0 ? 1 + disc_.mesh.tangents() : 2;
 }
 
-int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
-                     double duN, double dux, double foundation_step, double initial_gap,
-                     bool friction, bool touching, NodeStatus status) {
+int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old, double duN,
+                     double dux, double foundation_step, double initial_gap, bool friction, bool touching,
+                     NodeStatus status) {
     report.normal_force -= lN;
     report.friction_force[0] += lT;
     report.work.friction += lT * dux;
@@ -260,12 +261,13 @@ std::string Stepper::summary() const {
     Text msg;
     msg << "contact solve: " << (wants_sparse() ? "sparse, on the body's system" : "condensed, a dense W")
         << " of the " << num_contact_nodes() << " contact nodes ((2 n_c)^2 / unknowns = " << ratio
-        << (contact_path_ != ContactPath::automatic ? ", chosen by the caller"
-            : rate_law(params_).active() ? ", a slip-rate law: condensed"
-            : ratio > sparse_contact_kappa(params_.friction_coefficient) ? " > " : " <= ");
+        << (contact_path_ != ContactPath::automatic                      ? ", chosen by the caller"
+            : rate_law(params_).active()                                 ? ", a slip-rate law: condensed"
+            : ratio > sparse_contact_kappa(params_.friction_coefficient) ? " > "
+                                                                         : " <= ");
     if (contact_path_ == ContactPath::automatic && !rate_law(params_).active())
-        msg << sparse_contact_kappa_0 << " + " << sparse_contact_kappa_F << " F = "
-            << sparse_contact_kappa(params_.friction_coefficient);
+        msg << sparse_contact_kappa_0 << " + " << sparse_contact_kappa_F
+            << " F = " << sparse_contact_kappa(params_.friction_coefficient);
     msg << ")";
     return msg.str();
 }
@@ -286,8 +288,11 @@ ContactFactorization Stepper::contact_factorization() const {
     ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc))};
     for (Eigen::Index i = 0; i < nc; ++i) {
         const signed char slip = f->held->slip()[static_cast<size_t>(i)];
-        out.pattern[static_cast<size_t>(i)] = static_cast<signed char>(
-            !f->held->held()[static_cast<size_t>(i)] ? 0 : f->held->held()[static_cast<size_t>(nc + i)] ? 1 : slip ? 3 * slip : 2);
+        out.pattern[static_cast<size_t>(i)] =
+            static_cast<signed char>(!f->held->held()[static_cast<size_t>(i)]       ? 0
+                                     : f->held->held()[static_cast<size_t>(nc + i)] ? 1
+                                     : slip                                         ? 3 * slip
+                                                                                    : 2);
     }
     return out;
 }
@@ -328,7 +333,8 @@ bool Stepper::wants_sparse() const {
 void Stepper::set_contact_at_end_of_step(bool at_end) {
     const MassVariant v = params_.mass_matrix;
     if (v != MassVariant::standard && v != MassVariant::standard_implicit_contact)
-        throw std::logic_error("Stepper::set_contact_at_end_of_step: only for a consistent mass (variants 0 and 3)");
+        throw std::logic_error(
+            "Stepper::set_contact_at_end_of_step: only for a consistent mass (variants 0 and 3)");
     params_.mass_matrix = at_end ? MassVariant::standard_implicit_contact : MassVariant::standard;
     disc_.contact_at_end_of_step = at_end;
 }
@@ -447,14 +453,14 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
     // an affine map of it) shifted by B u^k.
     const bool implicit = d.contact_at_end_of_step;
     const auto gap_old = [&](int i) {  // g - u_N^k
-        return params_.initial_gap + d.mesh.contact_heights[i] + s.u[d.mesh.dof(d.mesh.contact_nodes[i], Mesh::normal)];
+        return params_.initial_gap + d.mesh.contact_heights[i] +
+               s.u[d.mesh.dof(d.mesh.contact_nodes[i], Mesh::normal)];
     };
     SubstepReport report;
     bool touching = false;
-    if (f.held) {  // the sparse system (sparse_contact.hpp): w_free_ and lambda at once
+    if (f.held) {              // the sparse system (sparse_contact.hpp): w_free_ and lambda at once
         problem_.a.setZero();  // unknown here: every substep solves, and says who touched
-        set_contact_conditions(problem_, params_, implicit, dt, load,
-                               s.sticking, gap_old);
+        set_contact_conditions(problem_, params_, implicit, dt, load, s.sticking, gap_old);
         if (shift != 0) {  // the conditions on w - t: B (w - t) = B w + shift on the normal rows
             snapshot_.gap_limit = problem_.gap_limit;
             problem_.gap_limit.array() += shift;
@@ -473,7 +479,7 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         const int unknowns = static_cast<int>(problem_.W.rows());
         const auto G = f.G.leftCols(unknowns);
         auto y_contact = y.tail(f.G.rows());
-        problem_.a.noalias() = G.transpose() * y_contact;  // B K^-1 rhs
+        problem_.a.noalias() = G.transpose() * y_contact;      // B K^-1 rhs
         if (shift != 0) problem_.a.head(nc).array() -= shift;  // + B t (N = -e_y)
         touching = set_contact_conditions(problem_, params_, implicit, dt, load, s.sticking, gap_old);
         if (touching) {
@@ -524,7 +530,9 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
 
     // The edge: the contact law's quantities on u^{k+1/2} (for tests), then what both
     // steppers report.
-    const auto node_y = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], Mesh::normal); };
+    const auto node_y = [&](int i) {
+        return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], Mesh::normal);
+    };
     const auto node_x = [&](int i) { return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], 0); };
     const auto node_tangent = [&](int i, int t) {
         return d.mesh.dof(d.mesh.contact_nodes[static_cast<size_t>(i)], tangent_component(t));
@@ -539,10 +547,10 @@ SubstepReport Stepper::substep(State& s, double dt, const SubstepLoad& load) {
         if (friction) snapshot_.slip[i] = w_[node_x(i)] - problem_.slip_origin[i];
     }
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, d.mesh.tangents(), params_.initial_gap,
-        disc_.mesh.contact_heights, touching, f.held ? sparse_solver_.status() : solver_.status(),
-        [&](int i) { return -s.u[node_y(i)]; }, [&](int i) { return -2 * w_[node_y(i)]; },
-        [&](int i, int t) { return 2 * w_[node_tangent(i, t)]; });
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, d.mesh.tangents(),
+        params_.initial_gap, disc_.mesh.contact_heights, touching,
+        f.held ? sparse_solver_.status() : solver_.status(), [&](int i) { return -s.u[node_y(i)]; },
+        [&](int i) { return -2 * w_[node_y(i)]; }, [&](int i, int t) { return 2 * w_[node_tangent(i, t)]; });
 
     // u^{k+1} = 2 u^{k+1/2} - u^k,  v^{k+1} = 4/dt (u^{k+1/2} - u^k) - v^k on the moving dofs;
     // the clamped dofs follow the top displacement input.

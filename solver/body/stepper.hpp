@@ -23,8 +23,8 @@
 namespace contactbody {
 
 struct State {
-    Eigen::VectorXd u, v;    // all dofs (clamped ones carry the top displacement)
-    Eigen::VectorXd lambda;  // last multipliers: lambda_N[n_c], then lambda_T[n_c] if F > 0
+    Eigen::VectorXd u, v;      // all dofs (clamped ones carry the top displacement)
+    Eigen::VectorXd lambda;    // last multipliers: lambda_N[n_c], then lambda_T[n_c] if F > 0
     Eigen::VectorXd sticking;  // n_c: 1 where the node stuck in the last substep, else 0
     double time = 0;
 };
@@ -34,7 +34,7 @@ struct State {
 struct SubstepLoad {
     double top_start = 0, top_end = 0, top_rate = 0;
     Tangential foundation_velocity{};  // per tangent (a 3D body's foundation slides in x and z)
-    double top_force = 0;  // force control: N/m pressing the plate down, over the substep
+    double top_force = 0;              // force control: N/m pressing the plate down, over the substep
 };
 
 // Exact discrete work of each force on the body (J/m), so that over any run
@@ -67,16 +67,16 @@ struct Works {
 
 // What one substep contributes to the observables (forces on the body, N/m).
 struct SubstepReport {
-    double normal_force = 0;       // -sum lambda_N
-    Tangential friction_force{};   // sum lambda_T, per tangent
+    double normal_force = 0;      // -sum lambda_N
+    Tangential friction_force{};  // sum lambda_T, per tangent
     double corner_lambda_N = 0, corner_lambda_T = 0;
     PerComponent top_reaction{};
     Works work;
-    double max_penetration = 0;    // max(0, -gap) at u^{k+1}
+    double max_penetration = 0;  // max(0, -gap) at u^{k+1}
     int active_nodes = 0, slipping_nodes = 0;
     int contact_iterations = 0;
-    int contact_sweeps = 0;        // Gauss-Seidel fallback sweeps (0: Newton converged)
-    bool contact_solved = false;   // false when no node could touch (solve skipped)
+    int contact_sweeps = 0;       // Gauss-Seidel fallback sweeps (0: Newton converged)
+    bool contact_solved = false;  // false when no node could touch (solve skipped)
 };
 
 // The last substep's contact quantities recomputed from the displacement u^{k+1/2}
@@ -89,7 +89,7 @@ struct ContactSnapshot {
     // Per tangent (empty past the body's tangents): the friction multipliers, and the slip
     // velocity relative to the foundation, (u_T^{k+1} - u_T^k) / dt - V.
     PerTangent<Eigen::VectorXd> lambda_T, slip_velocity;
-    Eigen::VectorXd delassus_diagonal;    // diag(W), (N, T): displacement per unit multiplier
+    Eigen::VectorXd delassus_diagonal;                    // diag(W), (N, T): displacement per unit multiplier
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // 0 open, 1 stick, 2 slip
 };
 
@@ -106,9 +106,8 @@ struct SubstepTimings {
 // slip origins, the slip-rate law's slip time and, without a Stribeck velocity, the stick
 // memory's coefficients. Returns whether any node can touch.
 template <class GapOld>
-bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, bool implicit,
-                            double dt, const SubstepLoad& load, const Eigen::VectorXd& sticking,
-                            GapOld&& gap_old) {
+bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, bool implicit, double dt,
+                            const SubstepLoad& load, const Eigen::VectorXd& sticking, GapOld&& gap_old) {
     const int nc = static_cast<int>(problem.gap_limit.size());
     const bool friction = problem.has_friction();
     bool touching = false;
@@ -141,9 +140,9 @@ bool set_contact_conditions(ContactProblem& problem, const SceneParameters& p, b
 // (uN_old = u_N^k, duN and dux its normal and tangential increments over the substep);
 // updates its stick memory. `status` is the solver's only when `touching` (else it holds none:
 // pass open). Returns the node's state (0 open, 1 stick, 2 slip).
-int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old,
-                     double duN, double dux, double foundation_step, double initial_gap,
-                     bool friction, bool touching, NodeStatus status);
+int add_node_contact(SubstepReport& report, double& sticking, double lN, double lT, double uN_old, double duN,
+                     double dux, double foundation_step, double initial_gap, bool friction, bool touching,
+                     NodeStatus status);
 
 // After a substep, what both steppers report of the edge: the snapshot's multipliers, slip
 // velocities and node states, and each node's share of the report (add_node_contact, and the
@@ -154,9 +153,9 @@ int add_node_contact(SubstepReport& report, double& sticking, double lN, double 
 template <class NormalOld, class NormalStep, class TangentialStep>
 void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::VectorXd& sticking,
                     const Eigen::VectorXd& lambda, double dt, const Tangential& foundation_velocity,
-                    int tangents, double initial_gap, const std::vector<double>& heights,
-                    bool touching, const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status,
-                    NormalOld&& uN_old, NormalStep&& duN, TangentialStep&& duT) {
+                    int tangents, double initial_gap, const std::vector<double>& heights, bool touching,
+                    const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status, NormalOld&& uN_old,
+                    NormalStep&& duN, TangentialStep&& duT) {
     const Eigen::Index nc = sticking.size();
     const bool friction = lambda.size() > nc;
     snapshot.state.resize(nc);
@@ -164,8 +163,10 @@ void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::Vec
     for (int t = 0; t < tangents; ++t) {
         Eigen::VectorXd& lT = snapshot.lambda_T[static_cast<size_t>(t)];
         lT.resize(nc);
-        if (friction) lT = lambda.segment((1 + t) * nc, nc);
-        else lT.setZero();
+        if (friction)
+            lT = lambda.segment((1 + t) * nc, nc);
+        else
+            lT.setZero();
         snapshot.slip_velocity[static_cast<size_t>(t)].resize(nc);
     }
     // The normal and the first tangent node by node, then each further tangent's friction.
@@ -177,10 +178,10 @@ void record_contact(SubstepReport& report, ContactSnapshot& snapshot, Eigen::Vec
             const double d = duT(i, t);
             slip_velocity[i] = (d - foundation_step) / dt;
             if (t == 0) {
-                snapshot.state[i] = static_cast<signed char>(add_node_contact(
-                    report, sticking[i], snapshot.lambda_N[i], lT[i], uN_old(i), duN(i), d,
-                    foundation_step, initial_gap + heights[static_cast<size_t>(i)], friction, touching,
-                    touching ? status[i] : NodeStatus::open));
+                snapshot.state[i] = static_cast<signed char>(
+                    add_node_contact(report, sticking[i], snapshot.lambda_N[i], lT[i], uN_old(i), duN(i), d,
+                                     foundation_step, initial_gap + heights[static_cast<size_t>(i)], friction,
+                                     touching, touching ? status[i] : NodeStatus::open));
             } else {
                 report.friction_force[static_cast<size_t>(t)] += lT[i];
                 report.work.friction += lT[i] * d;
@@ -314,8 +315,8 @@ private:
     static constexpr size_t spare_capacity = 8;
     void keep_spare(std::unique_ptr<Factor> f);
     std::unique_ptr<Factor> make_factor(double dt);
-    void start_run();  // the state of a new stepper, but for the discretization and factors
-    int factor_ids_ = 0;  // factors built or taken from spare_: problem_factor_ names one
+    void start_run();         // the state of a new stepper, but for the discretization and factors
+    int factor_ids_ = 0;      // factors built or taken from spare_: problem_factor_ names one
     int problem_factor_ = 0;  // id of the factor problem_.W was built from
     // The factor the last substep used: another one (new, switched to after a change of the
     // substep size, or after a restart) starts at the state's own held set.

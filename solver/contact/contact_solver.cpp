@@ -52,8 +52,7 @@ double ContactProblem::coefficient(Eigen::Index i, double slip, double* derivati
 // Alart-Curnier residual phi(lambda), zero exactly at a solution; piecewise linear in lambda,
 // so a semi-smooth Newton step lands on the solution once the node states are right.
 // The augmentation parameters r = 1 / diag(W) make phi a force in every row.
-double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
-                               Eigen::VectorXd& phi) {
+double ContactSolver::residual(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
     // W lambda: a substep's first residual is at the last solve's multipliers (the warm
     // start), whose product the last residual formed; it is kept, not formed again.
@@ -99,7 +98,8 @@ double ContactSolver::apply_law(const ContactProblem& p, const Eigen::VectorXd& 
             double dF = 0;
             const double F = p.coefficient(i, size, &dF);
             law_dF_[i] = size > 0 ? dF : 0.0;  // |s| has no derivative at 0
-            for (int t = 0; t < tangents; ++t) law_slip_direction_[t * n + i] = size > 0 ? slip[t] / size : 0.0;
+            for (int t = 0; t < tangents; ++t)
+                law_slip_direction_[t * n + i] = size > 0 ? slip[t] / size : 0.0;
             return F;
         },
         [&](Eigen::Index i, const NodeLaw& law) {
@@ -135,8 +135,7 @@ void ContactSolver::factor(const ContactProblem& p, const ContactSolverOptions& 
         const bool slipping = friction && col < n && pattern_[col] != 1;
         const double sf = slipping ? slip_sign(p, col) : 0;
         for (Eigen::Index a = 0; a < k; ++a)
-            reduced_matrix_(a, b) = p.W(reduced_[a], col) -
-                                    (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
+            reduced_matrix_(a, b) = p.W(reduced_[a], col) - (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
     }
     if (k > 0) {
         pivots_.resize(static_cast<size_t>(m));
@@ -149,7 +148,7 @@ void ContactSolver::factor(const ContactProblem& p, const ContactSolverOptions& 
             throw ContactSolveError("contact solver: singular Newton matrix");
         }
     }
-    ++base_;  // an update of the last factorization no longer applies
+    ++base_;                 // an update of the last factorization no longer applies
     lu_pattern_ = pattern_;  // what the LU is of
     lu_friction_ = p.friction;
     lu_revision_ = p.revision;
@@ -191,7 +190,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
             // = -lambda_T - sf lambda_N (phi_T = lambda_T - sf trial, phi_N = -lambda_N - trial):
             // exactly zero after a projected step (options.project_slip).
             explicit_[n + i] = projects_slip_ ? -lambda[n + i] - slip_sign(p, i) * lambda[i]
-                                                    : -phi_[n + i] + slip_sign(p, i) * phi_[i];
+                                              : -phi_[n + i] + slip_sign(p, i) * phi_[i];
         }
     }
     if (!reuse) factor(p, options);
@@ -216,8 +215,8 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
         if (k > 0) {
             auto x = reduced_rhs_.head(k);
             for (Eigen::Index a = 0; a < k; ++a) std::swap(x[a], x[pivots_[static_cast<size_t>(a)]]);
-            const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(
-                reduced_matrix_.data(), k, k, Eigen::OuterStride<>(m));
+            const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k, k,
+                                                                                Eigen::OuterStride<>(m));
             lu.triangularView<Eigen::UnitLower>().solveInPlace(x);
             lu.triangularView<Eigen::Upper>().solveInPlace(x);
             for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
@@ -225,8 +224,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
     }
     if (friction)
         for (Eigen::Index i = 0; i < n; ++i)
-            if (pattern_[i] == 2 || pattern_[i] == -2)
-                step_[n + i] -= slip_sign(p, i) * step_[i];
+            if (pattern_[i] == 2 || pattern_[i] == -2) step_[n + i] -= slip_sign(p, i) * step_[i];
 }
 
 namespace {
@@ -240,9 +238,8 @@ bool in_system(const Pattern& P, Eigen::Index n, Eigen::Index j) {
 // The Newton matrix of pattern P as an m x m matrix: the reduced system's entries on its
 // unknowns, W's diagonal on the others (their steps are explicit; W's scale, so that the
 // update below does not mix entries of W with ones).
-double ContactSolver::newton_entry(const ContactProblem& p,
-                                   const Pattern& P,
-                                   Eigen::Index a, Eigen::Index b) const {
+double ContactSolver::newton_entry(const ContactProblem& p, const Pattern& P, Eigen::Index a,
+                                   Eigen::Index b) const {
     const Eigen::Index n = p.gap_limit.size();
     if (!in_system(P, n, b)) return a == b ? diagonal_[b] : 0.0;
     if (!in_system(P, n, a)) return 0.0;
@@ -263,8 +260,8 @@ void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::Matrix
     auto g = gathered_.topLeftCorner(k, x.cols());
     for (Eigen::Index a = 0; a < k; ++a) g.row(a) = x.row(reduced_[static_cast<size_t>(a)]);
     for (Eigen::Index a = 0; a < k; ++a) g.row(a).swap(g.row(pivots_[static_cast<size_t>(a)]));
-    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k,
-                                                                        k, Eigen::OuterStride<>(m));
+    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k, k,
+                                                                        Eigen::OuterStride<>(m));
     if (x.cols() == 1) {  // the vector kernels: the blocked ones cost 3x on one column
         auto v = gathered_.col(0).head(k);
         lu.triangularView<Eigen::UnitLower>().solveInPlace(v);
@@ -320,8 +317,9 @@ bool ContactSolver::prepare_update(const ContactProblem& p) {
     for (Eigen::Index i = 0; i < c; ++i) cap.row(c + i) = z.row(changed_[static_cast<size_t>(i)]);
     cap.diagonal().array() += 1;
     int transpositions = 0;
-    const Eigen::Index zero_pivot = Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
-        r, r, capacitance_.data(), capacitance_.rows(), capacitance_pivots_.data(), transpositions);
+    const Eigen::Index zero_pivot =
+        Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
+            r, r, capacitance_.data(), capacitance_.rows(), capacitance_pivots_.data(), transpositions);
     if (zero_pivot >= 0) return false;
     update_base_ = base_;
     update_pattern_ = pattern_;
@@ -400,8 +398,7 @@ void ContactSolver::full_newton_direction(const ContactProblem& p) {
     step_ = full_lu_.solve(reduced_rhs_);
 }
 
-ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
-                                      const ContactSolverOptions& options,
+ContactSolveInfo ContactSolver::solve(const ContactProblem& p, const ContactSolverOptions& options,
                                       Eigen::VectorXd& lambda) {
     const Eigen::Index m = p.W.rows();
     if (lambda.size() != m) lambda.setZero(m);
@@ -423,13 +420,14 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
                 info.iterations = options.max_iterations;
                 if (gauss_seidel_disc(p, options, lambda, info, p.rate.tangential_inertia)) return info;
                 Text msg;
-                msg << e.what() << "; node by node from the same start: relative residual "
-                    << info.residual << " after " << info.sweeps << " sweeps";
+                msg << e.what() << "; node by node from the same start: relative residual " << info.residual
+                    << " after " << info.sweeps << " sweeps";
                 throw ContactSolveError(msg.str());
             }
         }
     } else if (p.tangents != 1) {
-        throw std::logic_error("ContactSolver: this build has no isotropic friction (CONTACTBODY_SOLID_BODIES=0)");
+        throw std::logic_error(
+            "ContactSolver: this build has no isotropic friction (CONTACTBODY_SOLID_BODIES=0)");
     }
     projects_slip_ = options.project_slip && p.has_friction() && !p.rate_dependent();
     compact_products_ = projects_slip_ && p.revision != 0;
@@ -446,8 +444,8 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
         if (gauss_seidel(p, options, lambda, info, rate)) return info;
         if (!rate) {
             Text msg;
-            msg << e.what() << "; Gauss-Seidel from the same start: relative residual "
-                << info.residual << " after " << info.sweeps << " sweeps";
+            msg << e.what() << "; Gauss-Seidel from the same start: relative residual " << info.residual
+                << " after " << info.sweeps << " sweeps";
             throw ContactSolveError(msg.str());
         }
     }
@@ -462,8 +460,7 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p,
     } catch (const ContactSolveError& e) {
         Text msg;
         msg << e.what() << " (after Newton stagnated and Gauss-Seidel from the same start "
-            << "reached a relative residual " << info.residual << " in " << info.sweeps
-            << " sweeps)";
+            << "reached a relative residual " << info.residual << " in " << info.sweeps << " sweeps)";
         throw ContactSolveError(msg.str());
     }
 }
@@ -476,8 +473,8 @@ struct Local {
     double lN = 0, lT = 0;
 };
 
-Local solve_node(double qN, double qT, double aNN, double aNT, double aTT, double gap,
-                 double origin, double F, bool friction) {
+Local solve_node(double qN, double qT, double aNN, double aNT, double aTT, double gap, double origin,
+                 double F, bool friction) {
     Local l;
     if (qN <= gap) return l;  // open
     if (!friction) {
@@ -512,8 +509,8 @@ Local solve_node(double qN, double qT, double aNN, double aNT, double aTT, doubl
 //   lN(sigma) = (gap - qN) / (aNN + s F(sigma) aNT),
 // continuous, with s r(0) > 0 where the node cannot stick, and s r -> -inf as |sigma| grows
 // (F bounded, or growing with the viscous term): a root is bracketed and bisected.
-Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double qT, double aNN,
-                      double aNT, double aTT, double current_slip) {
+Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double qT, double aNN, double aNT,
+                      double aTT, double current_slip) {
     const double gap = p.gap_limit[i], origin = p.slip_origin[i];
     if (qN <= gap) return {};
     const double bN = gap - qN, bT = origin - qT;
@@ -532,8 +529,7 @@ Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double
     };
     // The direction the node slips in now first (continuity), else the one the sticking
     // solution's excess points to: lT = s F lN with lN < 0.
-    const double first = current_slip != 0 ? (current_slip > 0 ? 1.0 : -1.0)
-                                           : (stick.lT > 0 ? -1.0 : 1.0);
+    const double first = current_slip != 0 ? (current_slip > 0 ? 1.0 : -1.0) : (stick.lT > 0 ? -1.0 : 1.0);
     for (const double s : {first, -first}) {
         double r0, lN;
         if (!signed_residual(s, 0.0, r0, lN) || !(r0 > 0)) continue;
@@ -576,8 +572,10 @@ Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double
             const double mid = 0.5 * (lo + hi);
             double r_mid;
             if (!signed_residual(s, mid, r_mid, lN)) break;
-            if ((r_mid > 0) == (r_lo > 0)) lo = mid, r_lo = r_mid;
-            else hi = mid, r_hi = r_mid;
+            if ((r_mid > 0) == (r_lo > 0))
+                lo = mid, r_lo = r_mid;
+            else
+                hi = mid, r_hi = r_mid;
         }
         const double root = std::abs(r_lo) < std::abs(r_hi) ? lo : hi;
         double r_root;
@@ -594,8 +592,7 @@ Local solve_rate_node(const ContactProblem& p, Eigen::Index i, double qN, double
 }  // namespace
 
 bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
-                                 Eigen::VectorXd& lambda, ContactSolveInfo& info,
-                                 bool exact_rate) {
+                                 Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate) {
     const Eigen::Index n = p.gap_limit.size();
     const bool friction = p.has_friction();
     const auto sweep = [&] {
@@ -609,7 +606,10 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
                 friction && p.rate_dependent() && exact_rate
                     ? solve_rate_node(p, i, qN, qT, p.W(i, i), aNT, aTT, u_hat_[t] - p.slip_origin[i])
                     : solve_node(qN, qT, p.W(i, i), aNT, aTT, p.gap_limit[i],
-                                 friction ? p.slip_origin[i] : 0.0, !friction ? 0.0 : p.rate_dependent() ? p.coefficient(i, u_hat_[t] - p.slip_origin[i]) : p.friction[i],
+                                 friction ? p.slip_origin[i] : 0.0,
+                                 !friction            ? 0.0
+                                 : p.rate_dependent() ? p.coefficient(i, u_hat_[t] - p.slip_origin[i])
+                                                      : p.friction[i],
                                  friction);
             if (l.lN != lN) {
                 u_hat_.noalias() += (l.lN - lN) * p.W.col(i);
@@ -625,8 +625,7 @@ bool ContactSolver::gauss_seidel(const ContactProblem& p, const ContactSolverOpt
     return sweep_until(options, info, sweep, [&] { return residual(p, lambda, phi_); });
 }
 
-ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
-                                       const ContactSolverOptions& options,
+ContactSolveInfo ContactSolver::newton(const ContactProblem& p, const ContactSolverOptions& options,
                                        Eigen::VectorXd& lambda, bool stop_on_stagnation) {
     ContactSolveInfo info;
     info.residual = residual(p, lambda, phi_);
@@ -661,15 +660,14 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
         if (stop_on_stagnation && info.iterations - best_iteration >= stagnation) {
             Text msg;
             msg << "contact solver stagnated: " << stagnation << " Newton iterations did not "
-                << "halve the relative residual " << best << " (tolerance " << options.tolerance
-                << ")";
+                << "halve the relative residual " << best << " (tolerance " << options.tolerance << ")";
             throw ContactSolveError(msg.str());
         }
         if (info.iterations >= options.max_iterations) {
             Text msg;
             msg << "contact solver did not converge in " << options.max_iterations
-                << " iterations (relative residual " << info.residual << ", tolerance "
-                << options.tolerance << ")";
+                << " iterations (relative residual " << info.residual << ", tolerance " << options.tolerance
+                << ")";
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
@@ -687,7 +685,10 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             lu_revision_ = 0;  // the buffer now holds another matrix
             full_newton_direction(p);
         } else {
-            newton_direction(p, options, same ? Direction::reuse : update ? Direction::update : Direction::factor,
+            newton_direction(p, options,
+                             same     ? Direction::reuse
+                             : update ? Direction::update
+                                      : Direction::factor,
                              lambda);
         }
         if (update) ++updates_;
@@ -705,8 +706,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p,
             trial_ = lambda + alpha * step_;
             if (projects_slip_ && alpha == 1) project_slip(p, trial_);
             res = residual(p, trial_, trial_phi_);
-            decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit ||
-                        res <= options.tolerance;
+            decreased = trial_phi_.squaredNorm() <= (1 - 1e-4 * alpha) * merit || res <= options.tolerance;
         }
         // An updated direction that needed a shorter step may have lost accuracy to a badly
         // conditioned update: the next iteration refactors.

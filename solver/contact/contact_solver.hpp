@@ -29,11 +29,11 @@ struct ContactProblem {
     // isotropic friction |lambda_T| <= F lambda_N). With friction the unknowns are
     // (N[0..n), T_x[0..n), T_z[0..n)); slip_origin holds the x origins, then the z ones.
     int tangents = 1;
-    Eigen::MatrixXd W;           // (1 + tangents) n square (or n x n without friction)
-    Eigen::VectorXd a;           // u_hat at lambda = 0
-    Eigen::VectorXd gap_limit;   // n: u_N must not exceed it
-    Eigen::VectorXd slip_origin; // tangents n: slip is u_T - slip_origin (unused without friction)
-    Eigen::VectorXd friction;    // n: F_i, the node's friction coefficient (with friction)
+    Eigen::MatrixXd W;            // (1 + tangents) n square (or n x n without friction)
+    Eigen::VectorXd a;            // u_hat at lambda = 0
+    Eigen::VectorXd gap_limit;    // n: u_N must not exceed it
+    Eigen::VectorXd slip_origin;  // tangents n: slip is u_T - slip_origin (unused without friction)
+    Eigen::VectorXd friction;     // n: F_i, the node's friction coefficient (with friction)
     // The slip-rate dependence of F_i (off while stribeck_velocity and viscous are 0).
     struct RateLaw {
         double excess = 0;             // F_s - F_d, the Stribeck drop
@@ -75,7 +75,7 @@ struct ContactProblem {
 struct ContactSolverOptions {
     double tolerance = 1e-10;  // on the Alart-Curnier residual, relative to max |lambda|
     int max_iterations = 100;
-    int max_sweeps = 1000;     // of the Gauss-Seidel fallback (which also stops on stagnation)
+    int max_sweeps = 1000;  // of the Gauss-Seidel fallback (which also stops on stagnation)
     // When a few nodes change state, solve the new Newton matrix by a low-rank update of the
     // last factorization (Woodbury) instead of refactoring it: fewer operations, other last
     // bits. The reduced body takes it; the full body keeps its bits (its substep's cost is
@@ -133,7 +133,7 @@ public:
 
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
-                           Eigen::VectorXd& lambda, bool stop_on_stagnation);
+                            Eigen::VectorXd& lambda, bool stop_on_stagnation);
     // Isotropic friction (tangents == 2; contact_solver_disc.cpp): semi-smooth Newton on the
     // full generalized Jacobian; where it fails, node by node (gauss_seidel_disc).
     ContactSolveInfo solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
@@ -150,8 +150,8 @@ private:
     Eigen::VectorXd law_F_, law_trial_, law_direction_, law_ratio_, law_dF_, law_slip_direction_;
     // Node-by-node exact solves with the other nodes fixed; true when the residual reaches
     // the tolerance within options.max_sweeps.
-    bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options,
-                      Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
+    bool gauss_seidel(const ContactProblem& p, const ContactSolverOptions& options, Eigen::VectorXd& lambda,
+                      ContactSolveInfo& info, bool exact_rate);
     bool gauss_seidel_disc(const ContactProblem& p, const ContactSolverOptions& options,
                            Eigen::VectorXd& lambda, ContactSolveInfo& info, bool exact_rate);
     // The residual, then sweep() and the residual again until it reaches the tolerance; false
@@ -174,8 +174,7 @@ private:
         }
         return true;
     }
-    double residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
-                    Eigen::VectorXd& phi);
+    double residual(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
     enum class Direction { reuse, update, factor };  // the last factorization, updated, or anew
     void factor(const ContactProblem& p, const ContactSolverOptions& options);  // of pattern_
     void newton_direction(const ContactProblem& p, const ContactSolverOptions& options, Direction how,
@@ -185,8 +184,7 @@ private:
         const double w = diagonal_[j];
         return j < p.gap_limit.size() ? phi_[j] * w : -phi_[j] * w;
     }
-    double newton_entry(const ContactProblem& p, const Pattern& P,
-                        Eigen::Index a, Eigen::Index b) const;
+    double newton_entry(const ContactProblem& p, const Pattern& P, Eigen::Index a, Eigen::Index b) const;
     void base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x);
     bool prepare_update(const ContactProblem& p);
     void updated_solve(const ContactProblem& p);
@@ -213,14 +211,14 @@ private:
     bool projects_slip_ = false, compact_products_ = false;
     SlidingProduct sliding_;
     std::uint64_t compact_revision_ = 0;
-    std::vector<int> reduced_;  // unknowns of the reduced Newton system
+    std::vector<int> reduced_;        // unknowns of the reduced Newton system
     Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
     std::vector<int> pivots_;
     Eigen::PartialPivLU<Eigen::MatrixXd> full_lu_;  // of the full Jacobian (slip-rate law)
     Eigen::VectorXd reduced_rhs_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
     Pattern pattern_, lu_pattern_;  // of the last residual, and of the LU
-    Eigen::VectorXd lu_friction_;  // and the coefficients of the slipping nodes
+    Eigen::VectorXd lu_friction_;   // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
     // The update (prepare_update): the changed unknowns C, the rows D(C, :), Z = J0^-1 U and
     // the capacitance matrix's LU, for the pattern and factorization (base_) they were built at.

@@ -75,8 +75,9 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             J(a, col) -= kappa * projector;
         }
         if (p.rate_dependent() && law_dF_[i] != 0)
-            J.row(a) -= law_trial_[i] * t[q] * law_dF_[i] *
-                        (law_slip_direction_[i] * p.W.row(n + i) + law_slip_direction_[n + i] * p.W.row(2 * n + i));
+            J.row(a) -=
+                law_trial_[i] * t[q] * law_dF_[i] *
+                (law_slip_direction_[i] * p.W.row(n + i) + law_slip_direction_[n + i] * p.W.row(2 * n + i));
         J(a, row) += 1;
     }
     Eigen::VectorXd rhs(k);
@@ -108,15 +109,16 @@ ContactSolveInfo ContactSolver::solve_disc(const ContactProblem& p, const Contac
         if (info.iterations >= options.max_iterations) {
             Text msg;
             msg << "contact solver did not converge in " << options.max_iterations
-                << " iterations (isotropic friction; relative residual " << info.residual
-                << ", tolerance " << options.tolerance << ")";
+                << " iterations (isotropic friction; relative residual " << info.residual << ", tolerance "
+                << options.tolerance << ")";
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
         ++newton_iterations_;
         ++factorizations_;
         disc_newton_direction(p, lambda);
-        if (!step_.allFinite()) throw ContactSolveError("contact solver: singular Newton matrix (isotropic friction)");
+        if (!step_.allFinite())
+            throw ContactSolveError("contact solver: singular Newton matrix (isotropic friction)");
         // Backtracking on |phi|^2, the full step where none decreases it (as in 2D).
         const double merit = phi_.squaredNorm();
         double alpha = 1;
@@ -145,7 +147,8 @@ bool solve_disc_node(const double q[3], const Eigen::Matrix3d& A, double gap, co
                      Coefficient&& coefficient, double l[3]) {
     l[0] = l[1] = l[2] = 0;
     if (q[0] <= gap) return true;  // open
-    const Eigen::Vector3d stick = A.partialPivLu().solve(Eigen::Vector3d(gap - q[0], origin[0] - q[1], origin[1] - q[2]));
+    const Eigen::Vector3d stick =
+        A.partialPivLu().solve(Eigen::Vector3d(gap - q[0], origin[0] - q[1], origin[1] - q[2]));
     const double F0 = coefficient(0.0);
     if (stick[0] <= 0 && std::sqrt(stick[1] * stick[1] + stick[2] * stick[2]) <= -F0 * stick[0]) {
         for (int c = 0; c < 3; ++c) l[c] = stick[c];

@@ -6,8 +6,7 @@
 
 namespace contactbody {
 
-ElementaryExample::ElementaryExample(double a, double b, double c, double friction,
-                                     double u_tau_old)
+ElementaryExample::ElementaryExample(double a, double b, double c, double friction, double u_tau_old)
     : a_(a), b_(b), c_(c), friction_(friction), u_tau_old_(u_tau_old) {
     if (!(a * c - b * b > 0) || !(b > 0) || !(friction >= 0))
         throw std::invalid_argument("elementary example: needs a c > b^2, b > 0 and F >= 0");
@@ -16,9 +15,8 @@ ElementaryExample::ElementaryExample(double a, double b, double c, double fricti
     inverse_ = K.inverse();
 }
 
-ElementaryExample ElementaryExample::from_material(double lame, double mu, double dt, double m1,
-                                                   double m2, double friction,
-                                                   double u_tau_old) {
+ElementaryExample ElementaryExample::from_material(double lame, double mu, double dt, double m1, double m2,
+                                                   double friction, double u_tau_old) {
     const double stiff = (lame + 3 * mu) / 2, k = 4 / (dt * dt);
     return {k * m1 + stiff, (lame + mu) / 2, k * m2 + stiff, friction, u_tau_old};
 }
@@ -36,18 +34,22 @@ ContactProblem ElementaryExample::problem(const Eigen::Vector2d& f) const {
 
 bool ElementaryExample::in_sigma(int i, const Eigen::Vector2d& f, double m) const {
     const double fn = f[0], ft = f[1], F = friction_, b = b_, c = c_, ut = u_tau_old_;
-    const double s = c * fn + b * ft;                  // sign of -lambda_nu in S_3, S_4
-    const double upper = (c + b * F) * ut + F * fn;    // stick-slip up boundary
-    const double lower = (c - b * F) * ut - F * fn;    // stick-slip down boundary
+    const double s = c * fn + b * ft;                // sign of -lambda_nu in S_3, S_4
+    const double upper = (c + b * F) * ut + F * fn;  // stick-slip up boundary
+    const double lower = (c - b * F) * ut - F * fn;  // stick-slip down boundary
     switch (i) {
-        case 1: return s <= -m;
-        case 2: return fn >= -b * ut + m && lower + m <= ft && ft <= upper - m;
-        case 3: return s >= m && ft >= upper + m;
+        case 1:
+            return s <= -m;
+        case 2:
+            return fn >= -b * ut + m && lower + m <= ft && ft <= upper - m;
+        case 3:
+            return s >= m && ft >= upper + m;
         case 4:
             if (F * b < c) return fn >= -b * ut + m && s >= m && ft <= lower - m;
             if (F * b > c) return fn >= -b * ut + m && s <= -m && ft >= lower + m;
             return false;  // F = c/b: sigma_5 instead
-        default: throw std::invalid_argument("elementary example: region is 1..4");
+        default:
+            throw std::invalid_argument("elementary example: region is 1..4");
     }
 }
 
@@ -59,13 +61,17 @@ ElementaryState ElementaryExample::closed_form(int i, const Eigen::Vector2d& f) 
     const double fn = f[0], ft = f[1], F = friction_, a = a_, b = b_, c = c_, ut = u_tau_old_;
     const double s = c * fn + b * ft;
     switch (i) {
-        case 1: return {s / (a * c - b * b), (a * ft + b * fn) / (a * c - b * b), 0, 0};
-        case 2: return {0, ut, -(fn + b * ut), c * ut - ft};
-        case 3: return {0, (ft - F * fn) / (c + b * F), -s / (c + b * F), -F * s / (c + b * F)};
+        case 1:
+            return {s / (a * c - b * b), (a * ft + b * fn) / (a * c - b * b), 0, 0};
+        case 2:
+            return {0, ut, -(fn + b * ut), c * ut - ft};
+        case 3:
+            return {0, (ft - F * fn) / (c + b * F), -s / (c + b * F), -F * s / (c + b * F)};
         case 4:
             if (F * b == c) throw std::invalid_argument("elementary example: S_4 needs F != c/b");
             return {0, (ft + F * fn) / (c - b * F), -s / (c - b * F), F * s / (c - b * F)};
-        default: throw std::invalid_argument("elementary example: region is 1..4");
+        default:
+            throw std::invalid_argument("elementary example: region is 1..4");
     }
 }
 
@@ -73,16 +79,15 @@ namespace {
 double scale_of(const Eigen::Vector2d& f) { return 1 + f.lpNorm<Eigen::Infinity>(); }
 
 // Appends x unless an equal solution is already listed (on a shared boundary S_i = S_j).
-void add_distinct(std::vector<ElementarySolution>& list, int region, const ElementaryState& x,
-                  double tol) {
+void add_distinct(std::vector<ElementarySolution>& list, int region, const ElementaryState& x, double tol) {
     for (const ElementarySolution& s : list)
         if ((s.x - x).lpNorm<Eigen::Infinity>() <= tol) return;
     list.push_back({region, x});
 }
 }  // namespace
 
-std::vector<ElementarySolution> ElementaryExample::closed_form_solutions(
-    const Eigen::Vector2d& f, double margin) const {
+std::vector<ElementarySolution> ElementaryExample::closed_form_solutions(const Eigen::Vector2d& f,
+                                                                         double margin) const {
     std::vector<ElementarySolution> out;
     const double tol = 1e-9 * scale_of(f);
     for (int i = 1; i <= 4; ++i)
@@ -92,8 +97,7 @@ std::vector<ElementarySolution> ElementaryExample::closed_form_solutions(
 
 double ElementaryExample::violation(const Eigen::Vector2d& f, const ElementaryState& x) const {
     const double un = x[0], ut = x[1], ln = x[2], lt = x[3], F = coefficient(ut - u_tau_old_);
-    double v = std::max(std::abs(a_ * un - b_ * ut - f[0] - ln),
-                        std::abs(-b_ * un + c_ * ut - f[1] - lt));
+    double v = std::max(std::abs(a_ * un - b_ * ut - f[0] - ln), std::abs(-b_ * un + c_ * ut - f[1] - lt));
     v = std::max({v, std::max(un, 0.0), std::max(ln, 0.0), std::abs(un * ln)});
     v = std::max(v, std::max(std::abs(lt) + F * ln, 0.0));  // |lambda_tau| <= -F lambda_nu
     const double slip = ut - u_tau_old_;
@@ -154,13 +158,15 @@ std::vector<ElementarySolution> ElementaryExample::rate_solutions(const Eigen::V
                 double lo = w0, hi = w1, glo = g0;
                 for (int it = 0; it < 200 && lo != hi; ++it) {
                     const double mid = 0.5 * (lo + hi), gm = G(mid);
-                    if ((gm < 0) == (glo < 0)) lo = mid, glo = gm;
-                    else hi = mid;
+                    if ((gm < 0) == (glo < 0))
+                        lo = mid, glo = gm;
+                    else
+                        hi = mid;
                     if (std::nextafter(lo, hi) == hi) break;
                 }
                 const double w = 0.5 * (lo + hi), N = b * (ut + w) + fn;
-                add_distinct(out, s > 0 ? 3 : 4,
-                             ElementaryState(0, ut + w, -N, -s * coefficient(w) * N), tol);
+                add_distinct(out, s > 0 ? 3 : 4, ElementaryState(0, ut + w, -N, -s * coefficient(w) * N),
+                             tol);
             }
             w0 = w1;
             g0 = g1;

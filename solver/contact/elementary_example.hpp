@@ -27,8 +27,8 @@ class ElementaryExample {
 public:
     ElementaryExample(double a, double b, double c, double friction, double u_tau_old);
     // From the Lame coefficients, the step and the redistributed masses m1 (normal), m2.
-    static ElementaryExample from_material(double lame, double mu, double dt, double m1,
-                                           double m2, double friction, double u_tau_old);
+    static ElementaryExample from_material(double lame, double mu, double dt, double m1, double m2,
+                                           double friction, double u_tau_old);
 
     double a() const { return a_; }
     double b() const { return b_; }
@@ -62,8 +62,7 @@ public:
     ElementaryState closed_form(int i, const Eigen::Vector2d& f) const;
     // All S_i(f) with f in sigma_i, equal ones merged: the solution set of (23) when F != c/b.
     // A negative margin also admits sets that f misses by rounding only (on a boundary).
-    std::vector<ElementarySolution> closed_form_solutions(const Eigen::Vector2d& f,
-                                                          double margin = 0) const;
+    std::vector<ElementarySolution> closed_form_solutions(const Eigen::Vector2d& f, double margin = 0) const;
 
     // How far x is from solving (23): the largest equation residual or inclusion violation.
     double violation(const Eigen::Vector2d& f, const ElementaryState& x) const;

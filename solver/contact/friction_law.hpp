@@ -96,11 +96,12 @@ double apply_node_law(const ContactProblem& p, const Eigen::VectorXd& lambda, Di
         }
         for (int t = 0; t < tangents; ++t) origin[t] = p.slip_origin[t * n + i];
         const double rT = tangents > 0 ? augmentation(1, i) : 0.0;
-        const NodeLaw law = node_law(tangents, l, x, augmentation(0, i), rT, p.gap_limit[i], origin, [&](double) {
-            double slip[max_tangents] = {0, 0};
-            for (int t = 0; t < tangents; ++t) slip[t] = x[1 + t] - origin[t];
-            return coefficient(i, static_cast<const double*>(slip));
-        });
+        const NodeLaw law =
+            node_law(tangents, l, x, augmentation(0, i), rT, p.gap_limit[i], origin, [&](double) {
+                double slip[max_tangents] = {0, 0};
+                for (int t = 0; t < tangents; ++t) slip[t] = x[1 + t] - origin[t];
+                return coefficient(i, static_cast<const double*>(slip));
+            });
         for (int c = 0; c <= tangents; ++c) phi[c * n + i] = law.phi[c];
         record(i, law);
     }

@@ -3,8 +3,7 @@
 namespace contactbody {
 
 bool SlidingProduct::apply(const Eigen::MatrixXd& M, const Eigen::VectorXd& F,
-                           const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                           Eigen::Ref<Eigen::VectorXd> y) {
+                           const Eigen::Ref<const Eigen::VectorXd>& lambda, Eigen::Ref<Eigen::VectorXd> y) {
     const Eigen::Index n = F.size();
     if (s_.size() != n) {  // sized when M changes only: the time loop allocates nothing
         compact_ = M.leftCols(n);
@@ -21,8 +20,10 @@ bool SlidingProduct::apply(const Eigen::MatrixXd& M, const Eigen::VectorXd& F,
     for (Eigen::Index i = 0; i < n; ++i) {
         if (next_s_[i] == s_[i]) continue;
         s_[i] = next_s_[i];
-        if (s_[i] == 0) compact_.col(i) = M.col(i);
-        else compact_.col(i).noalias() = M.col(i) - s_[i] * M.col(n + i);
+        if (s_[i] == 0)
+            compact_.col(i) = M.col(i);
+        else
+            compact_.col(i).noalias() = M.col(i) - s_[i] * M.col(n + i);
     }
     y.noalias() = compact_ * lambda.head(n);
     for (Eigen::Index i = 0; i < n; ++i) {

@@ -29,9 +29,8 @@ double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
 }
 }  // namespace
 
-double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem& p,
-                                     const Eigen::VectorXd& w, const Eigen::VectorXd& lambda,
-                                     Eigen::VectorXd& phi) {
+double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& w,
+                                     const Eigen::VectorXd& lambda, Eigen::VectorXd& phi) {
     const Eigen::Index n = p.gap_limit.size();
     const int tangents = p.has_friction() ? p.tangents : 0;
     trial_pattern_.resize(n);
@@ -40,7 +39,9 @@ double SparseContactSolver::residual(const HeldOperator& K, const ContactProblem
     trial_ratio_.resize(n);
     return apply_node_law(
         p, lambda, [&](int c, Eigen::Index i) { return c == 0 ? -w[K.dof(i)] : w[K.dof(c * n + i)]; },
-        [&](int c, Eigen::Index i) { return c == 0 ? K.stiffness(i) : tangential_stiffness(K, n, i, tangents); },
+        [&](int c, Eigen::Index i) {
+            return c == 0 ? K.stiffness(i) : tangential_stiffness(K, n, i, tangents);
+        },
         [&](Eigen::Index i, const double*) { return p.friction[i]; },
         [&](Eigen::Index i, const NodeLaw& law) {
             trial_status_[i] = law.status;
@@ -72,7 +73,8 @@ void SparseContactSolver::held_set(bool friction, bool slips) {
         held_[static_cast<size_t>(i)] = pattern_[i] != 0;
         for (Eigen::Index c = 1; c <= tangents; ++c)
             held_[static_cast<size_t>(c * n + i)] = friction && pattern_[i] == 1;
-        if (slips && friction && (pattern_[i] == 2 || pattern_[i] == -2)) slip_[static_cast<size_t>(i)] = pattern_[i] > 0 ? 1 : -1;
+        if (slips && friction && (pattern_[i] == 2 || pattern_[i] == -2))
+            slip_[static_cast<size_t>(i)] = pattern_[i] > 0 ? 1 : -1;
     }
 }
 
@@ -88,14 +90,18 @@ double factor_slip(const HeldOperator& K, Eigen::Index j, Eigen::Index n) {
 void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs, bool affine,
                                      const Eigen::Ref<const Eigen::VectorXd>& xi, Eigen::VectorXd& x) {
     const Eigen::Index m = K.unknowns();
-    if (affine) b_ = rhs;
-    else b_.setZero();
+    if (affine)
+        b_ = rhs;
+    else
+        b_.setZero();
     for (Eigen::Index j = 0; j < m; ++j) values_[j] = affine ? targets_[j] : 0.0;
     for (size_t k = 0; k < coupling_.size(); ++k) {
         const Coupling& c = coupling_[k];
         const double v = xi[static_cast<Eigen::Index>(k)];
-        if (c.kind == load) b_[K.dof(c.unknown)] += v;
-        else values_[c.unknown] = v / K.stiffness(c.unknown);
+        if (c.kind == load)
+            b_[K.dof(c.unknown)] += v;
+        else
+            values_[c.unknown] = v / K.stiffness(c.unknown);
     }
     K.impose(b_, values_);
     K.solve(b_, x);
@@ -103,8 +109,8 @@ void SparseContactSolver::held_solve(HeldOperator& K, const Eigen::VectorXd& rhs
 }
 
 void SparseContactSolver::responses(const HeldOperator& K, const ContactProblem& p,
-                                    const Eigen::VectorXd& rhs, const Eigen::VectorXd& x,
-                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> out) const {
+                                    const Eigen::VectorXd& rhs, const Eigen::VectorXd& x, bool homogeneous,
+                                    Eigen::Ref<Eigen::VectorXd> out) const {
     const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
     const auto reaction = [&](Eigen::Index j) {
         return K.row_product(j, x) - (homogeneous ? 0.0 : rhs[K.dof(j)]);
@@ -118,8 +124,8 @@ void SparseContactSolver::responses(const HeldOperator& K, const ContactProblem&
 }
 
 void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem& p,
-                                    const Eigen::Ref<const Eigen::VectorXd>& response,
-                                    bool homogeneous, Eigen::Ref<Eigen::VectorXd> e) const {
+                                    const Eigen::Ref<const Eigen::VectorXd>& response, bool homogeneous,
+                                    Eigen::Ref<Eigen::VectorXd> e) const {
     const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
     const auto reaction = [&](Eigen::Index k) { return response[k]; };
     const auto value = [&](Eigen::Index k) { return response[q + k]; };
@@ -149,9 +155,8 @@ void SparseContactSolver::equations(const HeldOperator& K, const ContactProblem&
 }
 
 // The step of pattern_ from the multipliers in lambda_trial_ (the iterate): w_new_, lambda_new_.
-void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p,
-                                        const Eigen::VectorXd& rhs, double scale,
-                                        double tolerance) {
+void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                                        double scale, double tolerance) {
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     int differing = 0;
@@ -161,7 +166,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
         for (Eigen::Index c = 1; c < m / n; ++c)
             targets_[c * n + i] = friction ? p.slip_origin[(c - 1) * n + i] : 0.0;
     }
-    for (Eigen::Index j = 0; j < m; ++j) differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
+    for (Eigen::Index j = 0; j < m; ++j)
+        differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
     for (size_t i = 0; i < slip_.size(); ++i) differing += slip_[i] != K.slip()[i];
     // A pattern that differs from the factor's held set in more than max_differing dofs is
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
@@ -177,13 +183,15 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // A factor that can hold the pattern's slips (one tangent) is refactored where more dofs
     // differ than its refactorization costs in solves (docs/decisions.md, "A 2D body's factor
     // holds its slipping nodes").
-    const int most = K.slip_coefficient() > 0 ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
-                                              : max_differing;
+    const int most = K.slip_coefficient() > 0
+                         ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
+                         : max_differing;
     const bool renting = differing > most && costly && detour_solves_ < refactorization;
     if (differing > most && !renting) K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);
     const long before = solves_;
-    if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions, detour)) {
+    if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions,
+                       detour)) {
         K.hold(held_, slip_);
         solve_coupled(K, p, rhs, scale, tolerance, max_directions, false);
     } else if (renting) {
@@ -322,14 +330,15 @@ void SparseContactSolver::unpark() {
         }
         move_direction(slot, kept_++);
         const int first = max_directions - parked_--;  // the parked slots stay together
-        if (slot != first) move_direction(first, slot);
-        else ++slot;
+        if (slot != first)
+            move_direction(first, slot);
+        else
+            ++slot;
     }
 }
 
-bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p,
-                                        const Eigen::VectorXd& rhs, double scale,
-                                        double tolerance, int max_iterations, bool detour) {
+bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
+                                        double scale, double tolerance, int max_iterations, bool detour) {
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     // A Newton iteration after the first on the factor of the last (the same right-hand side
@@ -337,7 +346,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
     // coupled, held to their values or unloaded where the pattern no longer couples them, and
     // GCR moves them there, most often in the kept directions, instead of a held solve of
     // the new guesses (one held solve fewer for each Newton iteration after the first).
-    const bool warm = newton_iteration_ > 1 && last_operator_ == &K && last_refactorizations_ == K.refactorizations();
+    const bool warm =
+        newton_iteration_ > 1 && last_operator_ == &K && last_refactorizations_ == K.refactorizations();
     // The unknowns: what the pattern asks that the factor's held set does not give.
     coupling_.clear();
     for (Eigen::Index j = 0; j < m; ++j) {
@@ -346,19 +356,24 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const bool slips = j >= n && friction && (pattern_[i] == 2 || pattern_[i] == -2);
         // A slipping node's friction, F p along its slip direction: +-F in 2D, F t in 3D (t
         // the last residual's, held through the pattern's solve).
-        const double sf = !slips ? 0.0
+        const double sf = !slips         ? 0.0
                           : isotropic(p) ? p.friction[i] * direction_[(j / n - 1) * n + i]
-                                            : slip_sign(p, i, pattern_[i]);
+                                         : slip_sign(p, i, pattern_[i]);
         // A slipping row that the factor has (a 2D body's) is in K's solve already, unless
         // its coefficient differs (the static one, or another node state).
-        if (wants && !has) coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
-        else if (!wants && has) coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
-        else if (!wants && sf != factor_slip(K, j, n)) coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
-        else if (warm && !std::isnan(last_xi_[j]))  // coupled at the last iteration: held to its value, or unloaded
+        if (wants && !has)
+            coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
+        else if (!wants && has)
+            coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
+        else if (!wants && sf != factor_slip(K, j, n))
+            coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
+        else if (warm &&
+                 !std::isnan(last_xi_[j]))  // coupled at the last iteration: held to its value, or unloaded
             coupling_.push_back({static_cast<int>(j), has ? value : load, has ? 0.0 : sf, has, -1});
     }
     for (Eigen::Index j = 0; j < m; ++j) coupling_of_[static_cast<size_t>(j)] = -1;
-    for (size_t k = 0; k < coupling_.size(); ++k) coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
+    for (size_t k = 0; k < coupling_.size(); ++k)
+        coupling_of_[static_cast<size_t>(coupling_[k].unknown)] = static_cast<int>(k);
     if (isotropic(p)) {  // a slipping node's x and z equations take both
         for (Coupling& c : coupling_) {
             const Eigen::Index i = c.unknown % n;
@@ -374,10 +389,14 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const Coupling& c = coupling_[static_cast<size_t>(k)];
         const Eigen::Index i = c.unknown % n;
         double guess = 0;  // the reaction wanted, less what the factor's slipping row gives
-        if (warm) guess = std::isnan(last_xi_[c.unknown]) ? (c.kind == value ? targets_[c.unknown] * K.stiffness(c.unknown) : 0.0)
-                                                          : last_xi_[c.unknown];
-        else if (c.kind == load && c.held) guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
-        else if (c.kind == load) guess = c.sf * -lambda_trial_[i];
+        if (warm)
+            guess = std::isnan(last_xi_[c.unknown])
+                        ? (c.kind == value ? targets_[c.unknown] * K.stiffness(c.unknown) : 0.0)
+                        : last_xi_[c.unknown];
+        else if (c.kind == load && c.held)
+            guess = c.unknown < n ? -lambda_trial_[i] : lambda_trial_[c.unknown];
+        else if (c.kind == load)
+            guess = c.sf * -lambda_trial_[i];
         if (c.kind == load && !warm) guess -= factor_slip(K, c.unknown, n) * -lambda_trial_[i];
         xi_[k] = guess;
         if (c.kind == load) force_scale = std::max(force_scale, std::abs(guess));
@@ -411,14 +430,16 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         // The same pattern couples the same unknowns, but where a warm start kept some: both.
         bool same_coupling = kept_pattern_.size() == pattern_.size() && kept_pattern_ == pattern_ &&
                              kept_unknowns_.size() == coupling_.size();
-        for (size_t k = 0; k < coupling_.size() && same_coupling; ++k) same_coupling = kept_unknowns_[k] == coupling_[k].unknown;
+        for (size_t k = 0; k < coupling_.size() && same_coupling; ++k)
+            same_coupling = kept_unknowns_[k] == coupling_[k].unknown;
         if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) {
             kept_ = parked_ = 0;
             kept_operator_ = &K;
             kept_refactorizations_ = K.refactorizations();
-        } else if (!same_coupling || kept_friction_.size() != p.friction.size() || kept_friction_ != p.friction ||
-                   kept_direction_.size() != direction_.size() || kept_direction_ != direction_ ||
-                   kept_ratio_.size() != ratio_.size() || kept_ratio_ != ratio_) {
+        } else if (!same_coupling || kept_friction_.size() != p.friction.size() ||
+                   kept_friction_ != p.friction || kept_direction_.size() != direction_.size() ||
+                   kept_direction_ != direction_ || kept_ratio_.size() != ratio_.size() ||
+                   kept_ratio_ != ratio_) {
             // The unknowns follow the pattern and, where the factor holds slipping rows, the
             // friction too (a node slipping with the static coefficient is coupled, with the
             // kinetic one not): entries at unknowns no longer coupled go first.
@@ -456,13 +477,13 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                         return false;
                     }
                     Text msg;
-                    msg << "sparse contact solve: GCR on " << q << " coupled unknowns did not reach "
-                        << goal << " N/m in " << max_iterations << " held solves ("
-                        << r.lpNorm<Eigen::Infinity>() << " N/m left)";
+                    msg << "sparse contact solve: GCR on " << q << " coupled unknowns did not reach " << goal
+                        << " N/m in " << max_iterations << " held solves (" << r.lpNorm<Eigen::Infinity>()
+                        << " N/m left)";
                     throw ContactSolveError(msg.str());
                 }
                 if (kept_ + parked_ == max_directions && parked_ > 0) {
-                    parked_ = 0;  // the parked ones go first
+                    parked_ = 0;                       // the parked ones go first
                 } else if (kept_ == max_directions) {  // the older half goes (the rest orthonormalized again)
                     add_directions(q, true);
                     remake_images(K, p, max_directions / 2);
@@ -475,14 +496,16 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                 solutions_.col(slot) = z_;
                 solution_size_[slot] = z_.lpNorm<Eigen::Infinity>();
                 directions_.col(slot).setZero();
-                for (Eigen::Index k = 0; k < q; ++k) directions_(coupling_[static_cast<size_t>(k)].unknown, slot) = v[k];
+                for (Eigen::Index k = 0; k < q; ++k)
+                    directions_(coupling_[static_cast<size_t>(k)].unknown, slot) = v[k];
                 for (Eigen::Index j = 0; j < m; ++j) {  // its responses at every contact unknown
                     responses_(j, slot) = K.row_product(j, z_);
                     responses_(m + j, slot) = z_[K.dof(j)];
                 }
                 coupled_responses(slot, n, response_.head(3 * q));
                 equations(K, p, response_.head(3 * q), true, c);
-                if (!orthonormalize(slot, q, 0)) throw ContactSolveError("sparse contact solve: GCR broke down");
+                if (!orthonormalize(slot, q, 0))
+                    throw ContactSolveError("sparse contact solve: GCR broke down");
                 const double alpha = c.dot(r);
                 r -= alpha * c;
                 coefficients_[slot] = 0;
@@ -496,7 +519,8 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
             // held solve (2 n_f flops per kept direction against 4 per factor nonzero), and
             // solved again where it costs more or may have lost digits that a solve keeps (its
             // terms much larger than it).
-            add_directions(q, static_cast<double>(kept_) * static_cast<double>(K.size()) <= 2 * K.factor_nonzeros());
+            add_directions(
+                q, static_cast<double>(kept_) * static_cast<double>(K.size()) <= 2 * K.factor_nonzeros());
             if (!changed) break;
             if (combined_ > max_cancellation * w_new_.lpNorm<Eigen::Infinity>()) {
                 held_solve(K, rhs, true, xi_, w_new_);
@@ -520,16 +544,15 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
 }
 
 ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProblem& p,
-                                            const ContactSolverOptions& options,
-                                            const Eigen::VectorXd& rhs,
-                                            const Eigen::VectorXd& sticking,
-                                            Eigen::VectorXd& lambda, Eigen::VectorXd& w,
-                                            bool fresh_factor) {
+                                            const ContactSolverOptions& options, const Eigen::VectorXd& rhs,
+                                            const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
+                                            Eigen::VectorXd& w, bool fresh_factor) {
     const Eigen::Index n = p.gap_limit.size(), nf = K.size();
     const bool friction = p.has_friction();
     const Eigen::Index m = friction ? (1 + p.tangents) * n : n;
     if (friction && K.unknowns() != m)
-        throw std::logic_error("SparseContactSolver: the held operator's contact unknowns do not fit the friction's");
+        throw std::logic_error(
+            "SparseContactSolver: the held operator's contact unknowns do not fit the friction's");
     if (lambda.size() != m) lambda.setZero(m);
     // Workspace: sized once (resizing to the same size does not allocate).
     const Eigen::Index m2 = K.unknowns();
@@ -566,9 +589,12 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     ratio_.setZero(p.tangents == 2 ? n : 0);  // the first step: t held (no iterate's z yet)
     newton_shift_.setZero(p.tangents == 2 ? 2 * n : 0);
     for (Eigen::Index i = 0; i < n; ++i) {
-        if (!(lambda[i] < 0)) pattern_[i] = 0;
-        else if (!friction || sticking[i] != 0) pattern_[i] = 1;
-        else pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
+        if (!(lambda[i] < 0))
+            pattern_[i] = 0;
+        else if (!friction || sticking[i] != 0)
+            pattern_[i] = 1;
+        else
+            pattern_[i] = lambda[n + i] >= 0 ? 2 : -2;
         if (isotropic(p) && pattern_[i] != 0) {  // along its last friction
             const double tx = lambda[n + i], tz = lambda[2 * n + i], size = std::sqrt(tx * tx + tz * tz);
             pattern_[i] = sticking[i] != 0 || !(size > 0) ? 1 : 2;
@@ -582,7 +608,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     if (!fresh_factor && history_ == 3 && last_patterns_[0].size() == n) {
         for (Eigen::Index i = 0; i < n; ++i) {
             const signed char back = last_patterns_[1][i];
-            if (last_patterns_[0][i] != back && back != last_patterns_[2][i] && pattern_[i] == last_patterns_[0][i] &&
+            if (last_patterns_[0][i] != back && back != last_patterns_[2][i] &&
+                pattern_[i] == last_patterns_[0][i] &&
                 !(isotropic(p) && back == 2 && direction_[i] == 0 && direction_[n + i] == 0))
                 pattern_[i] = back;
         }
@@ -603,8 +630,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         if (info.iterations >= options.max_iterations) {
             Text msg;
             msg << "sparse contact solve did not converge in " << options.max_iterations
-                << " iterations (relative residual " << info.residual << ", tolerance "
-                << options.tolerance << ")";
+                << " iterations (relative residual " << info.residual << ", tolerance " << options.tolerance
+                << ")";
             throw ContactSolveError(msg.str());
         }
         newton_iteration_ = ++info.iterations;

@@ -49,8 +49,8 @@ public:
     // B: N_i = -e_y(i), T_i = +e_x(i) (the full stepper's).
     ContactSolveInfo solve(HeldOperator& K, const ContactProblem& problem,
                            const ContactSolverOptions& options, const Eigen::VectorXd& rhs,
-                           const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda,
-                           Eigen::VectorXd& w, bool fresh_factor);
+                           const Eigen::VectorXd& sticking, Eigen::VectorXd& lambda, Eigen::VectorXd& w,
+                           bool fresh_factor);
     // Drops what the solver keeps from solve to solve (GCR's directions, the last patterns:
     // they make a solve faster, and change its last bits).
     void forget() {
@@ -63,7 +63,7 @@ public:
     bool touching() const { return (pattern_.array() != 0).any(); }
     long solves() const { return solves_; }  // held solves over the solver's life
     long krylov_iterations() const { return krylov_iterations_; }
-    long gcr_rounds() const { return rounds_; }  // GCR's rounds after the first (solve_coupled)
+    long gcr_rounds() const { return rounds_; }        // GCR's rounds after the first (solve_coupled)
     long warm_starts() const { return warm_starts_; }  // Newton iterations without a held solve of their own
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
@@ -81,24 +81,24 @@ private:
     // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction; and
     // slip_ (where the factor may hold slips): slipping nodes' signs.
     void held_set(bool friction, bool slips);
-    void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
-                       double scale, double tolerance);
+    void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs, double scale,
+                       double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took
     // more than max_iterations held solves on a detour (a factor of another held set); on
     // the pattern's own factor that throws ContactSolveError.
-    bool solve_coupled(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs,
-                       double scale, double tolerance, int max_iterations, bool detour);
+    bool solve_coupled(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs, double scale,
+                       double tolerance, int max_iterations, bool detour);
     double residual(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& w,
                     const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
     void reactions(const HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs);
     // The system's unknowns (Coupling) and what a held solve with them gives.
     enum Kind : int { load, value };
     struct Coupling {
-        int unknown;   // contact unknown j (N: node i, T: n + i)
-        Kind kind;     // a load (the factor's dof free) or a held value (held in the factor)
-        double sf;     // +-F where the equation is a slip law's, else 0
-        bool held;     // the pattern holds the dof (else it is loaded)
-        int partner;   // a 3D slipping node's other tangential unknown's coupling, else -1
+        int unknown;  // contact unknown j (N: node i, T: n + i)
+        Kind kind;    // a load (the factor's dof free) or a held value (held in the factor)
+        double sf;    // +-F where the equation is a slip law's, else 0
+        bool held;    // the pattern holds the dof (else it is loaded)
+        int partner;  // a 3D slipping node's other tangential unknown's coupling, else -1
     };
     // The right-hand side and held values of unknowns xi on top of base (the affine part's),
     // solved into x.
@@ -151,7 +151,7 @@ private:
     double combined_ = 0;
     Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
-    int kept_ = 0, parked_ = 0;  // parked_: eliminate_uncoupled's, in the last slots
+    int kept_ = 0, parked_ = 0;     // parked_: eliminate_uncoupled's, in the last slots
     Pattern kept_pattern_;
     std::vector<int> kept_unknowns_;  // the coupled unknowns the images are of
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;

@@ -85,11 +85,14 @@ double HeldOperator::refactorization_in_solves() const {
 }
 
 void HeldOperator::hold(const std::vector<char>& held, const std::vector<signed char>& slip) {
-    const bool slips = slip_coefficient() > 0 && std::any_of(slip.begin(), slip.end(), [](signed char s) { return s != 0; });
+    const bool slips =
+        slip_coefficient() > 0 && std::any_of(slip.begin(), slip.end(), [](signed char s) { return s != 0; });
     if (held == held_ && (slips ? slip == slip_ : !lu_held_)) return;
     held_ = held;
-    if (slips) slip_ = slip;
-    else std::fill(slip_.begin(), slip_.end(), 0);
+    if (slips)
+        slip_ = slip;
+    else
+        std::fill(slip_.begin(), slip_.end(), 0);
     for (size_t j = 0; j < held.size(); ++j) held_dof_[static_cast<size_t>(dofs_[j])] = held[j];
     factor_held();
 }
@@ -100,7 +103,8 @@ void HeldOperator::factor_held() {
     if (lu_held_) {
         if (!lu_) {
             std::vector<int> position(static_cast<size_t>(size()));
-            for (Eigen::Index u = 0; u < size(); ++u) position[static_cast<size_t>(u)] = factor_->position(static_cast<int>(u));
+            for (Eigen::Index u = 0; u < size(); ++u)
+                position[static_cast<size_t>(u)] = factor_->position(static_cast<int>(u));
             lu_ = std::make_unique<PatternLu>(K_, position);
         }
         const double* k = K_.valuePtr();
@@ -116,7 +120,8 @@ void HeldOperator::factor_held() {
         for (size_t j = 0; j < held_.size(); ++j) {
             if (!held_[j]) continue;
             const int c = dofs_[j];
-            std::fill(lu_values_.begin() + K_.outerIndexPtr()[c], lu_values_.begin() + K_.outerIndexPtr()[c + 1], 0.0);
+            std::fill(lu_values_.begin() + K_.outerIndexPtr()[c],
+                      lu_values_.begin() + K_.outerIndexPtr()[c + 1], 0.0);
             for (int p : row_positions_[j]) lu_values_[static_cast<size_t>(p)] = 0;
             lu_values_[static_cast<size_t>(full_diagonal_[j])] = 1;
         }
@@ -150,7 +155,8 @@ void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) con
             } else if (lu_held_) {  // a held y row's share in its node's slipping row
                 const int u = unknown_of_[r];
                 if (u >= 0 && static_cast<size_t>(u) < n && slip_[static_cast<size_t>(u)])
-                    b[dofs_[n + static_cast<size_t>(u)]] += slip_[static_cast<size_t>(u)] * slip_coefficient_ * it.value() * v;
+                    b[dofs_[n + static_cast<size_t>(u)]] +=
+                        slip_[static_cast<size_t>(u)] * slip_coefficient_ * it.value() * v;
             }
         }
     }
@@ -159,8 +165,10 @@ void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) con
 }
 
 void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-    if (lu_held_) lu_->solve(b, x);
-    else factor_->solve(b, x);
+    if (lu_held_)
+        lu_->solve(b, x);
+    else
+        factor_->solve(b, x);
 }
 
 }  // namespace contactbody

@@ -31,9 +31,7 @@ public:
     // K's diagonal at contact unknown j: 1 / K_jj <= W_jj, the augmentation parameter's scale.
     double stiffness(Eigen::Index j) const { return stiffness_[j]; }
     // (K x) at contact unknown j's dof.
-    double row_product(Eigen::Index j, const Eigen::VectorXd& x) const {
-        return rows_.row(j).dot(x);
-    }
+    double row_product(Eigen::Index j, const Eigen::VectorXd& x) const { return rows_.row(j).dot(x); }
     // Holds the unknowns j with held[j] != 0 (refactoring where the set changed), and of a 2D
     // body (2 n unknowns) loads each node i with slip[i] != 0 along x by sf = slip[i] times
     // the slip coefficient times its held y dof's reaction (the pressure's sign: r_x = sf r_y,
@@ -64,9 +62,9 @@ public:
     TrailingCholesky& factor() { return *factor_; }
 
 private:
-    SparseMatrix K_;                 // both triangles: the held columns' entries
+    SparseMatrix K_;                   // both triangles: the held columns' entries
     SparseMatrix lower_, held_lower_;  // lower triangle, and as factored (same pattern)
-    RowMajorSparseMatrix rows_;      // K's rows at the contact unknowns
+    RowMajorSparseMatrix rows_;        // K's rows at the contact unknowns
     std::vector<int> dofs_;
     Eigen::VectorXd stiffness_;
     // Per contact unknown: the positions in lower_'s values of its row and column, and of its

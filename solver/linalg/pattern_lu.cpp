@@ -16,7 +16,8 @@ PatternLu::PatternLu(const SparseMatrix& pattern, const std::vector<int>& positi
     const int* outer = pattern.outerIndexPtr();
     const int* inner = pattern.innerIndexPtr();
     column_start_.assign(n + 1, 0);
-    for (size_t c = 0; c < n; ++c) column_start_[static_cast<size_t>(position[c]) + 1] = outer[c + 1] - outer[c];
+    for (size_t c = 0; c < n; ++c)
+        column_start_[static_cast<size_t>(position[c]) + 1] = outer[c + 1] - outer[c];
     for (size_t j = 0; j < n; ++j) column_start_[j + 1] += column_start_[j];
     column_rows_.resize(static_cast<size_t>(pattern.nonZeros()));
     value_of_.resize(column_rows_.size());
@@ -46,7 +47,8 @@ PatternLu::PatternLu(const SparseMatrix& pattern, const std::vector<int>& positi
         mark[j] = static_cast<int>(j);
         const size_t first = row_pattern.size();
         for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
-            for (int k = column_rows_[static_cast<size_t>(p)]; k >= 0 && k < static_cast<int>(j) && mark[static_cast<size_t>(k)] != static_cast<int>(j);
+            for (int k = column_rows_[static_cast<size_t>(p)];
+                 k >= 0 && k < static_cast<int>(j) && mark[static_cast<size_t>(k)] != static_cast<int>(j);
                  k = parent[static_cast<size_t>(k)]) {
                 mark[static_cast<size_t>(k)] = static_cast<int>(j);
                 row_pattern.push_back(k);
@@ -71,13 +73,15 @@ PatternLu::PatternLu(const SparseMatrix& pattern, const std::vector<int>& positi
     }
     column_of_.resize(rows_.size());
     for (size_t k = 0; k < n; ++k)
-        for (int p = start_[k]; p < start_[k + 1]; ++p) column_of_[static_cast<size_t>(p)] = static_cast<int>(k);
+        for (int p = start_[k]; p < start_[k + 1]; ++p)
+            column_of_[static_cast<size_t>(p)] = static_cast<int>(k);
     // Groups of up to four columns of a chain (column k's pattern k + 1 and then column
     // k + 1's), from the first; group_[k]: the size of the group that starts at k, or ends
     // there (solve: forward from a group's first column, backward from its last).
     group_.assign(n, 1);
     const auto chained = [&](size_t k) {
-        return k + 1 < n && start_[k + 1] > start_[k] && rows_[static_cast<size_t>(start_[k])] == static_cast<int>(k + 1) &&
+        return k + 1 < n && start_[k + 1] > start_[k] &&
+               rows_[static_cast<size_t>(start_[k])] == static_cast<int>(k + 1) &&
                start_[k + 1] - start_[k] == start_[k + 2] - start_[k + 1] + 1;
     };
     for (size_t k = 0; k < n;) {
@@ -214,18 +218,32 @@ void PatternLu::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     for (Eigen::Index k = 0; k < n_; ++k) y[k] = b[order[k]];
     for (Eigen::Index k = 0; k < n_; k += group[k]) {  // L (unit diagonal)
         switch (group[k]) {
-            case 4: forward_group<4>(start, rows, lower, y, k); break;
-            case 3: forward_group<3>(start, rows, lower, y, k); break;
-            case 2: forward_group<2>(start, rows, lower, y, k); break;
-            default: forward_group<1>(start, rows, lower, y, k);
+            case 4:
+                forward_group<4>(start, rows, lower, y, k);
+                break;
+            case 3:
+                forward_group<3>(start, rows, lower, y, k);
+                break;
+            case 2:
+                forward_group<2>(start, rows, lower, y, k);
+                break;
+            default:
+                forward_group<1>(start, rows, lower, y, k);
         }
     }
     for (Eigen::Index k = n_ - 1; k >= 0; k -= group[k]) {  // U
         switch (group[k]) {
-            case 4: backward_group<4>(start, rows, upper, diagonal, y, k); break;
-            case 3: backward_group<3>(start, rows, upper, diagonal, y, k); break;
-            case 2: backward_group<2>(start, rows, upper, diagonal, y, k); break;
-            default: backward_group<1>(start, rows, upper, diagonal, y, k);
+            case 4:
+                backward_group<4>(start, rows, upper, diagonal, y, k);
+                break;
+            case 3:
+                backward_group<3>(start, rows, upper, diagonal, y, k);
+                break;
+            case 2:
+                backward_group<2>(start, rows, upper, diagonal, y, k);
+                break;
+            default:
+                backward_group<1>(start, rows, upper, diagonal, y, k);
         }
     }
     x.resize(n_);

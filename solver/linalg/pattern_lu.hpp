@@ -32,13 +32,13 @@ public:
 
 private:
     Eigen::Index n_ = 0;
-    std::vector<int> order_;       // factor position -> unknown
+    std::vector<int> order_;                                  // factor position -> unknown
     std::vector<int> column_start_, column_rows_, value_of_;  // P A P^T's columns, from A's values
     // The strictly lower part's pattern, by columns (rows ascending): L(i, k) and U(k, i) at the
     // same place. across_: per row j, the places of its entries L(j, k), k < j ascending.
     std::vector<int> start_, rows_, column_of_, across_start_, across_;
-    std::vector<char> group_;   // the size of the solve's group of columns that starts or ends here
-    std::vector<int> parent_;   // the elimination tree (-1 at a root)
+    std::vector<char> group_;       // the size of the solve's group of columns that starts or ends here
+    std::vector<int> parent_;       // the elimination tree (-1 at a root)
     std::vector<double> factored_;  // the values last factored, by P A P^T's columns
     std::vector<char> stale_;       // per column: to factor again
     bool factored_all_ = false;     // the last factor succeeded: factored_ is its values

@@ -24,7 +24,8 @@ struct TrailingCholesky::Lu {
     Eigen::VectorXd rhs;
 
     // entries: triu(P K P^T), each value the position of K's lower-triangle value it is.
-    void build(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index n, const double* lower_values) {
+    void build(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index n,
+               const double* lower_values) {
         // Both triangles in natural order, each value mapped to K's lower one.
         std::vector<Eigen::Triplet<double>> both;
         both.reserve(2 * entries.size());
@@ -50,7 +51,8 @@ struct TrailingCholesky::Lu {
         for (size_t k = 0; k < value_map.size(); ++k) full.valuePtr()[k] = lower_values[value_map[k]];
         lu.factorize(full);
         if (lu.info() != Eigen::Success)
-            throw std::runtime_error("the held stiffness is singular (supernodal LU: " + lu.lastErrorMessage() + ")");
+            throw std::runtime_error(
+                "the held stiffness is singular (supernodal LU: " + lu.lastErrorMessage() + ")");
     }
 };
 #else
@@ -58,7 +60,9 @@ struct TrailingCholesky::Lu {
 // reports through an ostringstream, which would link the C++ library's locale machinery.
 struct TrailingCholesky::Lu {
     Eigen::VectorXd rhs;
-    [[noreturn]] static void missing() { throw std::logic_error("this build has no supernodal LU (CONTACTBODY_SOLID_BODIES=0)"); }
+    [[noreturn]] static void missing() {
+        throw std::logic_error("this build has no supernodal LU (CONTACTBODY_SOLID_BODIES=0)");
+    }
     void build(const std::vector<Eigen::Triplet<double>>&, Eigen::Index, const double*) { missing(); }
     void factorize(const double*) { missing(); }
     double nonzeros() const { return 0; }
@@ -124,8 +128,8 @@ cholmod_factor* analyze_given(cholmod_sparse& a, std::vector<int>& perm, cholmod
 
 }  // namespace
 
-TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing,
-                                   bool refactorable, Kernel kernel)
+TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable,
+                                   Kernel kernel)
     : c_(std::make_unique<Cholmod>()), n_(K.rows()), m_(static_cast<Eigen::Index>(trailing.size())) {
     cholmod_common& c = c_->common;
     // Simplicial L L^T: with one right-hand side its solves are faster than the supernodal
@@ -302,18 +306,19 @@ Eigen::Map<Eigen::VectorXd> TrailingCholesky::forward(const Eigen::VectorXd& b) 
     double* permuted = static_cast<double*>(c.permuted->x);
     for (Eigen::Index k = 0; k < n_; ++k) permuted[k] = b[perm_[static_cast<size_t>(k)]];
     c.reshape_workspace();
-    if (!cholmod_solve2(CHOLMOD_L, c.factor, c.permuted, nullptr, &c.y, nullptr, &c.work_y,
-                        &c.work_e, &c.common))
-        throw std::runtime_error("CHOLMOD forward solve failed (status " + std::to_string(c.common.status) + ")");
+    if (!cholmod_solve2(CHOLMOD_L, c.factor, c.permuted, nullptr, &c.y, nullptr, &c.work_y, &c.work_e,
+                        &c.common))
+        throw std::runtime_error("CHOLMOD forward solve failed (status " + std::to_string(c.common.status) +
+                                 ")");
     return Eigen::Map<Eigen::VectorXd>(static_cast<double*>(c.y->x), n_);
 }
 
 void TrailingCholesky::backward(Eigen::VectorXd& x) {
     Cholmod& c = *c_;
     c.reshape_workspace();
-    if (!cholmod_solve2(CHOLMOD_Lt, c.factor, c.y, nullptr, &c.x, nullptr, &c.work_y, &c.work_e,
-                        &c.common))
-        throw std::runtime_error("CHOLMOD backward solve failed (status " + std::to_string(c.common.status) + ")");
+    if (!cholmod_solve2(CHOLMOD_Lt, c.factor, c.y, nullptr, &c.x, nullptr, &c.work_y, &c.work_e, &c.common))
+        throw std::runtime_error("CHOLMOD backward solve failed (status " + std::to_string(c.common.status) +
+                                 ")");
     const double* result = static_cast<const double*>(c.x->x);
     x.resize(n_);
     for (Eigen::Index k = 0; k < n_; ++k) x[perm_[static_cast<size_t>(k)]] = result[k];

@@ -120,7 +120,8 @@ private:
     // A section's end where a number should be: a block holds fewer entries than its header says.
     void section_end(std::string_view t, const char* what) const {
         if (t.size() > 4 && t.substr(0, 4) == "$End")
-            fail("the section ends (\"" + shown(t) + "\") where " + what + " should be: a block or "
+            fail("the section ends (\"" + shown(t) + "\") where " + what +
+                 " should be: a block or "
                  "the section holds fewer entries than its header declares (a damaged file)");
     }
     void skip_blanks() {
@@ -285,14 +286,14 @@ void add_node(Tokens& in, RawMesh& m, long tag, int line, long max_nodes) {
     node.x = in.real("a node's x");
     node.y = in.real("a node's y");
     node.z = in.real("a node's z");
-    if (!m.nodes.emplace(tag, node).second) in.fail("node " + std::to_string(tag) + " is defined twice", line);
+    if (!m.nodes.emplace(tag, node).second)
+        in.fail("node " + std::to_string(tag) + " is defined twice", line);
     if (static_cast<long>(m.nodes.size()) > max_nodes)
         in.fail("more than " + std::to_string(max_nodes) + " nodes, the most a body may have", line);
 }
 
 void check_node_count(Tokens& in, long n, long max_nodes) {
-    if (n > max_nodes)
-        in.fail(std::to_string(n) + " nodes: a body has at most " + std::to_string(max_nodes));
+    if (n > max_nodes) in.fail(std::to_string(n) + " nodes: a body has at most " + std::to_string(max_nodes));
 }
 
 // MSH 4.1's section headers state the count and the tags' range of what the blocks hold: a
@@ -364,12 +365,15 @@ void read_nodes_22(Tokens& in, RawMesh& m, long max_nodes) {
 void read_element_nodes(Tokens& in, long type, RawElement& e) {
     ElementType t{};
     if (!element_type(type, t))
-        in.fail("element type " + std::to_string(type) + " is not one Gmsh writes: "
-                "ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D)", e.line);
+        in.fail("element type " + std::to_string(type) +
+                    " is not one Gmsh writes: "
+                    "ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D)",
+                e.line);
     if (*t.refused)
         in.fail(std::string("element ") + std::to_string(e.tag) + " is " + t.refused +
                     ": ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D) "
-                    "(Gmsh: Mesh.ElementOrder = 1, no recombination)", e.line);
+                    "(Gmsh: Mesh.ElementOrder = 1, no recombination)",
+                e.line);
     e.dim = type == 15 ? 0 : type == 1 ? 1 : type == 2 ? 2 : 3;
     for (int k = 0; k < t.nodes; ++k) e.nodes.push_back(in.integer("an element's node tag"));
 }
@@ -428,7 +432,8 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     std::string text = read_whole_file(path, max_file_bytes(max_nodes), &nul);
     const uint64_t file_digest = digest(text);
     const bool has_byte_order_mark = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
-    const int nul_line = nul == std::string::npos ? 0 : 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+    const int nul_line =
+        nul == std::string::npos ? 0 : 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
     Tokens in(path, std::move(text));
     if (nul != std::string::npos) {  // a binary file is named as such (below), else the NUL
         Tokens header = in;
@@ -448,16 +453,19 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     }
     if (in.at_end()) in.fail("the file is empty (a Gmsh MSH file starts with $MeshFormat)");
     if (has_byte_order_mark)
-        in.fail("the file starts with a UTF-8 byte-order mark (the bytes EF BB BF, invisible in "
-                "most editors) before $MeshFormat: save it without one");
+        in.fail(
+            "the file starts with a UTF-8 byte-order mark (the bytes EF BB BF, invisible in "
+            "most editors) before $MeshFormat: save it without one");
     in.expect("$MeshFormat");
     const std::string version(in.next("the format's version"));
     const std::string file_type(in.next("the format's file type"));
     if (file_type != "0")
-        in.fail("a binary MSH file (file type " + shown(file_type) + "): save it as ASCII (Gmsh: "
+        in.fail("a binary MSH file (file type " + shown(file_type) +
+                "): save it as ASCII (Gmsh: "
                 "Mesh.Binary = 0, or gmsh -format msh41 without -bin)");
     if (version != "4.1" && version != "2.2")
-        in.fail("MSH version " + shown(version) + " is not read: save it as MSH 4.1 or 2.2, ASCII "
+        in.fail("MSH version " + shown(version) +
+                " is not read: save it as MSH 4.1 or 2.2, ASCII "
                 "(Gmsh: -format msh41 or msh22)");
     in.next("the format's data size");
     in.expect("$EndMeshFormat");
@@ -468,7 +476,8 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
     while (!in.at_end()) {
         const int line = in.line();
         const std::string section(in.next("a section"));
-        if (section.empty() || section[0] != '$') in.fail("expected a section ($Name), found \"" + shown(section) + "\"", line);
+        if (section.empty() || section[0] != '$')
+            in.fail("expected a section ($Name), found \"" + shown(section) + "\"", line);
         if (section == "$PhysicalNames") {
             read_physical_names(in, m);
         } else if (section == "$Entities" && version == "4.1") {
@@ -485,7 +494,8 @@ RawMesh read_raw(const std::string& path, long max_nodes) {
             in.skip_section(section);
         }
     }
-    if (!nodes || !elements) in.fail(std::string("the file has no ") + (nodes ? "$Elements" : "$Nodes") + " section", 0);
+    if (!nodes || !elements)
+        in.fail(std::string("the file has no ") + (nodes ? "$Elements" : "$Nodes") + " section", 0);
     return m;
 }
 
@@ -535,7 +545,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         for (const auto& [name, value] : {std::pair{"x", n.x}, std::pair{"y", n.y}, std::pair{"z", n.z}}) {
             if (!std::isfinite(value))
                 fail("node " + std::to_string(tag) + " has " + name + " = " + format_number(value) +
-                         ": every coordinate must be a finite number", n.line);
+                         ": every coordinate must be a finite number",
+                     n.line);
             if (std::abs(value) > max_coordinate)
                 fail("node " + std::to_string(tag) + " has " + name + " = " + format_number(value) +
                          " m, beyond the 1e6 m a body in metres may reach: a damaged file, or a "
@@ -543,10 +554,12 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
                      n.line);
         }
         if (dim == 2 && n.z != 0)
-            fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) + ", but the file "
+            fail("node " + std::to_string(tag) + " has z = " + format_number(n.z) +
+                     ", but the file "
                      "holds no tetrahedra: a 2D body (triangles) must lie in the x-y plane (z = 0), and "
                      "a 3D body needs its tetrahedra in the file (Gmsh saves only the elements of "
-                     "physical groups once any is defined: give the volume a physical group)", n.line);
+                     "physical groups once any is defined: give the volume a physical group)",
+                 n.line);
     }
     // The groups' tags by name, per dimension.
     std::map<std::string, std::vector<std::pair<int, long>>> groups;
@@ -582,20 +595,27 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
             const auto it = index.find(tag);
             if (it == index.end())
                 fail("element " + std::to_string(e.tag) + " names node " + std::to_string(tag) +
-                         ", which $Nodes does not define", e.line);
+                         ", which $Nodes does not define",
+                     e.line);
             m.cells.push_back(it->second);
             used[static_cast<size_t>(it->second)] = 1;
         }
         cell_lines.push_back(e.line);
         cell_tags.push_back(e.tag);
     }
-    if (m.cells.empty()) fail("the file holds no triangles: ContactBody needs a mesh with first-order triangles (2D) or tetrahedra (3D)", 0);
+    if (m.cells.empty())
+        fail(
+            "the file holds no triangles: ContactBody needs a mesh with first-order triangles (2D) or "
+            "tetrahedra (3D)",
+            0);
     for (size_t n = 0; n < used.size(); ++n)
         if (!used[n]) {
             const RawNode& r = raw.nodes.at(tag_of[n]);
-            fail(where(tag_of[n], r) + " belongs to no " + w.cell + " (Gmsh writes such nodes, "
+            fail(where(tag_of[n], r) + " belongs to no " + w.cell +
+                     " (Gmsh writes such nodes, "
                      "for example the centres of arcs, when Mesh.SaveAll = 1: save without it, "
-                     "or with the physical groups only)", r.line);
+                     "or with the physical groups only)",
+                 r.line);
         }
 
     // Orientation: counter-clockwise triangles, tetrahedra of positive volume, as the assembly
@@ -623,7 +643,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         } else {
             measure = (edges[0][0] * (edges[1][1] * edges[2][2] - edges[1][2] * edges[2][1]) -
                        edges[0][1] * (edges[1][0] * edges[2][2] - edges[1][2] * edges[2][0]) +
-                       edges[0][2] * (edges[1][0] * edges[2][1] - edges[1][1] * edges[2][0])) / 6;
+                       edges[0][2] * (edges[1][0] * edges[2][1] - edges[1][1] * edges[2][0])) /
+                      6;
         }
         // (no std::pow: the FMU's binaries take no math from the host's libm)
         if (!(std::abs(measure) > 1e-10 * (dim == 2 ? scale * scale : scale * scale * scale)))
@@ -639,19 +660,20 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     const char* turn_positive = dim == 2 ? "counter-clockwise" : "of positive volume";
     if (negative == cells) {
         for (size_t t = 0; t < cells; ++t) std::swap(m.cells[t * (dim + 1) + 1], m.cells[t * (dim + 1) + 2]);
-        notes.push_back(dim == 2 ? "mesh " + path + ": every triangle was clockwise (its surface faces -z); "
-                                   "all were turned counter-clockwise"
-                                 : "mesh " + path + ": every tetrahedron had negative volume (a mirrored "
-                                   "mesh); all were turned over");
+        notes.push_back(dim == 2 ? "mesh " + path +
+                                       ": every triangle was clockwise (its surface faces -z); "
+                                       "all were turned counter-clockwise"
+                                 : "mesh " + path +
+                                       ": every tetrahedron had negative volume (a mirrored "
+                                       "mesh); all were turned over");
     } else if (negative > 0) {
         const bool minority_negative = 2 * negative <= cells;
         for (size_t t = 0; t < measures.size(); ++t)
             if ((measures[t] < 0) == minority_negative)
                 fail(std::string(w.cell) + " " + std::to_string(cell_tags[t]) + " is inverted: it is " +
                          (minority_negative ? turn_negative : turn_positive) + " where " +
-                         std::to_string(minority_negative ? cells - negative : negative) +
-                         " others are " + (minority_negative ? turn_positive : turn_negative) +
-                         " (a folded mesh)",
+                         std::to_string(minority_negative ? cells - negative : negative) + " others are " +
+                         (minority_negative ? turn_positive : turn_negative) + " (a folded mesh)",
                      cell_lines[t]);
     }
 
@@ -659,8 +681,10 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     for (const char* name : {"contact", "clamp"})
         if (!groups.count(name))
             fail(std::string("no physical group named \"") + name + "\": the mesh needs one of boundary " +
-                     w.facets + " named \"contact\" (may touch the foundation) and one named \"clamp\" (driven "
-                     "as the top edge)", 0);
+                     w.facets +
+                     " named \"contact\" (may touch the foundation) and one named \"clamp\" (driven "
+                     "as the top edge)",
+                 0);
     std::vector<char> contact(m.points.size(), 0), clamp(m.points.size(), 0);
     std::vector<int> contact_facets;
     size_t contact_elements = 0, clamp_elements = 0;
@@ -675,7 +699,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
             const auto it = index.find(tag);
             if (it == index.end())
                 fail("element " + std::to_string(e.tag) + " of the " + (c ? "contact" : "clamp") +
-                         " group names node " + std::to_string(tag) + ", which no " + w.cell + " has", e.line);
+                         " group names node " + std::to_string(tag) + ", which no " + w.cell + " has",
+                     e.line);
             nodes.push_back(it->second);
         }
         for (int n : nodes) {
@@ -685,7 +710,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         // Both groups are boundary facets (a contact group may add points): a clamp of edges
         // or corners would hold only those nodes, a volume group every node.
         const bool facet = e.dim == dim - 1, point = e.dim == 0;
-        for (const auto& [name, wrong] : {std::pair{"contact", c && !facet && !point}, std::pair{"clamp", k && !facet}})
+        for (const auto& [name, wrong] :
+             {std::pair{"contact", c && !facet && !point}, std::pair{"clamp", k && !facet}})
             if (wrong)
                 fail("the physical group \"" + std::string(name) + "\" holds " + kinds[e.dim] + " " +
                          std::to_string(e.tag) + ": it must be a group of boundary " + w.facet_dimension +
@@ -707,15 +733,18 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
         }
     }
     if (both > 0)
-        notes.push_back("mesh " + path + ": " + std::to_string(both) + " node" + (both > 1 ? "s" : "") +
-                        " of both the contact and the clamp group driven by the clamp (not in the contact set)");
-    if (m.contact_nodes.empty()) fail("every node of the contact group is also the clamp's: no node can touch", 0);
+        notes.push_back(
+            "mesh " + path + ": " + std::to_string(both) + " node" + (both > 1 ? "s" : "") +
+            " of both the contact and the clamp group driven by the clamp (not in the contact set)");
+    if (m.contact_nodes.empty())
+        fail("every node of the contact group is also the clamp's: no node can touch", 0);
 
     // Every part of the body hangs from the clamp.
     std::vector<int> parent(m.points.size());
     std::iota(parent.begin(), parent.end(), 0);
     const auto root = [&](int n) {
-        while (parent[static_cast<size_t>(n)] != n) n = parent[static_cast<size_t>(n)] = parent[static_cast<size_t>(parent[static_cast<size_t>(n)])];
+        while (parent[static_cast<size_t>(n)] != n)
+            n = parent[static_cast<size_t>(n)] = parent[static_cast<size_t>(parent[static_cast<size_t>(n)])];
         return n;
     };
     for (size_t t = 0; t < cells; ++t) {
@@ -727,8 +756,10 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     for (int n = 0; n < m.num_nodes(); ++n)
         if (!held[static_cast<size_t>(root(n))]) {
             const RawNode& r = raw.nodes.at(tag_of[static_cast<size_t>(n)]);
-            fail(where(tag_of[static_cast<size_t>(n)], r) + " is in a part of the body not "
-                     "connected to the clamp (a free part would have no equilibrium)", r.line);
+            fail(where(tag_of[static_cast<size_t>(n)], r) +
+                     " is in a part of the body not "
+                     "connected to the clamp (a free part would have no equilibrium)",
+                 r.line);
         }
 
     finish_mesh(m, contact_facets);
@@ -738,8 +769,8 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     if (!(m.clamp_height() > 1e-6 * size)) {
         Text msg;
         msg << "the clamp group's highest node (y = " << m.clamp_y << " m) is not above the contact "
-            << "group's lowest (y = " << m.contact_y << " m) by more than 1e-6 of the body's size ("
-            << size << " m): the foundation lies below the contact "
+            << "group's lowest (y = " << m.contact_y << " m) by more than 1e-6 of the body's size (" << size
+            << " m): the foundation lies below the contact "
             << "group and the clamp drives the body from above (are \"contact\" and \"clamp\" "
             << "swapped?)";
         fail(msg.str(), 0);
@@ -747,10 +778,16 @@ Mesh read_gmsh_mesh(const std::string& path, long max_nodes, std::vector<std::st
     for (size_t i = 0; i < m.contact_nodes.size(); ++i)
         if (!(m.contact_shares[i] > 0)) {
             const long tag = tag_of[static_cast<size_t>(m.contact_nodes[i])];
-            fail(where(tag, raw.nodes.at(tag)) + " of the contact group carries no " + w.extent + " of "
-                     "the foundation (its contact " + w.facets + " stand perpendicular to it, or it is on none): "
-                     "put it in no contact " + (dim == 2 ? "line" : "surface") + ", or give the contact "
-                     "boundary some extent along the foundation", raw.nodes.at(tag).line);
+            fail(where(tag, raw.nodes.at(tag)) + " of the contact group carries no " + w.extent +
+                     " of "
+                     "the foundation (its contact " +
+                     w.facets +
+                     " stand perpendicular to it, or it is on none): "
+                     "put it in no contact " +
+                     (dim == 2 ? "line" : "surface") +
+                     ", or give the contact "
+                     "boundary some extent along the foundation",
+                 raw.nodes.at(tag).line);
         }
     return m;
 }

@@ -48,9 +48,9 @@ Mesh make_structured_mesh(double width, double height, int nx, int ny) {
 void finish_mesh(Mesh& m, const std::vector<int>& contact_facets) {
     if (m.points.empty() || m.contact_nodes.empty() || m.top_nodes.empty())
         throw std::invalid_argument("a mesh needs points, contact nodes and clamp nodes");
-    const auto range = [&](double Point::*c, double& low, double& high) {
-        const auto [lo, hi] = std::minmax_element(m.points.begin(), m.points.end(),
-                                                  [c](const Point& a, const Point& b) { return a.*c < b.*c; });
+    const auto range = [&](double Point::* c, double& low, double& high) {
+        const auto [lo, hi] = std::minmax_element(
+            m.points.begin(), m.points.end(), [c](const Point& a, const Point& b) { return a.*c < b.*c; });
         low = (*lo).*c;
         high = (*hi).*c;
     };

@@ -23,8 +23,8 @@ struct Mesh {
     // dim + 1 nodes per cell, cell after cell: counter-clockwise triangles, or tetrahedra of
     // positive volume (det[p1 - p0, p2 - p0, p3 - p0] > 0).
     std::vector<int> cells;
-    std::vector<int> contact_nodes;             // may touch the foundation, ordered by x (z, y)
-    std::vector<int> top_nodes;                 // the clamp (the rectangle's top edge), ascending
+    std::vector<int> contact_nodes;  // may touch the foundation, ordered by x (z, y)
+    std::vector<int> top_nodes;      // the clamp (the rectangle's top edge), ascending
     // Measure of the foundation each contact node carries: a share of its contact facets'
     // extent projected on the foundation's plane (length along x in 2D, area in x-z in 3D).
     // Nodal contact forces divided by it are pressures. Zero for a contact node whose facets
@@ -38,7 +38,7 @@ struct Mesh {
     // The rectangle's cells (0 for a mesh read from a file): where the rectangle is meant (its
     // error messages, the stability map's look-up).
     int nx = 0, ny = 0;
-    std::string source;  // "the rectangle", or the file it was read from
+    std::string source;        // "the rectangle", or the file it was read from
     uint64_t file_digest = 0;  // of the file's bytes (gmsh_file_digest): a changed file is another mesh
 
     int num_nodes() const { return static_cast<int>(points.size()); }

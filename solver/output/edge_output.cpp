@@ -37,10 +37,9 @@ EdgeWriter::EdgeWriter(std::string path, Eigen::Index nodes, int tangents)
 void EdgeWriter::write_header() {
     const std::string n = std::to_string(nodes_);
     std::string dict = "{'descr': [('time', '<f8')";
-    for (const std::string& field : fields())
-        dict += ", ('" + field + "', '<f8', (" + n + ",))";
-    dict += ", ('state', 'i1', (" + n + ",))], 'fortran_order': False, 'shape': (" +
-            std::to_string(rows_) + ",), }";
+    for (const std::string& field : fields()) dict += ", ('" + field + "', '<f8', (" + n + ",))";
+    dict += ", ('state', 'i1', (" + n + ",))], 'fortran_order': False, 'shape': (" + std::to_string(rows_) +
+            ",), }";
     const size_t prefix = 10;  // magic (6), version (2), header length (2)
     if (prefix + dict.size() + 1 > header_size_)
         throw std::runtime_error("edge history: too many contact nodes for the header");
@@ -69,7 +68,9 @@ std::vector<std::string> EdgeWriter::fields() const {
 void EdgeWriter::write(double time, const EdgeSnapshot& e) {
     record_.clear();
     append(record_, &time, 1);
-    const auto add = [&](const Eigen::VectorXd& v) { append(record_, v.data(), static_cast<size_t>(nodes_)); };
+    const auto add = [&](const Eigen::VectorXd& v) {
+        append(record_, v.data(), static_cast<size_t>(nodes_));
+    };
     // In fields()' order.
     add(e.x);
     if (tangents_ > 1) add(e.z);

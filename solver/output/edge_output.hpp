@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "util/c_file.hpp"
 #include "simulation/simulation.hpp"
+#include "util/c_file.hpp"
 
 namespace contactbody {
 

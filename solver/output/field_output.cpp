@@ -15,8 +15,7 @@ namespace {
 // VTK's inline binary: base64 of (UInt64 byte count, raw little-endian data), one stream.
 // (No base64 in the standard library, Eigen or CHOLMOD; the encoder is a dozen lines.)
 void append_base64(std::string& out, const std::vector<unsigned char>& bytes) {
-    static const char table[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    static const char table[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     size_t i = 0;
     for (; i + 2 < bytes.size(); i += 3) {
         const uint32_t v = (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
@@ -45,8 +44,8 @@ std::string encode(const std::vector<T>& values) {
 
 std::string data_array(const char* type, const char* name, int components, const std::string& data) {
     return std::string("        <DataArray type=\"") + type + "\" Name=\"" + name +
-           "\" NumberOfComponents=\"" + std::to_string(components) +
-           "\" format=\"binary\">" + data + "</DataArray>\n";
+           "\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"binary\">" + data +
+           "</DataArray>\n";
 }
 
 // Writes through a temporary and a rename, so that readers never see half a file.
@@ -68,8 +67,9 @@ void write_file(const std::string& path, const std::string& text) {
 FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string basename)
     : mesh_(mesh), directory_(std::move(directory)), basename_(std::move(basename)) {
     if (!create_directories(directory_))
-        throw std::runtime_error("result_directory '" + directory_ + "' cannot be created: " + std::strerror(errno));
-    write_collection();  // fails here, at initialization, if the directory is not writable
+        throw std::runtime_error("result_directory '" + directory_ +
+                                 "' cannot be created: " + std::strerror(errno));
+    write_collection();        // fails here, at initialization, if the directory is not writable
     remove_snapshots_from(0);  // a longer earlier run's snapshots would outlive the collection
 
     std::vector<double> points;
@@ -119,13 +119,14 @@ void FieldWriter::write(const State& s) {
         }
     }
     buffer_.clear();
-    buffer_ += "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-               "header_type=\"UInt64\">\n"
-               "  <!-- contact_force (N per metre of thickness, on the body) and contact_pressure "
-               "(Pa) are those of the last substep, instantaneous: the scalar outputs normal_force "
-               "and friction_force are averages over the communication step -->\n"
-               "  <UnstructuredGrid>\n";
+    buffer_ +=
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n"
+        "  <!-- contact_force (N per metre of thickness, on the body) and contact_pressure "
+        "(Pa) are those of the last substep, instantaneous: the scalar outputs normal_force "
+        "and friction_force are averages over the communication step -->\n"
+        "  <UnstructuredGrid>\n";
     buffer_ += "    <Piece NumberOfPoints=\"" + std::to_string(nodes) + "\" NumberOfCells=\"" +
                std::to_string(mesh_.num_cells()) + "\">\n";
     buffer_ += "      <PointData Vectors=\"displacement\">\n";
@@ -174,8 +175,8 @@ void FieldWriter::write_collection() const {
     char time[40];
     for (size_t k = 0; k < times_.size(); ++k) {
         std::snprintf(time, sizeof time, "%.17g", times_[k]);
-        text += std::string("    <DataSet timestep=\"") + time + "\" part=\"0\" file=\"" +
-                file_name(k) + "\"/>\n";
+        text += std::string("    <DataSet timestep=\"") + time + "\" part=\"0\" file=\"" + file_name(k) +
+                "\"/>\n";
     }
     text += "  </Collection>\n</VTKFile>\n";
     write_file(join_path(directory_, basename_ + ".pvd"), text);

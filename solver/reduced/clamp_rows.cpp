@@ -31,8 +31,8 @@ double ClampRows::residual(const Substep& k, const Eigen::Ref<const Eigen::Vecto
     const double c1 = k.c1, c2 = k.c2, w_t = k.w_t, du_t = 2 * w_t;
     const double mass_x = mass.dot(c1 * w - c2 * ydot) + mass_lift * (c1 * w_t - c2 * k.lift_rate) +
                           mass_top * (c1 * w_t - c2 * k.top_rate);
-    double rx = mass_x + stiffness.dot(y + w) + stiffness_lift * (k.lift_at + w_t) +
-                stiffness_top * (k.top + w_t);
+    double rx =
+        mass_x + stiffness.dot(y + w) + stiffness_lift * (k.lift_at + w_t) + stiffness_top * (k.top + w_t);
     if (k.damped)
         rx += 0.5 * c2 *
               (k.alpha * (mass.dot(du) + (mass_lift + mass_top) * du_t) +
@@ -40,9 +40,8 @@ double ClampRows::residual(const Substep& k, const Eigen::Ref<const Eigen::Vecto
     return rx;
 }
 
-void split_off_lift(const Discretization& d, int top_dof, const Eigen::VectorXd& lift,
-                    const State& full, Eigen::Index n, State& s, Eigen::VectorXd& u,
-                    Eigen::VectorXd& v) {
+void split_off_lift(const Discretization& d, int top_dof, const Eigen::VectorXd& lift, const State& full,
+                    Eigen::Index n, State& s, Eigen::VectorXd& u, Eigen::VectorXd& v) {
     s.u.resize(n + 2);
     s.v.resize(n + 2);
     s.u[n] = s.u[n + 1] = full.u[top_dof];

@@ -42,9 +42,8 @@ struct ClampRows {
 // A reduced state's lift and clamp entries (n: its coordinates' count) from the full state's
 // top y dof, and the full state's free-dof motion less the lift's, u_f - S lift_at and
 // v_f - S lift_rate, which the body projects on its coordinates.
-void split_off_lift(const Discretization& d, int top_dof, const Eigen::VectorXd& lift,
-                    const State& full, Eigen::Index n, State& s, Eigen::VectorXd& u,
-                    Eigen::VectorXd& v);
+void split_off_lift(const Discretization& d, int top_dof, const Eigen::VectorXd& lift, const State& full,
+                    Eigen::Index n, State& s, Eigen::VectorXd& u, Eigen::VectorXd& v);
 // The full state of a reduced one whose free dofs move by u and v: the clamped dofs at the
 // clamp (y at s's top, x held), s's multipliers, node states and time.
 void expand_to_full(const Discretization& d, const Eigen::VectorXd& u, const Eigen::VectorXd& v,

@@ -28,7 +28,7 @@ public:
         // set-up's cost, not the substep's).
         Eigen::Map<Eigen::VectorXd> y = factor_.forward(r_);
         y = Eigen::Map<const Eigen::VectorXd>(x_in, n);
-        factor_.backward(t_);                                  // P^T L^-T x
+        factor_.backward(t_);  // P^T L^-T x
         r_.noalias() = M_ * t_;
         Eigen::Map<Eigen::VectorXd>(y_out, n) = factor_.forward(r_);
     }
@@ -58,7 +58,8 @@ ContactRows contact_rows(const Discretization& d, bool hold_tangential) {
 
 std::vector<int> tangential_contact_dofs(const Discretization& d) {
     std::vector<int> dofs;
-    for (const std::vector<int>& tangent : d.contact_tangential) dofs.insert(dofs.end(), tangent.begin(), tangent.end());
+    for (const std::vector<int>& tangent : d.contact_tangential)
+        dofs.insert(dofs.end(), tangent.begin(), tangent.end());
     return dofs;
 }
 
@@ -90,14 +91,14 @@ LowestModes lowest_modes(const SparseMatrix& A, const SparseMatrix& M, int modes
     // most of a body's modes up to max_dense_modes_dofs, Lanczos for at most
     // max_lanczos_modes, and a clear refusal between.
     const bool most = 4 * static_cast<Eigen::Index>(modes) > n;
-    if (!(n <= dense_limit || (most && n <= max_dense_modes_dofs)) &&
-        (most || modes > max_lanczos_modes))
-        throw std::invalid_argument(
-            "modes = " + std::to_string(modes) + " of a body of " + std::to_string(n) +
-            " dofs: the reduced body computes at most " + std::to_string(max_lanczos_modes) +
-            " modes, and at most a quarter of a body's modes, of bodies above " +
-            std::to_string(max_dense_modes_dofs) + " dofs (the eigensolver would take minutes); "
-            "use fewer modes, or modes = 0 for the full body");
+    if (!(n <= dense_limit || (most && n <= max_dense_modes_dofs)) && (most || modes > max_lanczos_modes))
+        throw std::invalid_argument("modes = " + std::to_string(modes) + " of a body of " +
+                                    std::to_string(n) + " dofs: the reduced body computes at most " +
+                                    std::to_string(max_lanczos_modes) +
+                                    " modes, and at most a quarter of a body's modes, of bodies above " +
+                                    std::to_string(max_dense_modes_dofs) +
+                                    " dofs (the eigensolver would take minutes); "
+                                    "use fewer modes, or modes = 0 for the full body");
     if (n <= dense_limit || most) {
         out.dense = true;
         const Eigen::MatrixXd Ad(A), Md(M);
@@ -158,9 +159,12 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
             "the translation)");
     const int finite = finite_mode_count(d, hold_tangential);
     if (modes < 1 || modes > finite)
-        throw std::invalid_argument("modes = " + std::to_string(modes) + " is out of range: the body has " +
-                                    std::to_string(finite) + " finite modes" +
-                                    (hold_tangential ? " with its contact nodes' tangential dofs held (reduced_edge = tangential_mass)" : ""));
+        throw std::invalid_argument(
+            "modes = " + std::to_string(modes) + " is out of range: the body has " + std::to_string(finite) +
+            " finite modes" +
+            (hold_tangential
+                 ? " with its contact nodes' tangential dofs held (reduced_edge = tangential_mass)"
+                 : ""));
     const Eigen::Index n = d.A_free.rows();
     // The held dofs X and the rest I: the modes, the residual and the static solves are the
     // rest's (with nothing held, the free dofs themselves).
@@ -170,7 +174,8 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
         std::vector<bool> is_held(static_cast<size_t>(n), false);
         for (int x : held) is_held[static_cast<size_t>(x)] = true;
         for (int p = 0; p < n; ++p)
-            if (!is_held[static_cast<size_t>(p)]) rest_index[static_cast<size_t>(p)] = static_cast<int>(rest.size()), rest.push_back(p);
+            if (!is_held[static_cast<size_t>(p)])
+                rest_index[static_cast<size_t>(p)] = static_cast<int>(rest.size()), rest.push_back(p);
     }
     const SparseMatrix Pi = selection(n, rest), Px = selection(n, held);
     const SparseMatrix A_rest = held.empty() ? SparseMatrix() : SparseMatrix(Pi.transpose() * d.A_free * Pi);
@@ -198,7 +203,8 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
     for (int& p : b.position) p = rest_index[static_cast<size_t>(p)];
     const Eigen::Index nb = static_cast<Eigen::Index>(b.position.size());
     Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(ni, nb);
-    for (Eigen::Index j = 0; j < nb; ++j) Bt(b.position[static_cast<size_t>(j)], j) = b.sign[static_cast<size_t>(j)];
+    for (Eigen::Index j = 0; j < nb; ++j)
+        Bt(b.position[static_cast<size_t>(j)], j) = b.sign[static_cast<size_t>(j)];
     // B X for a dense X: its signed rows at the contact positions (B is a signed selection).
     const auto rows_of = [&](const Eigen::MatrixXd& X) {
         Eigen::MatrixXd out(nb, X.cols());
@@ -238,7 +244,8 @@ ModalBasis build_modal_basis(const Discretization& d, int modes, bool hold_tange
 
     // The clamp's static lift, and the held dofs' constraint modes.
     Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(d.clamped_dofs.size()));
-    for (size_t k = 0; k < d.clamped_dofs.size(); ++k) e[static_cast<Eigen::Index>(k)] = d.mesh.component(d.clamped_dofs[k]) == Mesh::normal;
+    for (size_t k = 0; k < d.clamped_dofs.size(); ++k)
+        e[static_cast<Eigen::Index>(k)] = d.mesh.component(d.clamped_dofs[k]) == Mesh::normal;
     const Eigen::VectorXd Afc_e = d.A_free_clamped * e;
     if (held.empty()) {
         basis.lift = -solve(Eigen::MatrixXd(Afc_e)).col(0);

@@ -15,7 +15,7 @@ struct ModalBasis {
     // modes^T A modes = diag(omega2). M is the variant's: M_r's massless contact normal dofs
     // take part in each mode statically.
     Eigen::VectorXd omega2;
-    Eigen::MatrixXd modes;     // n_f x m
+    Eigen::MatrixXd modes;  // n_f x m
     // Psi' = (A^-1 - modes omega2^-1 modes^T) B^T V g^-1/2 for the contact unknowns (N, T),
     // where G = B (A^-1 - ...) B^T = V g V^T has rank: residual^T A residual = I,
     // modes^T A residual = 0, modes^T M residual = 0. Taken massless in the reduced body;

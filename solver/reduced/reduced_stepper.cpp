@@ -57,7 +57,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     const std::vector<int> tangential = tangential_contact_dofs(d);
     for (Eigen::Index r = 0; r < rows; ++r) {
         const bool normal = r < nc;
-        const int dof = normal ? d.contact_y[static_cast<size_t>(r)] : tangential[static_cast<size_t>(r - nc)];
+        const int dof =
+            normal ? d.contact_y[static_cast<size_t>(r)] : tangential[static_cast<size_t>(r - nc)];
         const double sign = normal ? -1.0 : 1.0;
         Bhat_.row(r).head(nd_) << sign * basis_.modes.row(dof), sign * basis_.residual.row(dof);
         Bhat_.row(r).tail(nx_) = sign * TC.row(dof);
@@ -69,7 +70,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
     // The clamp: e = 1 on the clamped y dofs.
     const Eigen::Index ncl = static_cast<Eigen::Index>(d.clamped_dofs.size());
     Eigen::VectorXd e = Eigen::VectorXd::Zero(ncl);
-    for (Eigen::Index j = 0; j < ncl; ++j) e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
+    for (Eigen::Index j = 0; j < ncl; ++j)
+        e[j] = d.mesh.component(d.clamped_dofs[static_cast<size_t>(j)]) == Mesh::normal;
     Eigen::VectorXd all_e = Eigen::VectorXd::Zero(d.mesh.num_dofs());
     for (Eigen::Index j = 0; j < ncl; ++j) all_e[d.clamped_dofs[static_cast<size_t>(j)]] = e[j];
     const Eigen::VectorXd& S = basis_.lift;
@@ -107,7 +109,8 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
         c.stiffness_top = rows.stiffness_top;
         return c;
     };
-    for (int t = 0; t < d.mesh.tangents(); ++t) clamp_tangential_[static_cast<size_t>(t)] = clamp_rows(tangent_component(t));
+    for (int t = 0; t < d.mesh.tangents(); ++t)
+        clamp_tangential_[static_cast<size_t>(t)] = clamp_rows(tangent_component(t));
 
     start_run();
     problem_.tangents = tangents_;
@@ -130,8 +133,7 @@ ReducedStepper::ReducedStepper(const SceneParameters& params, int modes)
 // What a new stepper of params_ is, but for the discretization, the basis and the operators.
 void ReducedStepper::start_run() {
     damping_ = params_.damping_mass * mass_ + params_.damping_stiffness * omega2_;
-    if (nx_ > 0)
-        damping_xx_ = params_.damping_mass * mass_xx_ + params_.damping_stiffness * stiffness_xx_;
+    if (nx_ > 0) damping_xx_ = params_.damping_mass * mass_xx_ + params_.damping_stiffness * stiffness_xx_;
     options_ = ContactSolverOptions{};
     options_.tolerance = params_.contact_tolerance;
     // Its substep's cost is the contact solve's (benchmarks/results/contact_profile.md).
@@ -157,9 +159,9 @@ std::string ReducedStepper::summary() const {
     msg << "reduced body: " << basis_.modes.cols() << " modes (of " << finite_mode_count(basis_disc())
         << " finite) and " << basis_.residual.cols() << " residual attachment modes of the "
         << num_contact_nodes() << " contact nodes"
-        << (nx_ > 0 ? " (normal), the tangential-mass edge: its x dofs kept with their constraint modes" : ", the massless edge")
-        << "; basis "
-        << (restarts_ > 0 ? "kept from the last run (built" : "built") << " in "
+        << (nx_ > 0 ? " (normal), the tangential-mass edge: its x dofs kept with their constraint modes"
+                    : ", the massless edge")
+        << "; basis " << (restarts_ > 0 ? "kept from the last run (built" : "built") << " in "
         << basis_.setup_seconds << " s, " << (basis_.dense ? "dense eigensolver" : "Lanczos, ")
         << (basis_.dense ? "" : std::to_string(basis_.operator_applications) + " operator applications")
         << (restarts_ > 0 ? ")" : "");
@@ -170,9 +172,9 @@ State ReducedStepper::from_full(const State& full) const {
     const Discretization& d = basis_disc();
     const Eigen::Index n = size();
     State s;
-    Eigen::VectorXd u, v;  // the free dofs' motion less the lift's
+    Eigen::VectorXd u, v;                                             // the free dofs' motion less the lift's
     split_off_lift(d, d.top_y_dof(), basis_.lift, full, n, s, u, v);  // the clamp's (or the plate's) value
-    const auto project = [&](const Eigen::VectorXd& x, auto&& z) {  // A_hat^-1 T^T A x
+    const auto project = [&](const Eigen::VectorXd& x, auto&& z) {    // A_hat^-1 T^T A x
         const Eigen::VectorXd Ax = d.A_free * x;
         z.head(nd_) << basis_.modes.transpose() * Ax, basis_.residual.transpose() * Ax;
         z.head(nd_) = z.head(nd_).cwiseQuotient(omega2_.head(nd_));
@@ -208,14 +210,13 @@ std::pair<double, double> ReducedStepper::kinetic_and_strain_energy(const State&
         tail_kinetic = 2 * zdot_x.dot(t.mass_modes) + zdot_x.dot(t.mass_x);
         tail_strain = z.tail(nx_).dot(t.stiffness);
     }
-    const double kinetic = 0.5 * (zdot.cwiseAbs2().dot(mass_) + tail_kinetic) +
-                           zdot.dot(m_s_ * tau + m_c_ * tc) +
-                           0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) +
-                           0.5 * plate_mass_ * tc * tc;
+    const double kinetic =
+        0.5 * (zdot.cwiseAbs2().dot(mass_) + tail_kinetic) + zdot.dot(m_s_ * tau + m_c_ * tc) +
+        0.5 * (mu_ss_ * tau * tau + 2 * mu_cs_ * tau * tc + mu_cc_ * tc * tc) + 0.5 * plate_mass_ * tc * tc;
     // With A_fc e = -A_ff S: 1/2 z^T A_hat z + z^T a_s (lift - top) + 1/2 S^T A_ff S (lift - top)^2
     // (the lift and clamp moving together, a translation, store none).
-    const double strain = 0.5 * (z.cwiseAbs2().dot(omega2_) + tail_strain) + z.dot(a_s_) * gap +
-                          0.5 * s_ss_ * gap * gap;
+    const double strain =
+        0.5 * (z.cwiseAbs2().dot(omega2_) + tail_strain) + z.dot(a_s_) * gap + 0.5 * s_ss_ * gap * gap;
     // Both are positive semi-definite forms, here expanded into terms that cancel for a body
     // moving rigidly: what is left below zero is round-off (an outside check reported
     // E = -2.7e-13 J/m; not reproduced here), and
@@ -286,8 +287,8 @@ void ReducedStepper::stored_rows_product(Eigen::Index r0, Eigen::Index rows,
     y.noalias() = Bhat_.block(r0, 0, rows, m) * x.head(m);
     if (dense > 0) y.noalias() += Bhat_.block(r0, m, rows, dense) * x.segment(m, dense);
     if (r0 < k)
-        y.noalias() += Bhat_.block(r0, m + r0, rows, k - r0).triangularView<Eigen::Lower>() *
-                       x.segment(m + r0, k - r0);
+        y.noalias() +=
+            Bhat_.block(r0, m + r0, rows, k - r0).triangularView<Eigen::Lower>() * x.segment(m + r0, k - r0);
     if (nx_ > 0) y.noalias() += Bhat_.block(r0, nd_, rows, nx_) * x.tail(nx_);
 }
 
@@ -380,8 +381,7 @@ ReducedStepper::StepOperators& ReducedStepper::build_operators(double dt) {
     } else {
         ops->inverse_stiffness.tail(nx_).setZero();
         ops->tail_coupling = c * (ops->inverse_stiffness.head(modes()).asDiagonal() * mass_mx_);
-        Eigen::MatrixXd schur = c * mass_xx_ +
-                                (1 + c2 * params_.damping_stiffness) * stiffness_xx_ -
+        Eigen::MatrixXd schur = c * mass_xx_ + (1 + c2 * params_.damping_stiffness) * stiffness_xx_ -
                                 c * mass_mx_.transpose() * ops->tail_coupling;
         const Eigen::LLT<Eigen::MatrixXd> factor(0.5 * (schur + schur.transpose()));
         if (factor.info() != Eigen::Success)
@@ -441,8 +441,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     const double c = c1 + c2 * alpha;
     const bool plate = params_.force_control;
     double w_t = plate ? 0.0 : 0.5 * (load.top_start + load.top_end) - top;
-    rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) -
-           omega2_.cwiseProduct(z) - a_s_ * (lift_at - top) - c * w_t * m_t_;
+    rhs_ = c2 * (mass_.cwiseProduct(zdot) + m_s_ * lift_rate + m_c_ * top_rate) - omega2_.cwiseProduct(z) -
+           a_s_ * (lift_at - top) - c * w_t * m_t_;
     if (nx_ > 0) {  // M_hat's and A_hat's X block
         const TailProducts& t = tail_products(z, zdot);
         rhs_.head(modes()).noalias() += c2 * mass_mx_ * zdot.tail(nx_);
@@ -452,7 +452,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     solve_step(ops, w_);
     if (plate) {
         w_t = (c2 * (m_t_.dot(zdot) + (mass_tt_ + plate_mass_) * top_rate) - load.top_force -
-               c * m_t_.dot(w_)) / ops.plate_schur;
+               c * m_t_.dot(w_)) /
+              ops.plate_schur;
         w_ -= c * w_t * ops.plate_coupling;
     }
     // B_hat is the substep's largest operand with W (about 1 MB each at nx = 160), and its
@@ -478,8 +479,9 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
         solve_step(ops, dw_);
         w_ += dw_;
         if (plate) {  // the plate's share of the contact forces' response
-            const double dw_t = (Blift_.head(unknowns).dot(s.lambda) -
-                                 c * ops.plate_coupling.dot(contact_force_)) / ops.plate_schur;
+            const double dw_t =
+                (Blift_.head(unknowns).dot(s.lambda) - c * ops.plate_coupling.dot(contact_force_)) /
+                ops.plate_schur;
             w_ -= c * dw_t * ops.plate_coupling;
             w_t += dw_t;
         }
@@ -501,8 +503,8 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     du_ = 2 * w_;
     if (params_.damped())
         report.work.damping = (du_.cwiseAbs2().dot(damping_) + tail_damping_form(du_) +
-                               2 * du_t * alpha * m_t_.dot(du_) +
-                               alpha * mass_tt_ * du_t * du_t) / dt;
+                               2 * du_t * alpha * m_t_.dot(du_) + alpha * mass_tt_ * du_t * du_t) /
+                              dt;
 
     // The clamp's force on the body: the clamp moves the lift with it, so its force is the
     // residual of the reduced equations' rows of both (lift and clamp), less the contact
@@ -511,23 +513,24 @@ SubstepReport ReducedStepper::substep(ReducedState& s, double dt, const SubstepL
     // rows' residual, as in the full body.
     double r = m_t_.dot(c1 * w_ - c2 * zdot) + (mu_ss_ + mu_cs_) * (c1 * w_t - c2 * lift_rate) +
                (mu_cs_ + mu_cc_) * (c1 * w_t - c2 * top_rate);
-    if (params_.damped())
-        r += 0.5 * c2 * alpha * (m_t_.dot(du_) + mass_tt_ * du_t);
+    if (params_.damped()) r += 0.5 * c2 * alpha * (m_t_.dot(du_) + mass_tt_ * du_t);
     r -= Blift_.head(unknowns).dot(s.lambda);
     report.top_reaction[Mesh::normal] = r;
     // The clamp's work, or the top force's over the plate's motion (the plate's kinetic energy
     // is in E).
     report.work.clamp = plate ? -load.top_force * du_t : r * du_t;
     // The clamped tangential rows' residual, recovered from the basis as the full body's.
-    const ClampRows::Substep clamp_substep{c1, c2, w_t, lift_at, lift_rate, top, top_rate, alpha, beta, params_.damped()};
+    const ClampRows::Substep clamp_substep{c1,  c2,       w_t,   lift_at, lift_rate,
+                                           top, top_rate, alpha, beta,    params_.damped()};
     for (int t = 0; t < tangents_; ++t)
         report.top_reaction[static_cast<size_t>(tangent_component(t))] =
             clamp_tangential_[static_cast<size_t>(t)].residual(clamp_substep, z, zdot, w_, du_);
 
     record_contact(
-        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, static_cast<int>(tangents_), params_.initial_gap,
-        disc_.mesh.contact_heights, touching, solver_.status(), [&](int i) { return contact_u_[i]; },
-        [&](int i) { return 2 * bw_[i]; }, [&](int i, int t) { return 2 * bw_[(1 + t) * nc + i]; });
+        report, snapshot_, s.sticking, s.lambda, dt, load.foundation_velocity, static_cast<int>(tangents_),
+        params_.initial_gap, disc_.mesh.contact_heights, touching, solver_.status(),
+        [&](int i) { return contact_u_[i]; }, [&](int i) { return 2 * bw_[i]; },
+        [&](int i, int t) { return 2 * bw_[(1 + t) * nc + i]; });
 
     zdot = 2 * c2 * w_ - zdot;
     z += 2 * w_;

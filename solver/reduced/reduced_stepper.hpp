@@ -17,11 +17,11 @@
 #include <memory>
 #include <optional>
 
-#include "reduced/clamp_rows.hpp"
-#include "contact/contact_solver.hpp"
-#include "reduced/modal_basis.hpp"
 #include "body/body.hpp"
 #include "body/stepper.hpp"
+#include "contact/contact_solver.hpp"
+#include "reduced/clamp_rows.hpp"
+#include "reduced/modal_basis.hpp"
 
 namespace contactbody {
 
@@ -90,15 +90,15 @@ private:
         Eigen::VectorXd inverse_stiffness;  // 1 / diag(4/dt^2 M + 2/dt C + A); 0 on X
         // The tangential-mass edge: K = [D, c M_dX; c M_Xd, K_XX] (c = 4/dt^2 + 2/dt alpha),
         // solved through D^-1 c M_dX and the Schur complement K_XX - c^2 M_Xd D^-1 M_dX.
-        Eigen::MatrixXd tail_coupling;      // D^-1 c M_dX on the modes' rows (m x n_X)
+        Eigen::MatrixXd tail_coupling;  // D^-1 c M_dX on the modes' rows (m x n_X)
         // The Schur complement's inverse (n_c square), formed once a substep size: a
         // matrix-vector product in place of two triangular solves with its Cholesky factor,
         // which read the same entries at a lower rate (benchmarks/results/contact_ab.md).
         Eigen::MatrixXd tail_schur_inverse;
-        Eigen::MatrixXd delassus;           // B T K^-1 T^T B^T, (N, T) x (N, T)
+        Eigen::MatrixXd delassus;  // B T K^-1 T^T B^T, (N, T) x (N, T)
         // Force control, the plate's bordered row: K = [D, c m_t; c m_t^T, k_pp] with
         // c = 4/dt^2 + 2/dt alpha, h = D^-1 m_t, and its Schur complement k_pp - c^2 m_t^T h.
-        Eigen::VectorXd plate_coupling;     // h
+        Eigen::VectorXd plate_coupling;  // h
         double plate_schur = 0;
     };
     const StepOperators& operators_for(double dt);
@@ -126,22 +126,22 @@ private:
     std::optional<Discretization> clamped_;
     const Discretization& basis_disc() const { return clamped_ ? *clamped_ : disc_; }
     ModalBasis basis_;
-    double plate_mass_ = 0;  // force control: the plate's own mass (kg/m), else 0
-    Eigen::VectorXd omega2_;   // diag(A_hat): modal omega^2, then 1 for the residual, 0 on X
-    Eigen::VectorXd mass_;     // diag(M_hat): 1 for the modes, 0 for the residual and on X
+    double plate_mass_ = 0;   // force control: the plate's own mass (kg/m), else 0
+    Eigen::VectorXd omega2_;  // diag(A_hat): modal omega^2, then 1 for the residual, 0 on X
+    Eigen::VectorXd mass_;    // diag(M_hat): 1 for the modes, 0 for the residual and on X
     // The tangential-mass edge's X block: M_hat's columns of X, on the modes' rows (M_mX) and
     // X's (M_XX) only, since the residual's rows are zero (massless): the substep's products
     // with them read a fifth of M_dX at nx = 160 with 80 modes. And A_hat's X block (Guyan's
     // condensed stiffness; A_hat has no X coupling).
-    Eigen::Index tangents_ = 1;  // tangential contact unknowns per node: 1 in 2D, 2 (x, z) in 3D
+    Eigen::Index tangents_ = 1;     // tangential contact unknowns per node: 1 in 2D, 2 (x, z) in 3D
     Eigen::Index nd_ = 0, nx_ = 0;  // diagonal coordinates (m + k), tangential ones (0 or n_c)
     Eigen::MatrixXd mass_mx_;       // m x n_X
     Eigen::MatrixXd mass_xx_;       // n_X x n_X
     Eigen::MatrixXd stiffness_xx_;  // n_X x n_X
     Eigen::MatrixXd damping_xx_;    // alpha M_XX + beta A_XX (of the run's parameters)
     Eigen::LLT<Eigen::MatrixXd> stiffness_xx_factor_;
-    Eigen::MatrixXd Bhat_;     // B T: signed rows of the basis at the contact unknowns (N, T)
-    Eigen::VectorXd Blift_;    // B lift
+    Eigen::MatrixXd Bhat_;   // B T: signed rows of the basis at the contact unknowns (N, T)
+    Eigen::VectorXd Blift_;  // B lift
     // The lift S and the clamp e against the basis and each other (residual rows of the mass
     // terms zero: massless): m_s = T^T M_ff S, m_c = T^T M_fc e, a_s = T^T A_ff S, and the
     // scalars S^T M_ff S, e^T M_cf S, e^T M_cc e, S^T A_ff S, e^T A_cc e.
@@ -153,7 +153,7 @@ private:
     PerTangent<ClampRows> clamp_tangential_;
     Eigen::Index nf_ = 0;  // free dofs
     double mu_ss_ = 0, mu_cs_ = 0, mu_cc_ = 0, s_ss_ = 0;
-    double mass_tt_ = 0;   // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)
+    double mass_tt_ = 0;  // mu_ss + 2 mu_cs + mu_cc: the lift and clamp moving together (t^T M t)
     // Their stiffness t^T A t is 0: the lift is the clamp's static response with nothing else
     // holding the body, so with the clamp a rigid translation (e^T A_cc e - s_ss computed
     // rounds |A|, and a far-translated body's strain energy with it: docs/decisions.md, "Far
@@ -173,8 +173,7 @@ private:
     // Rows [r0, r0 + rows) of B_hat times x, and B_hat's first rows transposed times lambda.
     void edge_product(Eigen::Index r0, Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& x,
                       Eigen::Ref<Eigen::VectorXd> y) const;
-    void stored_rows_product(Eigen::Index r0, Eigen::Index rows,
-                             const Eigen::Ref<const Eigen::VectorXd>& x,
+    void stored_rows_product(Eigen::Index r0, Eigen::Index rows, const Eigen::Ref<const Eigen::VectorXd>& x,
                              Eigen::Ref<Eigen::VectorXd> y) const;
     // The tangential-mass edge: B_hat's tangential rows are (0, 0, I) (the modes and residual
     // vanish on X's rows, the constraint modes are the identity there), checked exactly at

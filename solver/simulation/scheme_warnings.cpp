@@ -1,13 +1,13 @@
 
-#include "contact/friction_law.hpp"
 #include "simulation/scheme_warnings.hpp"
-#include "simulation/stability_map_data.hpp"
-#include "util/text.hpp"
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
 #include <vector>
+#include "contact/friction_law.hpp"
+#include "simulation/stability_map_data.hpp"
+#include "util/text.hpp"
 
 namespace contactbody {
 
@@ -57,8 +57,7 @@ double largest_stabilized_friction(int c) {
 
 // beta scales with the time H / c_p (the problem's only time at fixed lambda/mu and mesh)
 double beta_scale(const SceneParameters& p) {
-    const double paper_time =
-        paper_height / std::sqrt((paper_lambda + 2 * paper_mu) / paper_density);
+    const double paper_time = paper_height / std::sqrt((paper_lambda + 2 * paper_mu) / paper_density);
     return p.height / p_wave_speed(p) / paper_time;
 }
 
@@ -77,17 +76,17 @@ std::string friction_warning(const SceneParameters& p) {
     const double needed = stabilizing_beta(c, p.friction_coefficient) * scale;
     if (p.damping_stiffness >= needed) return "";
     Text msg;
-    msg << "friction_coefficient = " << p.friction_coefficient << " with damping_stiffness = "
-        << p.damping_stiffness << " s: steady sliding (foundation_velocity != 0) is unstable "
+    msg << "friction_coefficient = " << p.friction_coefficient
+        << " with damping_stiffness = " << p.damping_stiffness
+        << " s: steady sliding (foundation_velocity != 0) is unstable "
         << "here (the damped stability map, nx = " << stability_map::damped_nx[c] << " cells ";
     if (std::isfinite(needed)) {
         msg << "across the height): set damping_stiffness >= " << needed << " s";
     } else {
         const double largest = largest_stabilized_friction(c);
-        msg << "across the height): no damping_stiffness up to "
-            << stability_map::damped_largest_beta * scale << " s stabilizes it; F <= " << largest
-            << " is stable with damping_stiffness >= " << stabilizing_beta(c, largest) * scale
-            << " s";
+        msg << "across the height): no damping_stiffness up to " << stability_map::damped_largest_beta * scale
+            << " s stabilizes it; F <= " << largest
+            << " is stable with damping_stiffness >= " << stabilizing_beta(c, largest) * scale << " s";
     }
     msg << " (measured on the paper's body, lambda/mu = 2; beta scaled by H / c_p";
     if (std::abs(p.lambda / p.mu - 2) > 0.5)
@@ -108,8 +107,7 @@ std::string frictionless_warning(const SceneParameters& p) {
     double row = -1, column = 0;
     for (const auto& cell : stability_map::frictionless) {
         if (cell.lambda_over_mu <= ratio) row = std::max(row, cell.lambda_over_mu);
-        if (column == 0 || std::abs(std::log(cell.courant / courant)) <
-                               std::abs(std::log(column / courant)))
+        if (column == 0 || std::abs(std::log(cell.courant / courant)) < std::abs(std::log(column / courant)))
             column = cell.courant;
     }
     double growth = 1, smaller_stable_courant = 0;
@@ -171,8 +169,7 @@ RatePlace place_on_rate_map(const SceneParameters& p, double F, double dF, doubl
         if (row.slope <= dF) r.slope = std::max(r.slope, row.slope);
     }
     for (size_t b = 0; b < std::size(stability_map::rate_betas); ++b)
-        if (stability_map::rate_betas[b] <= beta &&
-            !std::isnan(rate_growth(r.nx, r.f_below, r.slope, b)) &&
+        if (stability_map::rate_betas[b] <= beta && !std::isnan(rate_growth(r.nx, r.f_below, r.slope, b)) &&
             !std::isnan(rate_growth(r.nx, r.f_above, r.slope, b)))
             r.beta = b;
     r.covered = !std::isnan(rate_growth(r.nx, r.f_below, r.slope, r.beta)) &&
@@ -218,15 +215,16 @@ std::string rate_warning(const SceneParameters& p, double speed) {
             s_min = std::min(s_min, row.slope), s_max = std::max(s_max, row.slope);
         }
         Text msg;
-        msg << "settings outside the measured maps: " << law.str()
-            << " lie outside the rate map (F " << f_min << " to " << f_max << ", dF/dv " << s_min
-            << " to " << s_max << " s/m; examples/results/rate_stability.md), so this judges the "
+        msg << "settings outside the measured maps: " << law.str() << " lie outside the rate map (F " << f_min
+            << " to " << f_max << ", dF/dv " << s_min << " to " << s_max
+            << " s/m; examples/results/rate_stability.md), so this judges the "
                "map of constant F at F(V) alone, which ignores dF/dv";
         if (dF < 0) {
             msg << " (dF/dv < 0 destabilizes";
             if (const double s = every_point_grows(); s < 0)
                 msg << ": on the rate map dF/dv = " << s << " s/m made every measured point grow, "
-                    << "up to damping_stiffness = " << stability_map::rate_betas[std::size(stability_map::rate_betas) - 1]
+                    << "up to damping_stiffness = "
+                    << stability_map::rate_betas[std::size(stability_map::rate_betas) - 1]
                     << " s on the paper's body";
             msg << ")";
         }
@@ -260,7 +258,8 @@ std::string rate_warning(const SceneParameters& p, double speed) {
     if (!std::isfinite(slope_needed) && !std::isfinite(beta_needed))
         msg << ": no measured dF/dv or damping_stiffness stabilizes it";
     msg << " (measured on the paper's body, lambda/mu = 2; beta scaled by H / c_p";
-    if (std::abs(p.lambda / p.mu - 2) > 0.5) msg << "; lambda/mu here = " << p.lambda / p.mu << ", not measured";
+    if (std::abs(p.lambda / p.mu - 2) > 0.5)
+        msg << "; lambda/mu here = " << p.lambda / p.mu << ", not measured";
     msg << ")";
     return msg.str();
 }
@@ -273,8 +272,7 @@ double wedging_friction(const SceneParameters& p) {
 }
 
 std::string massless_edge_warning(const SceneParameters& p) {
-    if (p.modes == 0 || reduced_edge_has_tangential_mass(p) || p.friction_coefficient == 0)
-        return "";
+    if (p.modes == 0 || reduced_edge_has_tangential_mass(p) || p.friction_coefficient == 0) return "";
     const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
     const bool weakening = p.stribeck_velocity > 0 && p.static_friction_ratio > 1;
     if (!weakening && p.friction_coefficient <= c_over_b) return "";
@@ -282,16 +280,18 @@ std::string massless_edge_warning(const SceneParameters& p) {
     msg << "modes = " << p.modes << " with the massless contact edge: the edge has no tangential "
         << "mass, so with ";
     if (weakening)
-        msg << "friction that drops with the slip rate (static_friction_ratio = "
-            << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity << " m/s)";
+        msg << "friction that drops with the slip rate (static_friction_ratio = " << p.static_friction_ratio
+            << " over stribeck_velocity = " << p.stribeck_velocity << " m/s)";
     else
         msg << "F = " << p.friction_coefficient << " above c/b = (lambda+3mu)/(lambda+mu) = " << c_over_b;
     msg << " a substep can have several solutions, or none the solver reaches, at any substep "
            "size (as with mass_matrix = redistributed_both, paper section 6): reducing "
            "internal_step does not help. "
         << (p.mass_matrix == MassVariant::redistributed_both
-                ? "mass_matrix = redistributed_normal with reduced_edge = tangential_mass, or modes = 0 with mass_matrix = redistributed_normal, keeps the tangential mass"
-                : "reduced_edge = tangential_mass keeps the edge's tangential mass (or modes = 0, the full body)");
+                ? "mass_matrix = redistributed_normal with reduced_edge = tangential_mass, or modes = 0 with "
+                  "mass_matrix = redistributed_normal, keeps the tangential mass"
+                : "reduced_edge = tangential_mass keeps the edge's tangential mass (or modes = 0, the full "
+                  "body)");
     return msg.str();
 }
 
@@ -312,18 +312,22 @@ std::string scheme_warning(const SceneParameters& p, double sliding_speed) {
     if (!p.mesh.empty()) {  // the maps place a body by the rectangle's cells: none for a mesh
         if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped() && p.dimension == 3)
             return "settings not covered: the stability maps behind these warnings were measured "
-                   "on 2D bodies, and no map covers a 3D body (the mesh " + p.mesh + "); on every "
+                   "on 2D bodies, and no map covers a 3D body (the mesh " +
+                   p.mesh +
+                   "); on every "
                    "2D body measured, undamped steady sliding with friction was unstable for "
                    "every F > 0: consider damping_stiffness";
         if (p.friction_coefficient > 0 && sliding_speed != 0 && !p.damped())
             return "settings not covered: the stability maps behind these warnings were measured "
-                   "on the rectangle, and say nothing of the mesh " + p.mesh + "; there, undamped "
+                   "on the rectangle, and say nothing of the mesh " +
+                   p.mesh +
+                   "; there, undamped "
                    "steady sliding with friction was unstable for every F > 0 on every mesh "
                    "measured: consider damping_stiffness";
         return "";
     }
     const bool rate = p.friction_coefficient > 0 && rate_law(p).active();
-    const std::string why = rate ? rate_warning(p, sliding_speed)
+    const std::string why = rate                         ? rate_warning(p, sliding_speed)
                             : p.friction_coefficient > 0 ? friction_warning(p)
                                                          : frictionless_warning(p);
     if (why.empty() || why.rfind("settings ", 0) == 0) return why;

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace contactbody {
@@ -21,24 +21,22 @@ static std::unique_ptr<Body> make_body(const SceneParameters& params) {
     return std::make_unique<ReducedStepper>(params, params.modes);
 }
 
-Simulation::Simulation(const SceneParameters& params, double initial_top_displacement,
-                       double start_time, double initial_top_force,
-                       double initial_foundation_velocity)
-    : Simulation(make_body(params), initial_top_displacement, start_time,
-                 initial_top_force, initial_foundation_velocity) {}
+Simulation::Simulation(const SceneParameters& params, double initial_top_displacement, double start_time,
+                       double initial_top_force, double initial_foundation_velocity)
+    : Simulation(make_body(params), initial_top_displacement, start_time, initial_top_force,
+                 initial_foundation_velocity) {}
 
-void Simulation::restart(const SceneParameters& params, double initial_top_displacement,
-                         double start_time, double initial_top_force,
-                         double initial_foundation_velocity) {
+void Simulation::restart(const SceneParameters& params, double initial_top_displacement, double start_time,
+                         double initial_top_force, double initial_foundation_velocity) {
     body_->restart(params);
-    *this = Simulation(std::move(body_), initial_top_displacement, start_time,
-                       initial_top_force, initial_foundation_velocity);
+    *this = Simulation(std::move(body_), initial_top_displacement, start_time, initial_top_force,
+                       initial_foundation_velocity);
 }
 
-Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displacement,
-                       double start_time, double initial_top_force,
-                       double initial_foundation_velocity)
-    : body_(std::move(body)), state_(body_->initial_state(initial_top_displacement)),
+Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displacement, double start_time,
+                       double initial_top_force, double initial_foundation_velocity)
+    : body_(std::move(body)),
+      state_(body_->initial_state(initial_top_displacement)),
       sliding_speed_(std::abs(initial_foundation_velocity)) {
     const SceneParameters& params = body_->parameters();
     state_.time = start_time;
@@ -64,14 +62,16 @@ Simulation::Simulation(std::unique_ptr<Body> body, double initial_top_displaceme
     initial_energy_ = energy(state_);
     if (std::string why = scheme_warning(params, sliding_speed_); !why.empty()) {
         if (params.modes > 0)
-            why += " (measured on the full body: the reduced body of modes = " +
-                   std::to_string(params.modes) + " has not been mapped)";
+            why +=
+                " (measured on the full body: the reduced body of modes = " + std::to_string(params.modes) +
+                " has not been mapped)";
         warnings_.push_back(std::move(why));
     }
     if (std::string why = massless_edge_warning(params); !why.empty()) warnings_.push_back(std::move(why));
     const Discretization& d = body_->discretization();  // a contact node's unknowns: one per dimension
-    if (std::string why = long_reduced_edge_warning(params, static_cast<long>(d.mesh.dim) * body_->num_contact_nodes(),
-                                                    static_cast<long>(d.A_free.rows()));
+    if (std::string why =
+            long_reduced_edge_warning(params, static_cast<long>(d.mesh.dim) * body_->num_contact_nodes(),
+                                      static_cast<long>(d.A_free.rows()));
         !why.empty())
         warnings_.push_back(std::move(why));
 }
@@ -110,8 +110,8 @@ static State quasi_static_path(Body& path, Stepper* timing, double top, double s
             body.substep(s, quasi_static, load);
         } catch (const ContactSolveError& e) {
             throw std::invalid_argument(
-                std::string("initial_state = static: the load path's contact solve failed (") +
-                e.what() + "); use initial_state = paper");
+                std::string("initial_state = static: the load path's contact solve failed (") + e.what() +
+                "); use initial_state = paper");
         }
     };
     if (timing) timing->set_contact_at_end_of_step(true);
@@ -193,12 +193,13 @@ void Simulation::static_initial_state(double top, double force) {
     if (!(force > 0))
         throw std::invalid_argument(
             "initial_state = static with top_control = force needs top_force > 0 at the start "
-            "(it is " + std::to_string(force) + " " + body_->discretization().mesh.force_unit() +
+            "(it is " +
+            std::to_string(force) + " " + body_->discretization().mesh.force_unit() +
             "): only the contact holds the body; use "
             "initial_state = paper for a body that starts free");
     const Discretization& d = path_body->discretization();
     const auto pressing_force = [&](const State& s) {  // the clamp's force on the body, downwards
-        double pressing = 0;                             // (A symmetric: col = row)
+        double pressing = 0;                           // (A symmetric: col = row)
         for (int dof : d.top_dofs)
             if (d.mesh.component(dof) == Mesh::normal) pressing -= d.A.col(dof).dot(s.u);
         return pressing;
@@ -207,8 +208,9 @@ void Simulation::static_initial_state(double top, double force) {
     State s = quasi_static_path(runs, timing, probe, 0.0, increments_count);
     double pressing = pressing_force(s);
     if (!(pressing > 0))
-        throw std::invalid_argument("initial_state = static: the clamped load path carries no "
-                                    "force; use initial_state = paper");
+        throw std::invalid_argument(
+            "initial_state = static: the clamped load path carries no "
+            "force; use initial_state = paper");
     if (!flat) {  // (above)
         // The bracket [low, high] of clamp displacements (high pressing harder), and the
         // pressing at each end; the unloaded body (0, 0) is its first low end.
@@ -219,13 +221,14 @@ void Simulation::static_initial_state(double top, double force) {
             // The reaction sums terms much larger than itself: at 100 N/m on a tilted boundary
             // it moved by 2e-11 of itself between clamp displacements one ulp apart, so a
             // bracket of a few ulps is as near as the force can be told.
-            if (bracketed && std::abs(high - low) <= 8 * std::numeric_limits<double>::epsilon() * std::abs(high))
+            if (bracketed &&
+                std::abs(high - low) <= 8 * std::numeric_limits<double>::epsilon() * std::abs(high))
                 break;
             if (iteration == 100) {
                 Text msg;
-                msg << "initial_state = static: the clamp's displacement for top_force = " << force
-                    << " " << d.mesh.force_unit() << " was not found in 100 load paths (the nearest, "
-                    << probe << " m, carries " << pressing << " " << d.mesh.force_unit()
+                msg << "initial_state = static: the clamp's displacement for top_force = " << force << " "
+                    << d.mesh.force_unit() << " was not found in 100 load paths (the nearest, " << probe
+                    << " m, carries " << pressing << " " << d.mesh.force_unit()
                     << "); use initial_state = paper";
                 throw std::invalid_argument(msg.str());
             }
@@ -278,9 +281,9 @@ void Simulation::check_static_balance() const {
     const double floor = 1e-12 * (p.lambda + 2 * p.mu) * d.mesh.width();
     if (!(std::abs(normal + top) <= std::max(1e-9 * std::max(std::abs(normal), std::abs(top)), floor))) {
         Text msg;
-        msg << "initial_state = static: the load path ended out of balance (the contact carries "
-            << normal << " " << d.mesh.force_unit() << ", the top " << -top << " "
-            << d.mesh.force_unit() << "); use initial_state = paper";
+        msg << "initial_state = static: the load path ended out of balance (the contact carries " << normal
+            << " " << d.mesh.force_unit() << ", the top " << -top << " " << d.mesh.force_unit()
+            << "); use initial_state = paper";
         throw std::invalid_argument(msg.str());
     }
 }
@@ -317,7 +320,8 @@ void Simulation::initial_reactions() {
         if (multipliers) {
             normal = -state_.lambda[k];
             for (Eigen::Index t = 0; t < d.mesh.tangents(); ++t)
-                if (state_.lambda.size() > (1 + t) * nc) friction[static_cast<size_t>(t)] = state_.lambda[(1 + t) * nc + k];
+                if (state_.lambda.size() > (1 + t) * nc)
+                    friction[static_cast<size_t>(t)] = state_.lambda[(1 + t) * nc + k];
         } else if (touching) {
             normal = std::max(0.0, product[d.mesh.dof(node, Mesh::normal)]);
         }
@@ -433,10 +437,12 @@ void Simulation::update_edge(int substeps) {
     for (Eigen::Index i = 0; i < nc; ++i) {
         const double share = mesh.edge_share(static_cast<size_t>(i)) * substeps;
         edge_.pressure[i] = -edge_sum_N_[i] / share;
-        for (int t = 0; t < mesh.tangents(); ++t) edge_.friction[static_cast<size_t>(t)][i] = edge_sum_T_[static_cast<size_t>(t)][i] / share;
+        for (int t = 0; t < mesh.tangents(); ++t)
+            edge_.friction[static_cast<size_t>(t)][i] = edge_sum_T_[static_cast<size_t>(t)][i] / share;
         edge_.gap[i] += body_->parameters().initial_gap + mesh.contact_heights[i];
     }
-    for (int t = 0; t < mesh.tangents(); ++t) edge_.slip_velocity[static_cast<size_t>(t)] = c.slip_velocity[static_cast<size_t>(t)];
+    for (int t = 0; t < mesh.tangents(); ++t)
+        edge_.slip_velocity[static_cast<size_t>(t)] = c.slip_velocity[static_cast<size_t>(t)];
     edge_.state = c.state;
 }
 
@@ -471,21 +477,23 @@ void Simulation::check_plausible() {
         Text msg;
         msg << "energy E = " << energy << " " << J << " at t = " << state_.time << " exceeds ";
         if (over_ratio)
-            msg << "max_energy_ratio x (E(0) + work put in" << (put_in == floor ? ", floored by "
-                   "the energy of a strain of 1e-12 over the body" : "") << ") = "
-                << p.max_energy_ratio << " x " << put_in << " " << J;
+            msg << "max_energy_ratio x (E(0) + work put in"
+                << (put_in == floor ? ", floored by "
+                                      "the energy of a strain of 1e-12 over the body"
+                                    : "")
+                << ") = " << p.max_energy_ratio << " x " << put_in << " " << J;
         else
             msg << "max_energy = " << p.max_energy << " " << J;
-        msg << " (E(0) = " << initial << ", clamp_work = " << w.clamp << ", foundation_work = "
-            << w.foundation << ", normal_contact_work = " << w.normal_contact
-            << ", friction_work = " << w.friction << ", damping_work = " << w.damping
-            << " " << J << "): the solution grows without bound";
+        msg << " (E(0) = " << initial << ", clamp_work = " << w.clamp
+            << ", foundation_work = " << w.foundation << ", normal_contact_work = " << w.normal_contact
+            << ", friction_work = " << w.friction << ", damping_work = " << w.damping << " " << J
+            << "): the solution grows without bound";
         // The likely cause: what the run itself shows (the contact creating energy), else the
         // measured map's region.
         if (w.normal_contact > contact_work_warning * put_in)
-            msg << "; likely cause: the contact created normal_contact_work = " << w.normal_contact
-                << " " << J << " of it (the midpoint contact of mass_matrix = "
-                << static_cast<int>(p.mass_matrix) << ")";
+            msg << "; likely cause: the contact created normal_contact_work = " << w.normal_contact << " "
+                << J << " of it (the midpoint contact of mass_matrix = " << static_cast<int>(p.mass_matrix)
+                << ")";
         else if (const std::string why = scheme_warning(p, sliding_speed_); !why.empty())
             msg << "; likely cause: " << why;
         msg << growth_advice();
@@ -498,8 +506,8 @@ void Simulation::check_plausible() {
     if (!(top > -(height + p.initial_gap))) {
         Text msg;
         msg << "at t = " << state_.time << " the top edge is at top_position = " << top
-            << " m, at or below the foundation (the body is " << height << " m high, "
-            << p.initial_gap << " m above it): the body would be compressed to nothing, where "
+            << " m, at or below the foundation (the body is " << height << " m high, " << p.initial_gap
+            << " m above it): the body would be compressed to nothing, where "
             << "linear elasticity means nothing; check top_displacement (or top_force) and its "
             << "coupling";
         throw NumericalFailure(msg.str());
@@ -515,9 +523,10 @@ void Simulation::check_plausible() {
     if (w.normal_contact > contact_work_warning * put_in && !contact_work_warned_) {
         contact_work_warned_ = true;
         Text msg;
-        msg << "at t = " << state_.time << " the contact has created normal_contact_work = "
-            << w.normal_contact << " " << J << ", more than " << contact_work_warning
-            << " of E(0) + the work put in (" << put_in << " " << J << "): energy the scheme makes, not "
+        msg << "at t = " << state_.time
+            << " the contact has created normal_contact_work = " << w.normal_contact << " " << J
+            << ", more than " << contact_work_warning << " of E(0) + the work put in (" << put_in << " " << J
+            << "): energy the scheme makes, not "
             << "physics. mass_matrix = 4 (redistributed_implicit_contact) cannot create it";
         if (p.friction_coefficient > 0) msg << "; with friction, also see damping_stiffness";
         warnings_.push_back(msg.str());
@@ -540,15 +549,15 @@ double Simulation::energy(const State& s) {
     return kinetic + strain;
 }
 
-void Simulation::advance(const StepInputs& in, double s0, double dt, double weight,
-                         StepSums& sums) {
+void Simulation::advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums) {
     const double s1 = s0 + dt;
     SubstepLoad load;
     load.top_start = in.top_displacement + in.top_velocity * s0;
     load.top_end = in.top_displacement + in.top_velocity * s1;
     load.top_rate = in.top_velocity;
     for (size_t t = 0; t < max_tangents; ++t)
-        load.foundation_velocity[t] = in.foundation_velocity[t] + in.foundation_acceleration[t] * 0.5 * (s0 + s1);
+        load.foundation_velocity[t] =
+            in.foundation_velocity[t] + in.foundation_acceleration[t] * 0.5 * (s0 + s1);
     load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
     SubstepReport r;
@@ -558,8 +567,7 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
         state_.lambda = lambda_before_;  // the substep changed nothing else
         const double half = 0.5 * dt;
         // At most 20 halvings (a millionth of the substep), whatever min_internal_step says.
-        if (half < body_->parameters().min_internal_step || weight < 0x1p-19)
-            fail_contact(e, s0, dt, sums);
+        if (half < body_->parameters().min_internal_step || weight < 0x1p-19) fail_contact(e, s0, dt, sums);
         StepStatistics& stats = sums.stats;
         ++stats.refinements;
         stats.smallest_substep = std::min(stats.smallest_substep, half);
@@ -601,15 +609,16 @@ void Simulation::warn_refinements(const StepStatistics& stats) {
         << stats.substeps << " substeps of " << nominal_substep_ << " s (smallest substep "
         << stats.smallest_substep << " s): the contact problem of a substep this large had no "
         << "solution the solver could reach from its start, and the retries cost time";
-    const bool weakening = p.friction_coefficient > 0 && p.stribeck_velocity > 0 &&
-                           p.static_friction_ratio > 1;
+    const bool weakening =
+        p.friction_coefficient > 0 && p.stribeck_velocity > 0 && p.static_friction_ratio > 1;
     if (weakening)
         msg << ". With friction that drops with the slip rate (static_friction_ratio = "
             << p.static_friction_ratio << " over stribeck_velocity = " << p.stribeck_velocity
             << " m/s) a substep is uniquely solvable only below a size that shrinks as the "
                "normal force grows (docs/contract.md, \"Friction that depends on the slip rate\")";
     msg << ". To avoid the retries set internal_step <= " << stats.smallest_substep << " s";
-    if (weakening) msg << ", or soften the drop (a larger stribeck_velocity or a smaller static_friction_ratio)";
+    if (weakening)
+        msg << ", or soften the drop (a larger stribeck_velocity or a smaller static_friction_ratio)";
     warnings_.push_back(msg.str());
 }
 
@@ -619,10 +628,11 @@ std::string Simulation::growth_advice() const {
     msg << ". What to change:";
     const double wedge = wedging_friction(p);
     if (p.friction_coefficient >= wedge)
-        msg << " with F = " << p.friction_coefficient << " no steady sliding exists (from F = "
-            << wedge << " on the damped stability map the clamped body wedges and its normal "
+        msg << " with F = " << p.friction_coefficient << " no steady sliding exists (from F = " << wedge
+            << " on the damped stability map the clamped body wedges and its normal "
             << "force grows without bound), so no damping_stiffness helps: lower "
-               "friction_coefficient below " << wedge << ";";
+               "friction_coefficient below "
+            << wedge << ";";
     else if (p.friction_coefficient > 0)
         msg << " with friction (F = " << p.friction_coefficient << ") steady sliding is "
             << "unstable unless damped: set damping_stiffness (4e-6 s stabilizes F <= 0.3 on "
@@ -639,8 +649,7 @@ std::string Simulation::growth_advice() const {
 // Section 6 of the paper: the one-element step with the normal mass removed is uniquely
 // solvable for every F only below a step size; with F > c/b = (lambda+3mu)/(lambda+mu) and
 // the tangential mass removed too (redistributed_both) it can have several solutions.
-void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
-                              const StepSums& sums) const {
+void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt, const StepSums& sums) const {
     const SceneParameters& p = body_->parameters();
     const double c_over_b = (p.lambda + 3 * p.mu) / (p.lambda + p.mu);
     Text msg;
@@ -649,9 +658,9 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
         << nominal_substep_;
     for (double size = 0.5 * nominal_substep_; size >= dt; size *= 0.5) msg << ", " << size;
     msg << " s (min_internal_step = " << p.min_internal_step << " s); at the last solved "
-        << "substep of this step " << sums.avg.active_contact_nodes << " of "
-        << body_->num_contact_nodes() << " contact nodes were in contact, "
-        << sums.avg.slipping_contact_nodes << " slipping. " << e.what() << ". ";
+        << "substep of this step " << sums.avg.active_contact_nodes << " of " << body_->num_contact_nodes()
+        << " contact nodes were in contact, " << sums.avg.slipping_contact_nodes << " slipping. " << e.what()
+        << ". ";
     if (const std::string why = massless_edge_warning(p); !why.empty()) {
         msg << "Cause: " << why;
     } else if (p.friction_coefficient > c_over_b) {
@@ -672,8 +681,7 @@ void Simulation::fail_contact(const ContactSolveError& e, double s0, double dt,
                "(redistributed_implicit_contact) or 3, or a softer drop (a larger "
                "stribeck_velocity, or static_friction_ratio nearer 1)";
     } else {
-        msg << "Reduce internal_step, or check contact_tolerance (" << p.contact_tolerance
-            << ")";
+        msg << "Reduce internal_step, or check contact_tolerance (" << p.contact_tolerance << ")";
     }
     throw NumericalFailure(msg.str());
 }
@@ -716,8 +724,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
 
 const Observables& Simulation::observables() {
     if (!energies_current_) {
-        std::tie(observables_.kinetic_energy, observables_.strain_energy) =
-            kinetic_and_strain_energy(state_);
+        std::tie(observables_.kinetic_energy, observables_.strain_energy) = kinetic_and_strain_energy(state_);
         observables_.energy = observables_.kinetic_energy + observables_.strain_energy;
         observables_.friction_work = works_.friction;
         observables_.energy_minus_friction_work = observables_.energy - works_.friction;

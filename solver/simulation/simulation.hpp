@@ -3,8 +3,8 @@
 
 #include <memory>
 #include <string>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "body/body.hpp"
 #include "body/stepper.hpp"
@@ -27,7 +27,7 @@ struct Observables {
     Tangential friction_force{};  // per tangent (z: a 3D body's, 0 in 2D)
     double corner_pressure = 0, corner_friction = 0;
     PerComponent top_reaction{};  // per component (z: a 3D body's, 0 in 2D)
-    double max_penetration = 0;  // over the substeps of the last communication step
+    double max_penetration = 0;   // over the substeps of the last communication step
     int active_contact_nodes = 0, slipping_contact_nodes = 0;  // at the last substep
     // What the last communication step cost (StepStatistics): substeps taken (a refined one
     // counts once per piece), refinements, Newton iterations and Gauss-Seidel sweeps.
@@ -70,15 +70,15 @@ struct Observables {
 
 // The bottom edge after a communication step, node by node (the edge history output).
 struct EdgeSnapshot {
-    Eigen::VectorXd x;              // m: the nodes' positions along the edge (reference)
-    Eigen::VectorXd pressure;       // Pa: normal contact force / the node's share of the edge,
-                                    //     averaged over the step like normal_force
+    Eigen::VectorXd x;         // m: the nodes' positions along the edge (reference)
+    Eigen::VectorXd pressure;  // Pa: normal contact force / the node's share of the edge,
+                               //     averaged over the step like normal_force
     // Per tangent (empty past the body's tangents):
     PerTangent<Eigen::VectorXd> friction;       // Pa: force density, averaged like friction_force
     PerTangent<Eigen::VectorXd> slip_velocity;  // m/s: node velocity minus V over the last substep
-    Eigen::VectorXd gap;            // m: height above the foundation at the end of the step
+    Eigen::VectorXd gap;                        // m: height above the foundation at the end of the step
     Eigen::Matrix<signed char, Eigen::Dynamic, 1> state;  // last substep: 0 open, 1 stick, 2 slip
-    Eigen::VectorXd z;              // m: a 3D body's positions across the edge (empty in 2D)
+    Eigen::VectorXd z;  // m: a 3D body's positions across the edge (empty in 2D)
 };
 
 // Inputs over one communication step: values at its start and their time derivatives
@@ -94,11 +94,11 @@ struct StepInputs {
 // and the reduced body's contact factorization from W and the node pattern it was made for.
 struct SimulationSnapshot {
     State state;
-    Works works;              // since t0
-    double initial_energy = 0;  // E(0), J/m
-    Observables observables;  // the last step's averages
-    std::vector<double> factor_substeps;  // Stepper::cached_substeps()
-    EdgeSnapshot edge;        // the last step's edge (its x is the mesh's)
+    Works works;                                 // since t0
+    double initial_energy = 0;                   // E(0), J/m
+    Observables observables;                     // the last step's averages
+    std::vector<double> factor_substeps;         // Stepper::cached_substeps()
+    EdgeSnapshot edge;                           // the last step's edge (its x is the mesh's)
     ContactFactorization contact_factorization;  // Body::contact_factorization()
 };
 
@@ -132,16 +132,14 @@ public:
     // plate (force), which initial_state = static puts the body in balance with. The initial
     // foundation velocity is the sliding speed at which the initialization warning evaluates a
     // slip-rate law.
-    Simulation(const SceneParameters& params, double initial_top_displacement,
-               double start_time = 0, double initial_top_force = 0,
-               double initial_foundation_velocity = 0);
+    Simulation(const SceneParameters& params, double initial_top_displacement, double start_time = 0,
+               double initial_top_force = 0, double initial_foundation_velocity = 0);
     // Starts over from t0 with new parameters of the same discretization
     // (same_discretization): the same bits as a new Simulation, without rebuilding the
     // discretization or the factors it already made (Stepper::restart). If it throws, the
     // simulation is unusable and must be discarded.
-    void restart(const SceneParameters& params, double initial_top_displacement,
-                 double start_time = 0, double initial_top_force = 0,
-                 double initial_foundation_velocity = 0);
+    void restart(const SceneParameters& params, double initial_top_displacement, double start_time = 0,
+                 double initial_top_force = 0, double initial_foundation_velocity = 0);
 
     // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
     // fails is redone from its start as two halves, recursively down to min_internal_step
@@ -168,8 +166,13 @@ public:
     // bits (its kept GCR directions would cost ~10 MB a snapshot at 1,600 contact nodes).
     SimulationSnapshot snapshot() const {
         body_->forget_kept();
-        return {state_,          works_, initial_energy_, observables_, body_->cached_substeps(),
-                edge_,           body_->contact_factorization()};
+        return {state_,
+                works_,
+                initial_energy_,
+                observables_,
+                body_->cached_substeps(),
+                edge_,
+                body_->contact_factorization()};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -183,13 +186,12 @@ public:
 
     // A simulation of a body built elsewhere (the benchmarks' Craig-Bampton body); the one
     // above builds the body its parameters ask for (modes).
-    Simulation(std::unique_ptr<Body> body, double initial_top_displacement,
-               double start_time = 0, double initial_top_force = 0,
-               double initial_foundation_velocity = 0);
+    Simulation(std::unique_ptr<Body> body, double initial_top_displacement, double start_time = 0,
+               double initial_top_force = 0, double initial_foundation_velocity = 0);
 
 private:
     struct StepSums;
-    void initial_reactions();  // the force outputs before the first step
+    void initial_reactions();                             // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static
     void check_static_balance() const;
     // One substep over [s0, s0 + dt] of the step (times from its start), halved on failure;
@@ -201,7 +203,7 @@ private:
     // After a step: the blow-up guard and a top below the foundation throw NumericalFailure;
     // the contact's created energy and a top moved beyond the height warn.
     void check_plausible();
-    std::string growth_advice() const;              // what to change when E runs away
+    std::string growth_advice() const;                   // what to change when E runs away
     void warn_refinements(const StepStatistics& stats);  // halvings piled up in the step
     void move_clamp(double top, double rate);
     double energy(const State& s);  // E of a state

@@ -45,9 +45,9 @@ PathKind path_kind(const std::string& path, uint64_t& size) {
     struct _stat64 s;
     if (_wstat64(wide(path).c_str(), &s) != 0) return PathKind::missing;
     size = static_cast<uint64_t>(s.st_size);
-    return (s.st_mode & _S_IFMT) == _S_IFREG ? PathKind::regular
+    return (s.st_mode & _S_IFMT) == _S_IFREG   ? PathKind::regular
            : (s.st_mode & _S_IFMT) == _S_IFDIR ? PathKind::directory
-                                              : PathKind::other;
+                                               : PathKind::other;
 }
 File open_file(const std::string& path, const char* mode) {
     return File(_wfopen(wide(path).c_str(), wide(mode).c_str()));
@@ -94,12 +94,12 @@ PathKind path_kind(const std::string& path, uint64_t& size) {
     struct stat s;
     if (stat(path.c_str(), &s) != 0) return PathKind::missing;
     size = static_cast<uint64_t>(s.st_size);
-    return S_ISREG(s.st_mode) ? PathKind::regular : S_ISDIR(s.st_mode) ? PathKind::directory : PathKind::other;
+    return S_ISREG(s.st_mode)   ? PathKind::regular
+           : S_ISDIR(s.st_mode) ? PathKind::directory
+                                : PathKind::other;
 }
 File open_file(const std::string& path, const char* mode) { return File(std::fopen(path.c_str(), mode)); }
-bool seek_file(std::FILE* f, uint64_t offset) {
-    return fseeko(f, static_cast<off_t>(offset), SEEK_SET) == 0;
-}
+bool seek_file(std::FILE* f, uint64_t offset) { return fseeko(f, static_cast<off_t>(offset), SEEK_SET) == 0; }
 bool resize_file(std::FILE* f, uint64_t size) {
     return std::fflush(f) == 0 && ftruncate(fileno(f), static_cast<off_t>(size)) == 0;
 }
@@ -113,8 +113,7 @@ bool create_directories(const std::string& path) {
     for (size_t at = 0; at != std::string::npos;) {
         at = path.find('/', at + 1);
         const std::string part = path.substr(0, at);
-        if (!part.empty() && stat(part.c_str(), &s) != 0 && mkdir(part.c_str(), 0777) != 0 &&
-            errno != EEXIST)
+        if (!part.empty() && stat(part.c_str(), &s) != 0 && mkdir(part.c_str(), 0777) != 0 && errno != EEXIST)
             error = errno;
     }
     if (stat(path.c_str(), &s) == 0 && S_ISDIR(s.st_mode)) return true;

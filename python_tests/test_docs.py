@@ -177,3 +177,13 @@ def test_no_issue_numbers_in_code_docs_or_examples():
                 if re.search(r"\bissues? #?\d+", line, re.I):
                     found.append(f"{path.relative_to(ROOT)}:{line_number}")
     assert not found, found
+
+
+def test_every_benchmark_is_in_the_benchmarks_readme():
+    """benchmarks/README.md names every benchmark script and every results file's stem."""
+    text = (ROOT / "benchmarks" / "README.md").read_text()
+    missing = [p.name for p in (ROOT / "benchmarks").glob("*.py") if f"`{p.name}`" not in text]
+    assert not missing, missing
+    stems = {p.name.split(".")[0] for p in (ROOT / "benchmarks" / "results").iterdir()}
+    unnamed = [s for s in sorted(stems) if f"`{s}`" not in text and f"`{s}.json`" not in text]
+    assert not unnamed, unnamed

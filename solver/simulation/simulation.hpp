@@ -190,7 +190,11 @@ public:
                double initial_top_force = 0, double initial_foundation_velocity = 0);
 
 private:
-    struct StepSums;
+    // What a step's substeps add up.
+    struct StepSums {
+        Observables avg;
+        StepStatistics stats;
+    };
     void initial_reactions();                             // the force outputs before the first step
     void static_initial_state(double top, double force);  // initial_state = static
     void check_static_balance() const;

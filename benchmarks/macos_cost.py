@@ -2,7 +2,7 @@
 <= 5 MB with every platform; a default simulate_fmu's start-up share <= 20 %), in one run:
 build/ContactBody.fmu as it is against the same FMU without its macOS folders (the FMU before
 macOS went in: its other binaries are the same files), interleaved in each round. Also the
-static facts of each macOS binary (contactbody.macho; the tests assert them, this reports them).
+static facts of each macOS binary (contactbody.tools.macho; the tests assert them, this reports them).
 No macOS runs here: nothing is run on macOS.
 
 Writes benchmarks/results/macos.json and macos.md.
@@ -17,7 +17,7 @@ import zipfile
 
 from portable_benchmark import median_and_range, simulate_seconds
 
-from contactbody import macho, platforms
+from contactbody.tools import macho, platforms
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results"

@@ -30,7 +30,7 @@ from fmpy.logging import addLoggerProxy
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
-# Where the wheel (contactbody.release) puts the FMUs: package data, beside this file.
+# Where the wheel (contactbody.tools.release) puts the FMUs: package data, beside this file.
 PACKAGED = pathlib.Path(__file__).resolve().parent / "fmus"
 
 

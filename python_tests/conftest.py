@@ -13,7 +13,7 @@ import time
 import fmpy
 import pytest
 
-from contactbody import platforms
+from contactbody.tools import platforms
 
 # An fmpy FMU2Slave that keeps its log messages in .messages (status, category, text).
 from contactbody.fmu import Instance  # noqa: F401

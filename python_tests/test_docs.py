@@ -8,7 +8,7 @@ import fmpy
 
 from conftest import FMU, ROOT
 from contactbody.docs import variable_table
-from contactbody.quotes import documents, quotes
+from contactbody.tools.quotes import documents, quotes
 
 DOCUMENTS = [ROOT / "README.md", ROOT / "examples" / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 
@@ -59,7 +59,7 @@ def test_readme_is_the_front_door():
 
 def test_numbers_quoted_from_results_files_hold():
     """A number that prose quotes from a results file carries a marker naming
-    the file and the value (contactbody/quotes.py); each is the value rounded as shown."""
+    the file and the value (contactbody/tools/quotes.py); each is the value rounded as shown."""
     found = {document: quotes(document) for document in documents()}
     wrong = [f"{d.relative_to(ROOT)}:{line}: {shown} against {value}"
              for d, entries in found.items() for line, shown, value, holds in entries if not holds]
@@ -71,7 +71,7 @@ def test_quote_checker_catches_a_wrong_number(tmp_path, monkeypatch):
     results = tmp_path / "r.json"
     results.write_text('{"runs": [{"n": 1, "ratio": 7.129}, {"n": 2, "ratio": 0.7649}, '
                        '{"n": 3, "scene": "a, b/c", "ratio": 2.5}]}')
-    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    monkeypatch.setattr("contactbody.tools.quotes.ROOT", tmp_path)
     page = tmp_path / "p.md"
     page.write_text("a 7.1 ×<!-- r.json: runs/n=1/ratio --> b 0.77<!-- r.json: runs/n=2/ratio -->"
                     " c 7.12<!-- r.json: runs/0/ratio --> d <!-- r.json: runs/1/ratio -->"
@@ -84,7 +84,7 @@ def test_table_checker_catches_a_changed_row(tmp_path, monkeypatch):
     """A table marked as copied from a results table holds only while every row below its
     header is a line of that file."""
     (tmp_path / "r.md").write_text("| a | b |\n|---|---|\n| 1 | 2.5 |\n| 2 | 3.5 |\n")
-    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    monkeypatch.setattr("contactbody.tools.quotes.ROOT", tmp_path)
     page = tmp_path / "p.md"
     table = "| a | b |\n|---|---|\n| 1 | 2.5 |\n| 2 | {} |\n"
     page.write_text("<!-- rows of r.md -->\n" + table.format("3.5") + "\ntext\n\n"
@@ -95,16 +95,16 @@ def test_table_checker_catches_a_changed_row(tmp_path, monkeypatch):
 
 def test_generated_table_ratio_and_text_lines_are_checked(tmp_path, monkeypatch):
     """A table generated from a results file holds only while it is what its generator makes of
-    the file (contactbody/doc_tables.py); a ratio quote is the ratio of the two values; lines
+    the file (contactbody/tools/doc_tables.py); a ratio quote is the ratio of the two values; lines
     copied from a text results file into a fenced block must be lines of it."""
-    from contactbody import doc_tables
+    from contactbody.tools import doc_tables
     data = {"impact": [{"mass_matrix": "standard", "dt": 4e-6, "energy_ratio": 7.4228,
                         "contact_intervals": 2},
                        {"mass_matrix": "standard", "dt": 1e-6, "energy_ratio": 12.1523,
                         "contact_intervals": 4}]}
     (tmp_path / "s.json").write_text(json.dumps(data))
     (tmp_path / "r.txt").write_text("h  mean\n2  11.41\n1  23.98\n")
-    monkeypatch.setattr("contactbody.quotes.ROOT", tmp_path)
+    monkeypatch.setattr("contactbody.tools.quotes.ROOT", tmp_path)
     good = doc_tables.GENERATORS["impact"](data)
     assert "| standard | 4e-6 / 1e-6 | 7.4228 / 12.1523 | 2 / 4 |" in good
     page = tmp_path / "p.md"

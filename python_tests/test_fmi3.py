@@ -15,7 +15,7 @@ from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
 from conftest import FMU, PLATFORM, SANITIZED, extract_for
-from contactbody import macho, platforms
+from contactbody.tools import macho, platforms
 
 pytestmark = pytest.mark.skipif(PLATFORM != "linux64", reason="the FMI 3.0 FMU is tested on linux64")
 

@@ -19,7 +19,7 @@ from elftools.elf.elffile import ELFFile
 from elftools.elf.gnuversions import GNUVerNeedSection
 
 from conftest import FMU, ROOT, SANITIZED
-from contactbody import macho, platforms
+from contactbody.tools import macho, platforms
 
 # The sanitizer job packs its native instrumented binary instead: nothing here applies.
 pytestmark = pytest.mark.skipif(SANITIZED, reason="the sanitizer build is not the portable one")

@@ -1,4 +1,4 @@
-"""The release folder (contactbody.release, scripts/release.sh) and its wheel: installed into a
+"""The release folder (contactbody.tools.release, scripts/release.sh) and its wheel: installed into a
 fresh virtual environment that has only pip, with no checkout on sys.path and nothing compiled
 (only binary wheels), it runs README's quick start and a two-point study with
 contactbody-study, and gets the numbers the checkout gets."""
@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 
 from conftest import FMU, ROOT, SANITIZED
-from contactbody.release import FMUS, release
+from contactbody.tools.release import FMUS, release
 from test_quick_start import quick_start
 
 pytestmark = pytest.mark.skipif(SANITIZED, reason="the release is made of the portable FMUs")
@@ -58,6 +58,9 @@ def test_the_release_holds_the_fmus_the_wheel_and_checksums(dist):
     assert wheel.name.endswith("-py3-none-any.whl")  # pure Python: the binaries are FMU data
     with zipfile.ZipFile(wheel) as z:
         packed = {n: z.read(n) for n in z.namelist() if n.startswith("contactbody/fmus/")}
+        # the user's API only: the repository tooling (contactbody/tools) stays in the checkout
+        assert not [n for n in z.namelist() if n.startswith("contactbody/tools/")]
+        assert "contactbody/fmu.py" in z.namelist()
         assert "Root-Is-Purelib: true" in z.read(
             next(n for n in z.namelist() if n.endswith(".dist-info/WHEEL"))).decode()
     assert sorted(packed) == sorted(f"contactbody/fmus/{n}.fmu" for n in FMUS)

@@ -22,7 +22,7 @@ timed pytest .venv/bin/python -m pytest -n auto --dist loadscope python_tests "$
 
 if [ "${SKIP_PLATFORMS:-0}" != 1 ]; then
     # Each other platform's job, as platforms.json says.
-    timed platform-jobs .venv/bin/python -m contactbody.platforms test-jobs "$@"
+    timed platform-jobs .venv/bin/python -m contactbody.tools.platforms test-jobs "$@"
 fi
 
 if [ "${SKIP_SANITIZERS:-0}" != 1 ]; then

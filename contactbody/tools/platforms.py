@@ -1,7 +1,7 @@
 """The platform table (platforms.json at the top of the checkout): the platforms whose binaries
 the FMUs carry, how each is built and how it is tested.
 
-    .venv/bin/python -m contactbody.platforms test-jobs [PYTEST ARGS]   # each platform's job
+    .venv/bin/python -m contactbody.tools.platforms test-jobs [PYTEST ARGS]   # each platform's job
 
 (scripts/setup.sh reads the apt packages from the same file with Debian's python3, before the
 virtual environment exists.)
@@ -12,7 +12,7 @@ import pathlib
 import subprocess
 import sys
 
-TABLE = pathlib.Path(__file__).resolve().parents[1] / "platforms.json"
+TABLE = pathlib.Path(__file__).resolve().parents[2] / "platforms.json"
 
 
 def platforms():

@@ -9,7 +9,7 @@ The path's segments are keys of a JSON object, indices of a list, or `key=value,
 one record of a list whose fields have those values (a value with a comma or a slash in double
 quotes); `PATH ÷ PATH` and `PATH − PATH` quote the ratio and the difference of two values of
 the file, `min PATH` and `max PATH` the extremes over its `*` segments (every item of a list
-or value of an object), `=NAME` a value that contactbody/doc_tables.py computes from it. A
+or value of an object), `=NAME` a value that contactbody/tools/doc_tables.py computes from it. A
 unit or sign may stand between the number and the comment (`7.1 ×<!-- ... -->`, `2.44 MB<!-- ... -->`). The quote holds when the value,
 rounded to the digits the prose shows, is the number shown; `scale=K` after the path multiplies
 the value first (a size in bytes quoted in MB: `scale=1e-6`).
@@ -20,21 +20,21 @@ A table copied from a results table carries the marker on the line before it,
 
 and holds when every one of its rows below the header is a line of that file. Lines of a text
 results file are copied the same way into a fenced block after the marker. A table that
-reshapes a results file is generated from it (contactbody/doc_tables.py) and marked
+reshapes a results file is generated from it (contactbody/tools/doc_tables.py) and marked
 
     <!-- table convergence from examples/results/convergence.json -->
 
 It holds when it is what that generator makes of the file today.
 
-    .venv/bin/python -m contactbody.quotes        # lists every quote and whether it holds
+    .venv/bin/python -m contactbody.tools.quotes        # lists every quote and whether it holds
 """
 import json
 import math
 import re
 import sys
 
-from contactbody import doc_tables
-from contactbody.doc_tables import ROOT, documents  # noqa: F401 (quotes.documents, too)
+from contactbody.tools import doc_tables
+from contactbody.tools.doc_tables import ROOT, documents  # noqa: F401 (quotes.documents, too)
 
 
 NUMBER = r"(?P<number>[-−]?\d[\d,]*(?:\.\d+)?(?:e[-+−]?\d+)?)"
@@ -100,7 +100,7 @@ def value_at(file, path):
             left, _, right = path.partition(operator)
             return combine(value_at(file, left), value_at(file, right))
     node = json.loads((ROOT / file).read_text())
-    if path.startswith("="):  # a value computed from the file (contactbody/doc_tables.py)
+    if path.startswith("="):  # a value computed from the file (contactbody/tools/doc_tables.py)
         return float(doc_tables.DERIVED[path[1:]](node))
     for name, aggregate in (("min ", min), ("max ", max)):
         if path.startswith(name):
@@ -165,7 +165,7 @@ def quotes(document):
         found.append((line, f"table {match['name']}", f"{match['file']}" + (
             "" if holds else f": shown {differs[0][0] if differs else shown.strip()[-60:]!r}, "
             f"generated {differs[0][1] if differs else expected.strip()[-60:]!r} "
-            "(python -m contactbody.doc_tables --write)"), holds))
+            "(python -m contactbody.tools.doc_tables --write)"), holds))
     for marker in MARKER.finditer(text):
         in_code = marker.start() > 0 and text[marker.start() - 1] == "`"  # shown, not used
         if marker.start() not in covered and not in_code:

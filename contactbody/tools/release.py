@@ -1,6 +1,6 @@
 """The release folder: what a user downloads instead of building.
 
-    .venv/bin/python -m contactbody.release [DIST]     # default dist/; scripts/release.sh
+    .venv/bin/python -m contactbody.tools.release [DIST]     # default dist/; scripts/release.sh
 
 DIST gets, from the FMUs that scripts/setup.sh built in build/:
 - ContactBody.fmu, ContactBody_fmi3.fmu, ContactBody3D.fmu, ContactBody3D_fmi3.fmu,
@@ -23,7 +23,7 @@ import sys
 import tempfile
 import zipfile
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMUS = ["ContactBody", "ContactBody_fmi3", "ContactBody3D", "ContactBody3D_fmi3", "BeltDrive", "Press"]
 
 

@@ -4,10 +4,10 @@ A generated table carries, on the line before it, the marker
 
     <!-- table convergence from examples/results/convergence.json -->
 
-`contactbody.quotes` checks that the table below the marker is what the named generator makes
+`contactbody.tools.quotes` checks that the table below the marker is what the named generator makes
 of that file today; `--write` rewrites every marked table from its file:
 
-    .venv/bin/python -m contactbody.doc_tables --write
+    .venv/bin/python -m contactbody.tools.doc_tables --write
 
 A table copied unchanged from a results .md uses `<!-- rows of FILE -->` instead.
 """
@@ -17,7 +17,7 @@ import pathlib
 import re
 import sys
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def documents():

@@ -52,3 +52,21 @@ def test_material_helpers():
         to_fmu({"youngs_modulus": 1e9})
     with pytest.raises(ValueError, match="poisson_ratio must be in"):
         lame(1e9, 0.5)
+
+
+def test_the_readme_3d_quick_start_runs_and_its_friction_follows_the_foundation():
+    """README's 3D block, as printed: the block slides under a foundation moving along (2, 1.5)
+    m/s, and isotropic friction drags it along that heading (a law that treated x and z apart,
+    or a z twin lost on the way, would turn it), bounded by F N."""
+    text = (ROOT / "README.md").read_text()
+    block = text[text.index("A 3D body:"):]
+    code = re.search(r"```python\n(.*?)```", block, re.S).group(1)
+    scope = {}
+    exec(compile(quick_start().split("r = simulate_fmu")[0], "README imports", "exec"), scope)
+    with contextlib.redirect_stdout(io.StringIO()):
+        exec(compile(code, "README 3D quick start", "exec"), scope)
+    r = scope["r"]
+    fx, fz, n = r["friction_force"][-1], r["friction_force_z"][-1], r["normal_force"][-1]
+    assert n > 0 and np.hypot(fx, fz) > 0.5 * 0.3 * n
+    assert np.hypot(fx, fz) <= 0.3 * n * (1 + 1e-9)
+    assert abs(np.degrees(np.arctan2(fz, fx) - np.arctan2(1.5, 2.0))) < 1.0

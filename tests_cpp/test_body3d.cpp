@@ -449,6 +449,43 @@ TEST(Body3D, SlipRateLawOnTheDiscClosesTheBalanceAndObeysTheLaw) {
 // that turns a right angle with static friction (stick and slip), variants 1 and 4. Every
 // substep's normal force, friction force (x, z) and clamp reactions agree to 1e-8 of the normal
 // force, the works to 1e-9; the sparse path's balance closes to 1e-9.
+// A slip-rate law's contact solve that fails at every substep size (here forced: no iteration
+// allowed) names the law's steep drop as the cause, and the settings that run such scenes,
+// not "Reduce internal_step": on a 3D body (the disc and its node-by-node fallback) as on a
+// 2D one.
+TEST(Body3D, AFailedSlipRateSolveNamesTheDropAndSettingsThatRun) {
+    Box b;
+    SceneParameters p3 = box_scene(b, "box3d_failing.msh", MassVariant::redistributed_normal);
+    SceneParameters p2;
+    for (SceneParameters* p : {&p3, &p2}) {
+        SCOPED_TRACE(p->dimension);
+        p->friction_coefficient = 0.3;
+        p->static_friction_ratio = 1.6;
+        p->stribeck_velocity = 0.3;
+        p->min_internal_step = 1e-7;
+        Simulation sim(*p, -2.5e-5);
+        StepInputs in;
+        in.foundation_velocity = {2, p->dimension == 3 ? -1.5 : 0.0};
+        in.top_displacement = -2.5e-5;
+        sim.do_step(1e-5, in);  // pressed and sliding
+        ContactSolverOptions& options = sim.body().contact_options();
+        options.max_iterations = 0;
+        options.max_sweeps = 0;
+        try {
+            sim.do_step(1e-5, in);
+            FAIL() << "the step should fail";
+        } catch (const NumericalFailure& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("Cause: friction that drops with the slip rate (static_friction_ratio = 1.6 "
+                                "over stribeck_velocity = 0.3 m/s)"),
+                      std::string::npos)
+                << what;
+            EXPECT_NE(what.find("mass_matrix = 4"), std::string::npos) << what;
+            EXPECT_EQ(what.find("Reduce internal_step"), std::string::npos) << what;
+        }
+    }
+}
+
 TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
     const double dt = 2e-6;
     for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact}) {

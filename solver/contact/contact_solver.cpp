@@ -97,9 +97,12 @@ double ContactSolver::apply_law(const ContactProblem& p, const Eigen::VectorXd& 
             const double size = tangential_size(slip, tangents);
             double dF = 0;
             const double F = p.coefficient(i, size, &dF);
-            law_dF_[i] = size > 0 ? dF : 0.0;  // |s| has no derivative at 0
+            // At s = 0 the interval takes the right derivative (direction +x), the disc none:
+            // docs/decisions.md, "One friction law for any number of tangents".
+            const bool derivative = size > 0 || tangents == 1;
+            law_dF_[i] = derivative ? dF : 0.0;
             for (int t = 0; t < tangents; ++t)
-                law_slip_direction_[t * n + i] = size > 0 ? slip[t] / size : 0.0;
+                law_slip_direction_[t * n + i] = size > 0 ? slip[t] / size : derivative ? 1.0 : 0.0;
             return F;
         },
         [&](Eigen::Index i, const NodeLaw& law) {

@@ -298,15 +298,14 @@ const std::vector<Variable>& all_rows() {
                     "and its top face clamped. Setting it sets edge_nodes to its number of contact nodes")
                     .as_structural(Standard::both)
                     .then(follow_mesh)
-                    .starting_at(solid_default_mesh)) PLANAR_ROW(real("width", 1, &Values::width, "m", 0.1,
-                                                                      1e-6, inf, "Width W of the body"))
-                PLANAR_ROW(real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"))
-                    PLANAR_ROW(integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x")
-                                   .as_structural(Standard::both)
-                                   .then(follow_nx)) PLANAR_ROW(integer("ny", 4, &Values::ny, 20, 1,
-                                                                        max_cells_per_direction,
-                                                                        "Cells along y")
-                                                                    .as_structural(Standard::both))
+                    .starting_at(solid_default_mesh))
+        PLANAR_ROW(real("width", 1, &Values::width, "m", 0.1, 1e-6, inf, "Width W of the body"))
+            PLANAR_ROW(real("height", 2, &Values::height, "m", 0.1, 1e-6, inf, "Height H of the body"))
+                PLANAR_ROW(integer("nx", 3, &Values::nx, 20, 1, max_cells_per_direction, "Cells along x")
+                               .as_structural(Standard::both)
+                               .then(follow_nx))
+                    PLANAR_ROW(integer("ny", 4, &Values::ny, 20, 1, max_cells_per_direction, "Cells along y")
+                                   .as_structural(Standard::both))
                         integer("edge_nodes", 31, &Values::edge_nodes,
                                 solid_model ? solid_default_mesh_contact_nodes : 21, solid_model ? 3 : 2,
                                 solid_model ? static_cast<double>(max_nodes) : max_cells_per_direction + 1,
@@ -373,11 +372,11 @@ const std::vector<Variable>& all_rows() {
              "Uniform initial velocity of the body, y (with the plate under force control)"),
         SOLID_ROW(real("initial_velocity_z", 37, &Values::initial_velocity, 2, "m/s", 0, none, none,
                        "Uniform initial velocity of the body, z (the clamped dofs excepted)"))
-            enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0,
-                        "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a "
-                        "free vibration follows) or static (the static equilibrium under the initial "
-                        "top_displacement, or under top_force > 0 with top_control = force, with the "
-                        "foundation at rest, reached by a quasi-static frictional load path)"),
+        enumeration("initial_state", 26, &Values::initial_state, "InitialState", 0,
+                    "Initial displacement: paper (u_y = top_displacement y / H, not an equilibrium: a "
+                    "free vibration follows) or static (the static equilibrium under the initial "
+                    "top_displacement, or under top_force > 0 with top_control = force, with the "
+                    "foundation at rest, reached by a quasi-static frictional load path)"),
         real("max_energy", 29, &Values::max_energy, per_body("J/m", "J"), 0, 0, inf,
              "Blow-up guard: a step that ends with the energy E above this fails with an error status, "
              "naming the time, E, the works and the likely cause; 0 = no absolute limit"),
@@ -435,10 +434,10 @@ const std::vector<Variable>& all_rows() {
         SOLID_ROW(real("foundation_velocity_z", 38, &Values::foundation_velocity, 1, "m/s", 0, none, none,
                        "Velocity of the rigid foundation in its plane, z component")
                       .as_input(Input::foundation_velocity_z))
-            real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none,
-                 per_body("Prescribed vertical displacement of the top edge",
-                          "Prescribed vertical (y) displacement of the clamp group"))
-                .as_input(Input::top_displacement),
+        real("top_displacement", 21, &Values::top_displacement, "m", -2.5e-5, none, none,
+             per_body("Prescribed vertical displacement of the top edge",
+                      "Prescribed vertical (y) displacement of the clamp group"))
+            .as_input(Input::top_displacement),
         real("top_force", 22, &Values::top_force, per_body("N/m", "N"), 0, none, none,
              "Force pressing the top plate down (top_control = force), positive downwards")
             .as_input(Input::top_force),
@@ -463,10 +462,10 @@ const std::vector<Variable>& all_rows() {
         SOLID_ROW(output("friction_force_z", 125, "N",
                          "Total friction force on the body, signed z component: the average over the last "
                          "communication step"))
-            output("corner_pressure", 107, "Pa",
-                   per_body("Contact pressure at node (0,0), averaged over the last step",
-                            "Contact pressure at the first contact node (least x, then least z), averaged "
-                            "over the last step")),
+        output("corner_pressure", 107, "Pa",
+               per_body("Contact pressure at node (0,0), averaged over the last step",
+                        "Contact pressure at the first contact node (least x, then least z), averaged "
+                        "over the last step")),
         output("corner_friction", 108, "Pa",
                per_body("Friction force density at node (0,0), averaged over the last step",
                         "Friction force density at the first contact node, x component, averaged over the "
@@ -480,7 +479,7 @@ const std::vector<Variable>& all_rows() {
         SOLID_ROW(output("top_reaction_z", 126, "N",
                          "Force of the clamp (or plate) on the body, signed z component, averaged over the "
                          "last communication step"))
-            output("active_contact_nodes", 111, "", "Contact nodes in contact at the last substep"),
+        output("active_contact_nodes", 111, "", "Contact nodes in contact at the last substep"),
         output("slipping_contact_nodes", 112, "", "Contact nodes slipping at the last substep"),
         output("max_penetration", 113, "m",
                "Largest penetration of the bottom nodes at the ends u^{k+1} of the last step's substeps. "
@@ -520,23 +519,23 @@ const std::vector<Variable>& all_rows() {
         SOLID_ROW(edge_output("edge_z", 136, "m", edge_field<&EdgeSnapshot::z>,
                               "Position z of each contact node (reference configuration)")
                       .as_discrete())
-            edge_output("edge_pressure", 131, "Pa", edge_field<&EdgeSnapshot::pressure>,
-                        "Contact pressure at each bottom node, averaged over the last communication step "
-                        "like normal_force (node shares x pressures sum to normal_force)"),
+        edge_output("edge_pressure", 131, "Pa", edge_field<&EdgeSnapshot::pressure>,
+                    "Contact pressure at each bottom node, averaged over the last communication step "
+                    "like normal_force (node shares x pressures sum to normal_force)"),
         edge_output("edge_friction", 132, "Pa", edge_field<&EdgeSnapshot::friction, 0>,
                     "Friction force density at each bottom node, signed x component, averaged like "
                     "friction_force (node shares x densities sum to friction_force)"),
         SOLID_ROW(edge_output("edge_friction_z", 137, "Pa", edge_field<&EdgeSnapshot::friction, 1>,
                               "Friction force density at each contact node, signed z component, averaged "
                               "like friction_force_z (node shares x densities sum to friction_force_z)"))
-            edge_output("edge_slip_velocity", 133, "m/s", edge_field<&EdgeSnapshot::slip_velocity, 0>,
-                        "Velocity x of each bottom node relative to the foundation over the last substep"),
+        edge_output("edge_slip_velocity", 133, "m/s", edge_field<&EdgeSnapshot::slip_velocity, 0>,
+                    "Velocity x of each bottom node relative to the foundation over the last substep"),
         SOLID_ROW(
             edge_output("edge_slip_velocity_z", 138, "m/s", edge_field<&EdgeSnapshot::slip_velocity, 1>,
                         "Velocity z of each contact node relative to the foundation over the last substep"))
-            edge_output("edge_gap", 134, "m", edge_field<&EdgeSnapshot::gap>,
-                        "Height of each bottom node above the foundation at the end of the step (< 0: "
-                        "penetration, see max_penetration)"),
+        edge_output("edge_gap", 134, "m", edge_field<&EdgeSnapshot::gap>,
+                    "Height of each bottom node above the foundation at the end of the step (< 0: "
+                    "penetration, see max_penetration)"),
         edge_state_output("edge_state", 135,
                           "Contact state of each bottom node in the last substep: open, stick or slip "
                           "(counts: active_contact_nodes = stick + slip, slipping_contact_nodes = slip)"),

@@ -281,7 +281,8 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
     for (size_t t = 0; t < max_tangents; ++t) avg.friction_force[t] += weight * r.friction_force[t];
     avg.corner_pressure -= weight * r.corner_lambda_N;
     avg.corner_friction += weight * r.corner_lambda_T;
-    for (size_t c3 = 0; c3 < 3; ++c3) avg.top_reaction[c3] += weight * r.top_reaction[c3];
+    for (size_t component = 0; component < 3; ++component)
+        avg.top_reaction[component] += weight * r.top_reaction[component];
     avg.max_penetration = std::max(avg.max_penetration, r.max_penetration);
     avg.active_contact_nodes = r.active_nodes;
     avg.slipping_contact_nodes = r.slipping_nodes;

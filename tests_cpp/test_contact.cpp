@@ -293,8 +293,10 @@ TEST(ContactSolver, DiscProblemSolvedByNewtonAndNodeByNode) {
 // (update_factorization) reaches the same multipliers as the one that refactors, in as many
 // Newton iterations, with most of its factorizations replaced by updates; so does the one
 // that also projects slipping nodes onto their Coulomb bound (project_slip), whose solves a
-// fresh solver repeats bit for bit once told the factored pattern (factor_at). W is scaled as a
-// compliance (1e-9), so that the update cannot lean on entries of order one.
+// fresh solver repeats bit for bit once told the factored pattern (factor_at), and so does the
+// full generalized Jacobian's Newton (reduced_newton false, the method of two tangents), which
+// factors at every iteration. W is scaled as a compliance (1e-9), so that the update cannot
+// lean on entries of order one.
 TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
     const int n = 160;
     std::mt19937 rng(11);
@@ -313,13 +315,15 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
     Eigen::VectorXd phase(n);
     for (int i = 0; i < n; ++i) phase[i] = 3 * u(rng);
 
-    ContactSolver refactoring, updating, projecting;
-    ContactSolverOptions refactor_options{1e-12, 100}, update_options{1e-12, 100};
+    ContactSolver refactoring, updating, projecting, full;
+    ContactSolverOptions refactor_options{1e-12, 100}, update_options{1e-12, 100}, full_options{1e-12, 100};
+    full_options.reduced_newton = false;
     update_options.update_factorization = true;
     ContactSolverOptions project_options = update_options;
     project_options.project_slip = true;
-    Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda, c_lambda = a_lambda;
-    long a_iterations = 0, b_iterations = 0, c_iterations = 0, replayed = 0;
+    Eigen::VectorXd a_lambda = Eigen::VectorXd::Zero(2 * n), b_lambda = a_lambda, c_lambda = a_lambda,
+                    d_lambda = a_lambda;
+    long a_iterations = 0, b_iterations = 0, c_iterations = 0, d_iterations = 0, replayed = 0;
     for (int step = 0; step < 200; ++step) {
         const double t = 0.004 * step;
         for (int i = 0; i < n; ++i) {
@@ -333,6 +337,9 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
         a_iterations += refactoring.solve(p, refactor_options, a_lambda).iterations;
         b_iterations += updating.solve(p, update_options, b_lambda).iterations;
         c_iterations += projecting.solve(p, project_options, c_lambda).iterations;
+        d_iterations += full.solve(p, full_options, d_lambda).iterations;
+        ASSERT_LE((a_lambda - d_lambda).lpNorm<Eigen::Infinity>(), 1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
+            << "step " << step;
         ASSERT_LE((a_lambda - b_lambda).lpNorm<Eigen::Infinity>(), 1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
             << "step " << step;
         ASSERT_LE((a_lambda - c_lambda).lpNorm<Eigen::Infinity>(), 1e-10 * a_lambda.lpNorm<Eigen::Infinity>())
@@ -347,6 +354,9 @@ TEST(ContactSolver, UpdatedFactorizationAndProjectedSlipSolveAsARefactoredOne) {
     }
     EXPECT_EQ(a_iterations, b_iterations);
     EXPECT_EQ(a_iterations, c_iterations);
+    EXPECT_GT(d_iterations, 0);
+    EXPECT_EQ(full.factorizations(), d_iterations);
+    EXPECT_LT(refactoring.factorizations(), d_iterations / 2);  // the reduced system's LU is reused
     EXPECT_GT(replayed, 5);
     EXPECT_EQ(refactoring.factorization_updates(), 0);
     EXPECT_GT(updating.factorization_updates(), 100);  // measured: 95 against 21 and 176 updates

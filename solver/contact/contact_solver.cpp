@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "contact/friction_law.hpp"
+#include "linalg/dense_lu.hpp"
 #include "util/build_features.hpp"
 #include "util/text.hpp"
 
@@ -128,45 +129,30 @@ void ContactSolver::factor(const ContactProblem& p, const ContactSolverOptions& 
         for (Eigen::Index i = 0; i < n; ++i)
             if (pattern_[i] == 1) reduced_.push_back(static_cast<int>(n + i));
     const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
-    // Eigen's blocked LU (its kernel, on the leading k x k of a buffer sized once for all
-    // m unknowns: the reduced size changes with the active set, and PartialPivLU would
-    // reallocate every time it does). The reference LAPACK's dgetrf on reference BLAS was
-    // a quarter of a pressed substep at nx = 160 (benchmarks/results/contact_profile.md).
-    if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
+    newton_lu_.reserve(m);
+    auto A = newton_lu_.matrix(k);
     for (Eigen::Index b = 0; b < k; ++b) {
         const int col = reduced_[b];
         const bool slipping = friction && col < n && pattern_[col] != 1;
         const double sf = slipping ? slip_sign(p, col) : 0;
         for (Eigen::Index a = 0; a < k; ++a)
-            reduced_matrix_(a, b) = p.W(reduced_[a], col) - (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
+            A(a, b) = p.W(reduced_[a], col) - (slipping ? sf * p.W(reduced_[a], n + col) : 0.0);
     }
-    if (k > 0) {
-        pivots_.resize(static_cast<size_t>(m));
-        int transpositions = 0;
-        const Eigen::Index zero_pivot =
-            Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
-                k, k, reduced_matrix_.data(), m, pivots_.data(), transpositions);
-        if (zero_pivot >= 0) {
-            lu_revision_ = 0;
-            throw ContactSolveError("contact solver: singular Newton matrix");
-        }
+    if (!newton_lu_.factor(k)) {
+        lu_revision_ = 0;
+        throw ContactSolveError("contact solver: singular Newton matrix");
     }
     ++base_;                 // an update of the last factorization no longer applies
     lu_pattern_ = pattern_;  // what the LU is of
     lu_friction_ = p.friction;
     lu_revision_ = p.revision;
-    if (options.update_factorization && update_rows_.cols() != m) {
+    if (options.update_factorization && update_.columns_of() != m) {
         // Sized once, for the largest update: updating allocates nothing.
-        update_rows_.resize(max_update_unknowns, m);
-        update_z_.resize(m, 2 * max_update_unknowns);
-        capacitance_.resize(2 * max_update_unknowns, 2 * max_update_unknowns);
-        capacitance_pivots_.resize(static_cast<size_t>(2 * max_update_unknowns));
+        update_.reserve(m, max_update_unknowns);
         gathered_.resize(m, 2 * max_update_unknowns);
         in_changed_.assign(static_cast<size_t>(m), false);
         update_x_.resize(m);
-        update_t_.resize(2 * max_update_unknowns);
         update_pattern_.resize(n);
-        changed_.reserve(static_cast<size_t>(m));
     }
 }
 
@@ -216,12 +202,7 @@ void ContactSolver::newton_direction(const ContactProblem& p, const ContactSolve
         }
         step_ = explicit_;
         if (k > 0) {
-            auto x = reduced_rhs_.head(k);
-            for (Eigen::Index a = 0; a < k; ++a) std::swap(x[a], x[pivots_[static_cast<size_t>(a)]]);
-            const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k, k,
-                                                                                Eigen::OuterStride<>(m));
-            lu.triangularView<Eigen::UnitLower>().solveInPlace(x);
-            lu.triangularView<Eigen::Upper>().solveInPlace(x);
+            newton_lu_.solve_in_place(reduced_rhs_.head(k));
             for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[a]] = reduced_rhs_[a];
         }
     }
@@ -255,24 +236,17 @@ double ContactSolver::newton_entry(const ContactProblem& p, const Pattern& P, Ei
 
 // x <- J0^-1 x for the factored pattern's m x m Newton matrix J0 (columns of x).
 void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x) {
-    const Eigen::Index m = reduced_matrix_.rows(), k = static_cast<Eigen::Index>(reduced_.size());
+    const Eigen::Index m = p.W.rows(), k = static_cast<Eigen::Index>(reduced_.size());
     const Eigen::Index n = p.gap_limit.size();
     for (Eigen::Index j = 0; j < m; ++j)
         if (!in_system(lu_pattern_, n, j)) x.row(j) /= diagonal_[j];
     if (k == 0) return;
     auto g = gathered_.topLeftCorner(k, x.cols());
     for (Eigen::Index a = 0; a < k; ++a) g.row(a) = x.row(reduced_[static_cast<size_t>(a)]);
-    for (Eigen::Index a = 0; a < k; ++a) g.row(a).swap(g.row(pivots_[static_cast<size_t>(a)]));
-    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lu(reduced_matrix_.data(), k, k,
-                                                                        Eigen::OuterStride<>(m));
-    if (x.cols() == 1) {  // the vector kernels: the blocked ones cost 3x on one column
-        auto v = gathered_.col(0).head(k);
-        lu.triangularView<Eigen::UnitLower>().solveInPlace(v);
-        lu.triangularView<Eigen::Upper>().solveInPlace(v);
-    } else {
-        lu.triangularView<Eigen::UnitLower>().solveInPlace(g);
-        lu.triangularView<Eigen::Upper>().solveInPlace(g);
-    }
+    if (x.cols() == 1)  // the vector kernels: the blocked ones cost 3x on one column
+        newton_lu_.solve_in_place(gathered_.col(0).head(k));
+    else
+        newton_lu_.solve_in_place(g);
     for (Eigen::Index a = 0; a < k; ++a) x.row(reduced_[static_cast<size_t>(a)]) = g.row(a);
 }
 
@@ -285,45 +259,36 @@ void ContactSolver::base_solve(const ContactProblem& p, Eigen::Ref<Eigen::Matrix
 bool ContactSolver::prepare_update(const ContactProblem& p) {
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
     const bool friction = p.has_friction();
-    if (update_rows_.cols() != m) return false;  // factored without the update's buffers
+    if (update_.columns_of() != m) return false;  // factored without the update's buffers
     if (update_base_ == base_ && update_pattern_.size() == pattern_.size() && update_pattern_ == pattern_)
         return true;
-    // changed_ is overwritten even where the update is then declined: a decline is followed
-    // by a refactorization, which moves base_, so the cached return above never sees it.
-    changed_.clear();
+    // The changed unknowns are overwritten even where the update is then declined: a decline
+    // is followed by a refactorization, which moves base_, so the cached return above never
+    // sees them.
+    std::vector<int>& changed = update_.changed();
+    changed.clear();
     for (Eigen::Index i = 0; i < n; ++i) {
         if (pattern_[i] == lu_pattern_[i]) continue;
-        changed_.push_back(static_cast<int>(i));
-        if (friction) changed_.push_back(static_cast<int>(n + i));
+        changed.push_back(static_cast<int>(i));
+        if (friction) changed.push_back(static_cast<int>(n + i));
     }
-    const Eigen::Index c = static_cast<Eigen::Index>(changed_.size());
+    const Eigen::Index c = update_.size();
     const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     if (c > max_update_unknowns || update_share * c > k) return false;
-    for (int j : changed_) in_changed_[static_cast<size_t>(j)] = true;
-    auto rows = update_rows_.topRows(c);
-    auto z = update_z_.leftCols(2 * c);
-    z.setZero();
+    for (int j : changed) in_changed_[static_cast<size_t>(j)] = true;
+    auto rows = update_.rows();
+    auto columns = update_.columns();
+    columns.setZero();
     for (Eigen::Index i = 0; i < c; ++i) {
-        const Eigen::Index j = changed_[static_cast<size_t>(i)];
-        z(j, i) = 1;  // E_C
+        const Eigen::Index j = changed[static_cast<size_t>(i)];
         for (Eigen::Index b = 0; b < m; ++b)
             rows(i, b) = newton_entry(p, pattern_, j, b) - newton_entry(p, lu_pattern_, j, b);
         for (Eigen::Index a = 0; a < m; ++a)
             if (!in_changed_[static_cast<size_t>(a)])
-                z(a, c + i) = newton_entry(p, pattern_, a, j) - newton_entry(p, lu_pattern_, a, j);
+                columns(a, i) = newton_entry(p, pattern_, a, j) - newton_entry(p, lu_pattern_, a, j);
     }
-    for (int j : changed_) in_changed_[static_cast<size_t>(j)] = false;
-    base_solve(p, z);
-    const Eigen::Index r = 2 * c;
-    auto cap = capacitance_.topLeftCorner(r, r);
-    cap.topRows(c).noalias() = rows * z;
-    for (Eigen::Index i = 0; i < c; ++i) cap.row(c + i) = z.row(changed_[static_cast<size_t>(i)]);
-    cap.diagonal().array() += 1;
-    int transpositions = 0;
-    const Eigen::Index zero_pivot =
-        Eigen::internal::partial_lu_impl<double, Eigen::ColMajor, int>::blocked_lu(
-            r, r, capacitance_.data(), capacitance_.rows(), capacitance_pivots_.data(), transpositions);
-    if (zero_pivot >= 0) return false;
+    for (int j : changed) in_changed_[static_cast<size_t>(j)] = false;
+    if (!update_.prepare([&](auto&& x) { base_solve(p, x); })) return false;
     update_base_ = base_;
     update_pattern_ = pattern_;
     return true;
@@ -332,26 +297,17 @@ bool ContactSolver::prepare_update(const ContactProblem& p) {
 // The Newton step on this pattern's system by the prepared update (prepare_update).
 void ContactSolver::updated_solve(const ContactProblem& p) {
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
-    const Eigen::Index c = static_cast<Eigen::Index>(changed_.size()), r = 2 * c;
     update_x_.setZero();
     for (Eigen::Index j = 0; j < m; ++j)
         if (in_system(pattern_, n, j)) update_x_[j] = newton_target(p, j) - explicit_product_[j];
-    base_solve(p, update_x_);
-    auto t = update_t_.head(r);
-    t.head(c).noalias() = update_rows_.topRows(c) * update_x_;
-    for (Eigen::Index i = 0; i < c; ++i) t[c + i] = update_x_[changed_[static_cast<size_t>(i)]];
-    for (Eigen::Index a = 0; a < r; ++a) std::swap(t[a], t[capacitance_pivots_[static_cast<size_t>(a)]]);
-    const auto cap = capacitance_.topLeftCorner(r, r);
-    cap.triangularView<Eigen::UnitLower>().solveInPlace(t);
-    cap.triangularView<Eigen::Upper>().solveInPlace(t);
-    update_x_.noalias() -= update_z_.leftCols(r) * t;
+    update_.solve(update_x_, [&](auto&& x) { base_solve(p, x); });
     step_ = explicit_;
     for (Eigen::Index j = 0; j < m; ++j)
         if (in_system(pattern_, n, j)) step_[j] = update_x_[j];
 }
 
 std::vector<signed char> ContactSolver::factored_pattern(std::uint64_t revision) const {
-    if (update_rows_.cols() == 0 || lu_revision_ == 0 || lu_revision_ != revision) return {};
+    if (update_.columns_of() == 0 || lu_revision_ == 0 || lu_revision_ != revision) return {};
     return {lu_pattern_.data(), lu_pattern_.data() + lu_pattern_.size()};
 }
 
@@ -363,15 +319,20 @@ void ContactSolver::project_slip(const ContactProblem& p, Eigen::VectorXd& lambd
         if (pattern_[i] == 2 || pattern_[i] == -2) lambda[n + i] = -slip_sign(p, i) * lambda[i];
 }
 
-// J delta = -phi with every row of J, for a slip-rate law. Rows as in residual():
+// J delta = -phi with every row of J, for a 2D slip-rate law (a slipping node's friction
+// depends on its own tangential motion, which the reduced system eliminates). Rows as in
+// residual():
 //   open:   phi_N = -lambda_N, phi_T = lambda_T
 //   active: phi_N = r_N (gap - u_N)
 //   stick:  phi_T = r_T (u_T - origin)
 //   slip:   phi_T = lambda_T - s F(v) trial, trial = -lambda_N - r_N (gap - u_N), s = sign(z)
-void ContactSolver::full_newton_direction(const ContactProblem& p) {
+// The full Jacobian's direction (full_jacobian.cpp) with one tangent, but with the open nodes'
+// rows kept: eliminating them was 3-5 % faster and changed the outputs' last bits, which moved
+// the belt's stick-slip cycles (docs/decisions.md, "The 2D contact solve's reduced Newton").
+void ContactSolver::rate_newton_direction(const ContactProblem& p) {
     const Eigen::Index n = p.gap_limit.size(), m = p.W.rows();
-    if (reduced_matrix_.rows() != m) reduced_matrix_.resize(m, m);
-    auto J = reduced_matrix_.topLeftCorner(m, m);
+    newton_lu_.reserve(m);
+    auto J = newton_lu_.matrix(m);
     J.setZero();
     for (Eigen::Index i = 0; i < n; ++i) {
         const Eigen::Index t = n + i;
@@ -392,13 +353,9 @@ void ContactSolver::full_newton_direction(const ContactProblem& p) {
         J(t, i) += s * law_F_[i];
         J(t, t) += 1;
     }
-    // Eigen's blocked LU: this matrix is refactored every iteration, and the reference BLAS
-    // under dgetrf made it most of a rate-law substep's cost. Sized once: no allocation.
-    full_lu_.compute(reduced_matrix_);
-    if ((full_lu_.matrixLU().diagonal().array() == 0).any())
-        throw ContactSolveError("contact solver: singular Newton matrix");
-    reduced_rhs_ = -phi_;
-    step_ = full_lu_.solve(reduced_rhs_);
+    if (!newton_lu_.factor(m)) throw ContactSolveError("contact solver: singular Newton matrix");
+    step_ = -phi_;
+    newton_lu_.solve_in_place(step_);
 }
 
 ContactSolveInfo ContactSolver::solve(const ContactProblem& p, const ContactSolverOptions& options,
@@ -411,17 +368,20 @@ ContactSolveInfo ContactSolver::solve(const ContactProblem& p, const ContactSolv
         diagonal_revision_ = p.revision;
     }
     if constexpr (solid_bodies_built) {
-        if (p.has_friction() && p.tangents == 2) {
+        if (p.has_friction() && (p.tangents == 2 || !options.reduced_newton)) {
             start_ = lambda;
             try {
-                return solve_disc(p, options, lambda);
+                return solve_full_jacobian(p, options, lambda);
             } catch (const ContactSolveError& e) {
                 // As in 2D: node by node from the same start, F at each node's own slip where
                 // the contact nodes keep their tangential inertia (ContactProblem::RateLaw).
                 lambda = start_;
                 ContactSolveInfo info;
                 info.iterations = options.max_iterations;
-                if (gauss_seidel_disc(p, options, lambda, info, p.rate.tangential_inertia)) return info;
+                const bool exact_rate = p.rate_dependent() && p.rate.tangential_inertia;
+                if (p.tangents == 2 ? gauss_seidel_disc(p, options, lambda, info, p.rate.tangential_inertia)
+                                    : gauss_seidel(p, options, lambda, info, exact_rate))
+                    return info;
                 Text msg;
                 msg << e.what() << "; node by node from the same start: relative residual " << info.residual
                     << " after " << info.sweeps << " sweeps";
@@ -686,7 +646,7 @@ ContactSolveInfo ContactSolver::newton(const ContactProblem& p, const ContactSol
         const bool reuse = same || update;
         if (rate) {
             lu_revision_ = 0;  // the buffer now holds another matrix
-            full_newton_direction(p);
+            rate_newton_direction(p);
         } else {
             newton_direction(p, options,
                              same     ? Direction::reuse

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "contact/sliding_product.hpp"
+#include "linalg/dense_lu.hpp"
 
 namespace contactbody {
 
@@ -87,6 +88,11 @@ struct ContactSolverOptions {
     // skipped, and products with W read half of it (W_N - W_T sf on the normal unknowns).
     // Other last bits; the reduced body takes it.
     bool project_slip = false;
+    // With one tangent, Newton on the reduced system (open nodes and slipping nodes' tangential
+    // unknowns eliminated, its LU reused and updated while the node states hold); false: on
+    // the full generalized Jacobian, as with two tangents (slower in 2D: docs/decisions.md,
+    // "The 2D contact solve's reduced Newton"; benchmarks/reduced_newton.py).
+    bool reduced_newton = true;
 };
 
 struct ContactSolveInfo {
@@ -134,13 +140,17 @@ public:
 private:
     ContactSolveInfo newton(const ContactProblem& p, const ContactSolverOptions& options,
                             Eigen::VectorXd& lambda, bool stop_on_stagnation);
-    // Isotropic friction (tangents == 2; contact_solver_disc.cpp): semi-smooth Newton on the
-    // full generalized Jacobian; where it fails, node by node (gauss_seidel_disc).
-    ContactSolveInfo solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
-                                Eigen::VectorXd& lambda);
-    double residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
-    void disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda);
-    Eigen::VectorXd disc_rT_;
+    // Semi-smooth Newton on the full generalized Jacobian (full_jacobian.cpp), for two
+    // tangents, or one without options.reduced_newton; where it fails, node by node.
+    ContactSolveInfo solve_full_jacobian(const ContactProblem& p, const ContactSolverOptions& options,
+                                         Eigen::VectorXd& lambda);
+    double full_residual(const ContactProblem& p, const Eigen::VectorXd& lambda, Eigen::VectorXd& phi);
+    void full_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda);
+    Eigen::VectorXd tangential_augmentation_;
+    // The Jacobian's rows of the active nodes' unknowns (row-major: built row by row), and a
+    // slipping node's W_T^T (s / |s|) under a slip-rate law.
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jacobian_rows_;
+    Eigen::RowVectorXd slip_row_;
     // The node law at u_hat_ (friction_law.hpp: apply_node_law), r_T(i) node i's tangential
     // augmentation; keeps per node what the Jacobians need (law_...).
     double apply_law(const ContactProblem& p, const Eigen::VectorXd& lambda,
@@ -188,9 +198,8 @@ private:
     void base_solve(const ContactProblem& p, Eigen::Ref<Eigen::MatrixXd> x);
     bool prepare_update(const ContactProblem& p);
     void updated_solve(const ContactProblem& p);
-    // The full generalized Jacobian, for a slip-rate law: a slipping node's friction then
-    // depends on its own tangential motion, which the reduced system eliminates.
-    void full_newton_direction(const ContactProblem& p);
+    // Every row of the generalized Jacobian, for a 2D slip-rate law.
+    void rate_newton_direction(const ContactProblem& p);
     void project_slip(const ContactProblem& p, Eigen::VectorXd& lambda) const;
     // +-F_i for a slipping node, the sign of its slip.
     double slip_sign(const ContactProblem& p, Eigen::Index i) const {
@@ -211,25 +220,21 @@ private:
     bool projects_slip_ = false, compact_products_ = false;
     SlidingProduct sliding_;
     std::uint64_t compact_revision_ = 0;
-    std::vector<int> reduced_;        // unknowns of the reduced Newton system
-    Eigen::MatrixXd reduced_matrix_;  // m x m buffer; its LU in the leading k x k
-    std::vector<int> pivots_;
-    Eigen::PartialPivLU<Eigen::MatrixXd> full_lu_;  // of the full Jacobian (slip-rate law)
+    std::vector<int> reduced_;  // unknowns of the reduced Newton system
+    LeadingLu newton_lu_;       // of the reduced system, or of the full Jacobian's active rows
     Eigen::VectorXd reduced_rhs_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_;
     Pattern pattern_, lu_pattern_;  // of the last residual, and of the LU
     Eigen::VectorXd lu_friction_;   // and the coefficients of the slipping nodes
     std::uint64_t lu_revision_ = 0;
-    // The update (prepare_update): the changed unknowns C, the rows D(C, :), Z = J0^-1 U and
-    // the capacitance matrix's LU, for the pattern and factorization (base_) they were built at.
+    // The update (prepare_update) of the factorization base_ to update_pattern_.
     static constexpr Eigen::Index max_update_unknowns = 32;
     static constexpr Eigen::Index update_share = 20;  // update while 20 c <= k (prepare_update)
-    std::vector<int> changed_;
-    Pattern saved_base_;  // factor_at's
+    Pattern saved_base_;                              // factor_at's
     std::vector<bool> in_changed_;
-    Eigen::MatrixXd update_rows_, update_z_, capacitance_, gathered_;
-    std::vector<int> capacitance_pivots_;
-    Eigen::VectorXd update_x_, update_t_;
+    RowColumnUpdate update_;
+    Eigen::MatrixXd gathered_;  // base_solve's rows of the reduced system
+    Eigen::VectorXd update_x_;
     Pattern update_pattern_;
     long base_ = 0, update_base_ = -1;
     long factorizations_ = 0, residual_evaluations_ = 0, newton_iterations_ = 0, updates_ = 0;

@@ -1,11 +1,12 @@
-// The contact solve of a 3D body's isotropic friction (ContactProblem::tangents == 2): the
-// Coulomb condition |lambda_T| <= F lambda_N with a two-dimensional slip, the subdifferential of
-// a -> F lambda_N |a| (the paper's Remark 4.4). The same Alart-Curnier residual as in 2D, with
-// the tangential projection onto a disc instead of an interval, and a semi-smooth Newton on its
-// full generalized Jacobian (open nodes eliminated). In 2D the disc is the interval and this
-// Jacobian the reduced system's; the 2D solve keeps its own path (its bits). With a slip-rate
-// law F depends on the slip speed |s| / slip_time, s = u_T - origin the node's slip vector, taken
-// implicitly as in 2D: its derivative enters a slipping node's rows.
+// The contact solve on the full generalized Jacobian, for any number of tangents: a 3D body's
+// isotropic friction (ContactProblem::tangents == 2: the Coulomb condition |lambda_T| <= F
+// lambda_N with a two-dimensional slip, the subdifferential of a -> F lambda_N |a|, the paper's
+// Remark 4.4), and a 2D body's when asked (ContactSolverOptions::reduced_newton false; in 2D the
+// reduced system is faster: docs/decisions.md, "The 2D contact solve's reduced Newton"). The
+// Alart-Curnier residual of friction_law.hpp, and a semi-smooth Newton on its generalized Jacobian
+// with the open nodes eliminated. With a slip-rate law F depends on the slip speed |s| /
+// slip_time, s = u_T - origin the node's slip vector, taken implicitly: its derivative enters a
+// slipping node's rows.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,16 +14,17 @@
 #include <Eigen/Dense>
 
 #include "contact/contact_solver.hpp"
+#include "util/tangents.hpp"
 #include "util/text.hpp"
 
 namespace contactbody {
 
-double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::VectorXd& lambda,
+double ContactSolver::full_residual(const ContactProblem& p, const Eigen::VectorXd& lambda,
                                     Eigen::VectorXd& phi) {
     ++residual_evaluations_;
     u_hat_.noalias() = p.W * lambda;
     u_hat_ += p.a;
-    return apply_law(p, lambda, disc_rT_, phi);
+    return apply_law(p, lambda, tangential_augmentation_, phi);
 }
 
 // J delta = -phi, J the generalized Jacobian at the node states of the last residual:
@@ -34,25 +36,31 @@ double ContactSolver::residual_disc(const ContactProblem& p, const Eigen::Vector
 //           -> E_T - F t (-e_N + r_N W_N) - (F trial / |z|) (I - t t^T) (E_T - r_T W_T)
 //              - trial t F'(|s|) (s / |s|)^T W_T     (a slip-rate law, s = u_T - origin)
 // The open nodes' steps are known; the rest is a dense system on the active nodes' unknowns.
-void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda) {
-    const Eigen::Index n = p.gap_limit.size(), m = 3 * n;
+void ContactSolver::full_newton_direction(const ContactProblem& p, const Eigen::VectorXd& lambda) {
+    const Eigen::Index n = p.gap_limit.size();
+    const int T = p.tangents, components = 1 + T;
+    const Eigen::Index m = components * n;
     step_.setZero(m);
     reduced_.clear();
+    reduced_.reserve(static_cast<size_t>(m));
     for (Eigen::Index i = 0; i < n; ++i) {
         if (pattern_[i] == 0) {
-            for (int c = 0; c < 3; ++c) step_[c * n + i] = -lambda[c * n + i];
+            for (int c = 0; c < components; ++c) step_[c * n + i] = -lambda[c * n + i];
             continue;
         }
-        for (int c = 0; c < 3; ++c) reduced_.push_back(static_cast<int>(c * n + i));
+        for (int c = 0; c < components; ++c) reduced_.push_back(static_cast<int>(c * n + i));
     }
     const Eigen::Index k = static_cast<Eigen::Index>(reduced_.size());
     if (k == 0) return;
     // Rows of the active nodes' unknowns over all columns, then the known columns moved right.
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(k, m);
+    // Buffers sized once for all m unknowns: no allocation while the active set changes.
+    if (jacobian_rows_.rows() != m || jacobian_rows_.cols() != m) jacobian_rows_.resize(m, m);
+    auto J = jacobian_rows_.topRows(k);
+    J.setZero();
     for (Eigen::Index a = 0; a < k; ++a) {
         const Eigen::Index row = reduced_[static_cast<size_t>(a)];
         const Eigen::Index i = row % n, c = row / n;
-        const double rN = r_[i], rT = disc_rT_[i];
+        const double rN = r_[i], rT = tangential_augmentation_[i];
         if (c == 0) {
             J.row(a) = -rN * p.W.row(i);
             continue;
@@ -61,76 +69,85 @@ void ContactSolver::disc_newton_direction(const ContactProblem& p, const Eigen::
             J.row(a) = rT * p.W.row(row);
             continue;
         }
-        const double t[2] = {law_direction_[i], law_direction_[n + i]};
+        double t[max_tangents] = {0, 0};
+        for (int s = 0; s < T; ++s) t[s] = law_direction_[s * n + i];
         const double F = law_F_[i], kappa = law_ratio_[i];
-        // Component c - 1 of: E_T - F t (-e_N + r_N W_N) - kappa (I - t t^T)(E_T - r_T W_T)
+        // Component q of: E_T - F t (-e_N + r_N W_N) - kappa (I - t t^T)(E_T - r_T W_T)
         const int q = static_cast<int>(c - 1);
         J.row(a) = -F * t[q] * rN * p.W.row(i);
         J(a, i) += F * t[q];
-        for (int s = 0; s < 2; ++s) {
+        for (int s = 0; s < T; ++s) {
             const double projector = (q == s ? 1.0 : 0.0) - t[q] * t[s];
             if (projector == 0) continue;
             const Eigen::Index col = (s + 1) * n + i;
             J.row(a) += kappa * projector * rT * p.W.row(col);
             J(a, col) -= kappa * projector;
         }
-        if (p.rate_dependent() && law_dF_[i] != 0)
-            J.row(a) -=
-                law_trial_[i] * t[q] * law_dF_[i] *
-                (law_slip_direction_[i] * p.W.row(n + i) + law_slip_direction_[n + i] * p.W.row(2 * n + i));
+        if (p.rate_dependent() && law_dF_[i] != 0) {  // W_T^T (s / |s|), then its multiple
+            slip_row_ = law_slip_direction_[i] * p.W.row(n + i);
+            for (int s = 1; s < T; ++s)
+                slip_row_ += law_slip_direction_[s * n + i] * p.W.row((s + 1) * n + i);
+            J.row(a) -= law_trial_[i] * t[q] * law_dF_[i] * slip_row_;
+        }
         J(a, row) += 1;
     }
-    Eigen::VectorXd rhs(k);
-    Eigen::MatrixXd reduced(k, k);
+    newton_lu_.reserve(m);
+    auto A = newton_lu_.matrix(k);
+    reduced_rhs_.resize(m);
+    auto rhs = reduced_rhs_.head(k);
     for (Eigen::Index a = 0; a < k; ++a) {
         double known = 0;
         for (Eigen::Index j = 0; j < m; ++j)
             if (step_[j] != 0) known += J(a, j) * step_[j];
         rhs[a] = -phi_[reduced_[static_cast<size_t>(a)]] - known;
-        for (Eigen::Index b = 0; b < k; ++b) reduced(a, b) = J(a, reduced_[static_cast<size_t>(b)]);
+        for (Eigen::Index b = 0; b < k; ++b) A(a, b) = J(a, reduced_[static_cast<size_t>(b)]);
     }
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(reduced);
-    if ((lu.matrixLU().diagonal().array() == 0).any())
-        throw ContactSolveError("contact solver: singular Newton matrix (isotropic friction)");
-    const Eigen::VectorXd x = lu.solve(rhs);
-    for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[static_cast<size_t>(a)]] = x[a];
+    if (!newton_lu_.factor(k))
+        throw ContactSolveError("contact solver: singular Newton matrix (full Jacobian)");
+    newton_lu_.solve_in_place(rhs);
+    for (Eigen::Index a = 0; a < k; ++a) step_[reduced_[static_cast<size_t>(a)]] = rhs[a];
 }
 
-ContactSolveInfo ContactSolver::solve_disc(const ContactProblem& p, const ContactSolverOptions& options,
-                                           Eigen::VectorXd& lambda) {
+ContactSolveInfo ContactSolver::solve_full_jacobian(const ContactProblem& p,
+                                                    const ContactSolverOptions& options,
+                                                    Eigen::VectorXd& lambda) {
     const Eigen::Index n = p.gap_limit.size();
-    // One augmentation parameter for both tangential directions (isotropy: their mean
+    // One augmentation parameter for all tangential directions (isotropy: their mean
     // diagonal, invariant under a turn about the normal).
-    disc_rT_.resize(n);
-    for (Eigen::Index i = 0; i < n; ++i) disc_rT_[i] = 2 / (p.W(n + i, n + i) + p.W(2 * n + i, 2 * n + i));
+    tangential_augmentation_.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        double sum = 0;
+        for (int t = 1; t <= p.tangents; ++t) sum += p.W(t * n + i, t * n + i);
+        tangential_augmentation_[i] = p.tangents / sum;
+    }
     ContactSolveInfo info;
-    info.residual = residual_disc(p, lambda, phi_);
+    info.residual = full_residual(p, lambda, phi_);
     while (!(info.residual <= options.tolerance)) {
         if (info.iterations >= options.max_iterations) {
             Text msg;
             msg << "contact solver did not converge in " << options.max_iterations
-                << " iterations (isotropic friction; relative residual " << info.residual << ", tolerance "
+                << " iterations (full Jacobian; relative residual " << info.residual << ", tolerance "
                 << options.tolerance << ")";
             throw ContactSolveError(msg.str());
         }
         ++info.iterations;
         ++newton_iterations_;
         ++factorizations_;
-        disc_newton_direction(p, lambda);
+        full_newton_direction(p, lambda);
         if (!step_.allFinite())
-            throw ContactSolveError("contact solver: singular Newton matrix (isotropic friction)");
+            throw ContactSolveError("contact solver: singular Newton matrix (full Jacobian)");
         // Backtracking on |phi|^2, the full step where none decreases it (as in 2D).
         const double merit = phi_.squaredNorm();
         double alpha = 1;
         bool decreased = false;
         for (int k = 0; k < 8 && !decreased; ++k) {
             trial_ = lambda + alpha * step_;
-            residual_disc(p, trial_, trial_phi_);
+            full_residual(p, trial_, trial_phi_);
             decreased = trial_phi_.squaredNorm() < merit;
             if (!decreased) alpha *= 0.5;
         }
         lambda += (decreased ? alpha : 1.0) * step_;
-        info.residual = residual_disc(p, lambda, phi_);
+        info.residual = full_residual(p, lambda, phi_);
     }
     return info;
 }
@@ -255,7 +272,7 @@ bool ContactSolver::gauss_seidel_disc(const ContactProblem& p, const ContactSolv
         }
     };
     // (the residual also sets u_hat_ = a + W lambda)
-    return sweep_until(options, info, sweep, [&] { return residual_disc(p, lambda, phi_); });
+    return sweep_until(options, info, sweep, [&] { return full_residual(p, lambda, phi_); });
 }
 
 }  // namespace contactbody

@@ -1,0 +1,103 @@
+// The supernodal Cholesky (linalg/supernodal_cholesky.hpp) against the body's factor today
+// (TrailingCholesky: CHOLMOD's simplicial Cholesky, or the supernodal LU of the same order) on
+// one body's K, in the same order, in one run; and the machine's dense rate: Eigen's GEMM at
+// n = 1000 on one thread. Prints one JSON object: unknowns, supernodes, nonzeros and flops of
+// each factor, the seconds of a factorization (the best of REPEATS) and of a solve, the
+// GFlop/s, and the solutions' largest difference.
+//   bench_supernodal MESH|rect:NX DIMENSION [REPEATS]
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "bench_common.hpp"
+#include "linalg/supernodal_cholesky.hpp"
+#include "linalg/trailing_cholesky.hpp"
+
+using namespace contactbody;
+using namespace bench;
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: bench_supernodal MESH|rect:NX DIMENSION [REPEATS]\n");
+        return 2;
+    }
+    SceneParameters p;
+    if (std::strncmp(argv[1], "rect:", 5) == 0)
+        p.nx = p.ny = std::atoi(argv[1] + 5);
+    else
+        p.mesh = argv[1];
+    p.dimension = std::atoi(argv[2]);
+    const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+    p.friction_coefficient = 0;
+    const Discretization d = discretize(p);
+    const double dt = 1e-6;
+    SparseMatrix K = d.A_free + (4 / (dt * dt)) * d.M_free;
+    K.makeCompressed();
+    const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+    // The machine's dense rate, in this run.
+    const Eigen::Index g = 1000;
+    const Eigen::MatrixXd A = Eigen::MatrixXd::Random(g, g), B = Eigen::MatrixXd::Random(g, g);
+    Eigen::MatrixXd C(g, g);
+    double gemm = 1e30;
+    for (int k = 0; k < 3; ++k) {
+        const auto t = Clock::now();
+        C.noalias() = A * B;
+        gemm = std::min(gemm, seconds_since(t));
+    }
+    std::printf("{\"unknowns\": %ld, \"gemm_gflops\": %.4g", static_cast<long>(K.rows()),
+                2.0 * g * g * g / gemm * 1e-9);
+    Eigen::VectorXd reference_x;
+    std::vector<int> position;
+    for (auto kernel : {TrailingCholesky::Kernel::simplicial, TrailingCholesky::Kernel::supernodal_lu}) {
+        TrailingCholesky f(K, {}, true, kernel);
+        double best = 1e30;
+        for (int k = 0; k < repeats; ++k) {
+            const auto t = Clock::now();
+            f.refactor(lower);
+            best = std::min(best, seconds_since(t));
+        }
+        Eigen::VectorXd x;
+        f.solve(b, x);
+        auto t = Clock::now();
+        for (int k = 0; k < 10; ++k) f.solve(b, x);
+        const double solve = seconds_since(t) / 10;
+        const bool lu = kernel == TrailingCholesky::Kernel::supernodal_lu;
+        if (!lu) {
+            reference_x = x;
+            position.resize(static_cast<size_t>(K.rows()));
+            for (Eigen::Index i = 0; i < K.rows(); ++i)
+                position[static_cast<size_t>(i)] = f.position(static_cast<int>(i));
+            std::printf(", \"cholesky_flops\": %.6g, \"cholesky_nonzeros\": %.6g", f.factor_flops(),
+                        f.factor_nonzeros());
+        }
+        std::printf(", \"%s\": {\"factor_seconds\": %.6g, \"solve_seconds\": %.6g}",
+                    lu ? "supernodal_lu" : "simplicial", best, solve);
+    }
+    const auto t0 = Clock::now();
+    SupernodalCholesky s(lower, position);
+    const double analysis = seconds_since(t0);
+    double best = 1e30;
+    for (int k = 0; k < repeats; ++k) {
+        const auto t = Clock::now();
+        if (!s.factor(lower)) {
+            std::fprintf(stderr, "not positive definite at %ld\n", static_cast<long>(s.failed_column()));
+            return 1;
+        }
+        best = std::min(best, seconds_since(t));
+    }
+    Eigen::VectorXd x;
+    s.solve(b, x);
+    auto t = Clock::now();
+    for (int k = 0; k < 10; ++k) s.solve(b, x);
+    const double solve = seconds_since(t) / 10;
+    std::printf(
+        ", \"supernodal_cholesky\": {\"analysis_seconds\": %.6g, \"factor_seconds\": %.6g, "
+        "\"solve_seconds\": %.6g, \"supernodes\": %ld, \"nonzeros\": %.6g, \"flops\": %.6g, "
+        "\"gflops\": %.4g, \"difference\": %.3g}}\n",
+        analysis, best, solve, static_cast<long>(s.supernodes()), s.factor_nonzeros(), s.factor_flops(),
+        s.factor_flops() / best * 1e-9,
+        (x - reference_x).lpNorm<Eigen::Infinity>() / reference_x.lpNorm<Eigen::Infinity>());
+    return 0;
+}

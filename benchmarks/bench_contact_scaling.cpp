@@ -122,5 +122,7 @@ int main(int argc, char** argv) {
         substep / solve, static_cast<double>(iterations) / (steps * per_step), held_solves,
         held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force,
         o.kinetic_energy, o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
-        factor.supernodal() ? "supernodal_lu" : "simplicial");
+        factor.kernel() == TrailingCholesky::Kernel::supernodal      ? "supernodal"
+        : factor.kernel() == TrailingCholesky::Kernel::supernodal_lu ? "supernodal_lu"
+                                                                     : "simplicial");
 }

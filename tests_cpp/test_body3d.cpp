@@ -711,36 +711,45 @@ TEST(Body3D, StaticStartIsInBalanceAndDoesNotDependOnTheBodysTurn) {
     EXPECT_NEAR(energies[1], energies[0], 1e-10 * energies[0]);
 }
 
-// The refactorable factor's two kernels (TrailingCholesky::Kernel) solve the same systems, K
-// and K with dofs held (rows and columns the identity's), as the sparse contact solve uses them.
-TEST(Body3D, SupernodalLuSolvesAsTheSimplicialCholeskyDoes) {
+// The refactorable factor's kernels (TrailingCholesky::Kernel) solve the same systems, K and K
+// with dofs held (rows and columns the identity's), as the sparse contact solve uses them: the
+// supernodal Cholesky and the supernodal LU it replaced as the simplicial Cholesky does.
+TEST(Body3D, SupernodalKernelsSolveAsTheSimplicialCholeskyDoes) {
     const Discretization d = discretize(box_scene(Box{}, "box_kernels.msh", MassVariant::standard));
     SparseMatrix K = d.A_free + (4 / 1e-12) * d.M_free;
     K.makeCompressed();
     SparseMatrix held = K.triangularView<Eigen::Lower>();
     held.makeCompressed();
     TrailingCholesky cholesky(K, {}, true, TrailingCholesky::Kernel::simplicial);
-    TrailingCholesky lu(K, {}, true, TrailingCholesky::Kernel::supernodal_lu);
     EXPECT_FALSE(cholesky.supernodal());
-    EXPECT_TRUE(lu.supernodal());
     EXPECT_LT(cholesky.factor_flops(), TrailingCholesky::supernodal_flops);  // automatic: Cholesky
     const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
     Eigen::VectorXd x, y;
-    cholesky.solve(b, x);
-    lu.solve(b, y);
-    EXPECT_LE((x - y).norm(), 1e-12 * x.norm());
-    EXPECT_LE((K * y - b).norm(), 1e-10 * b.norm());
     // Hold every contact node's y dof.
+    SparseMatrix held_values = held;
     for (int dof : d.contact_y)
-        for (Eigen::Index col = 0; col < held.outerSize(); ++col)
-            for (SparseMatrix::InnerIterator it(held, col); it; ++it)
+        for (Eigen::Index col = 0; col < held_values.outerSize(); ++col)
+            for (SparseMatrix::InnerIterator it(held_values, col); it; ++it)
                 if (it.row() == dof || it.col() == dof) it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
-    cholesky.refactor(held);
-    lu.refactor(held);
-    cholesky.solve(b, x);
-    lu.solve(b, y);
-    EXPECT_LE((x - y).norm(), 1e-12 * x.norm());
-    for (int dof : d.contact_y) EXPECT_NEAR(y[dof], b[dof], 1e-12 * std::abs(b[dof]));
+    for (auto kernel : {TrailingCholesky::Kernel::supernodal, TrailingCholesky::Kernel::supernodal_lu}) {
+        TrailingCholesky other(K, {}, true, kernel);
+        EXPECT_TRUE(other.supernodal());
+        EXPECT_EQ(other.kernel(), kernel);
+        TrailingCholesky fresh(K, {}, true, TrailingCholesky::Kernel::simplicial);
+        fresh.solve(b, x);
+        other.solve(b, y);
+        EXPECT_LE((x - y).norm(), 1e-12 * x.norm());
+        EXPECT_LE((K * y - b).norm(), 1e-10 * b.norm());
+        fresh.refactor(held_values);
+        other.refactor(held_values);
+        fresh.solve(b, x);
+        other.solve(b, y);
+        EXPECT_LE((x - y).norm(), 1e-12 * x.norm());
+        for (int dof : d.contact_y) EXPECT_NEAR(y[dof], b[dof], 1e-12 * std::abs(b[dof]));
+        other.refactor(held);  // and back: K again
+        other.solve(b, y);
+        EXPECT_LE((K * y - b).norm(), 1e-10 * b.norm());
+    }
 }
 
 // The reduced 3D body with every finite mode of its clamped interior is the full body, in

@@ -1,5 +1,6 @@
 #include "linalg/trailing_cholesky.hpp"
 
+#include "linalg/supernodal_cholesky.hpp"
 #include "util/build_features.hpp"
 
 #if CONTACTBODY_SOLID_BODIES
@@ -199,9 +200,21 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         c_->factor = cholmod_analyze(&upper, &c);
         c_->check("analysis");
         factor_flops_ = c.fl;
-        const bool lu = kernel == Kernel::automatic ? solid_bodies_built && factor_flops_ >= supernodal_flops
-                                                    : kernel == Kernel::supernodal_lu;
-        if (lu) {
+        const Kernel chosen = kernel != Kernel::automatic                                 ? kernel
+                              : solid_bodies_built && factor_flops_ >= supernodal_flops ? Kernel::supernodal
+                                                                                        : Kernel::simplicial;
+        if (chosen == Kernel::supernodal) {
+            // (only in builds with solid bodies: the 2D FMU's binaries leave its code out)
+            if constexpr (!solid_bodies_built) throw std::logic_error("this build has no supernodal Cholesky");
+            inverse_perm_.assign(n, 0);
+            for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
+            if constexpr (solid_bodies_built) {
+                supernodal_ = std::make_unique<SupernodalCholesky>(lower, inverse_perm_);
+                factor_supernodal(lower, "4/dt^2 M + A");
+            }
+            return;
+        }
+        if (chosen == Kernel::supernodal_lu) {
             lu_ = std::make_unique<Lu>();
             lu_->build(entries, n_, lower.valuePtr());
             inverse_perm_.assign(n, 0);
@@ -265,6 +278,12 @@ TrailingCholesky::~TrailingCholesky() = default;
 
 void TrailingCholesky::refactor(const SparseMatrix& K2) {
     if (value_map_.empty()) throw std::logic_error("TrailingCholesky::refactor: not refactorable");
+    if constexpr (solid_bodies_built) {
+        if (supernodal_) {
+            factor_supernodal(K2, "the held stiffness");
+            return;
+        }
+    }
     if (lu_) {
         lu_->factorize(K2.valuePtr());
         return;
@@ -282,13 +301,29 @@ void TrailingCholesky::refactor(const SparseMatrix& K2) {
     c_->check("refactorization");
 }
 
+void TrailingCholesky::factor_supernodal(const SparseMatrix& lower, const char* what) {
+    if constexpr (solid_bodies_built) {
+        if (!supernodal_->factor(lower))
+            throw std::runtime_error(std::string(what) + " is not positive definite (Cholesky failed at column " +
+                                     std::to_string(supernodal_->failed_column()) + ")");
+    }
+}
+
 double TrailingCholesky::factor_nonzeros() const {
+    if constexpr (solid_bodies_built)
+        if (supernodal_) return supernodal_->factor_nonzeros();
     if (lu_) return lu_->nonzeros();
     const cholmod_factor& L = *c_->factor;
     return static_cast<double>(L.is_super ? L.xsize : static_cast<size_t>(static_cast<const int*>(L.p)[L.n]));
 }
 
 void TrailingCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if constexpr (solid_bodies_built) {
+        if (supernodal_) {
+            supernodal_->solve(b, x);
+            return;
+        }
+    }
     if (!lu_) {
         forward(b);
         backward(x);
@@ -301,7 +336,8 @@ void TrailingCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 }
 
 Eigen::Map<Eigen::VectorXd> TrailingCholesky::forward(const Eigen::VectorXd& b) {
-    if (lu_) throw std::logic_error("TrailingCholesky::forward: the supernodal LU has no L solve");
+    if (lu_ || supernodal_)
+        throw std::logic_error("TrailingCholesky::forward: a supernodal factor has no separate L solve");
     Cholmod& c = *c_;
     double* permuted = static_cast<double*>(c.permuted->x);
     for (Eigen::Index k = 0; k < n_; ++k) permuted[k] = b[perm_[static_cast<size_t>(k)]];

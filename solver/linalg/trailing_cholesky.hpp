@@ -15,6 +15,8 @@
 
 namespace contactbody {
 
+class SupernodalCholesky;
+
 class TrailingCholesky {
 public:
     // Factors the symmetric positive definite K (only its lower triangle is read) with the
@@ -23,13 +25,13 @@ public:
     // refactorable (no trailing unknowns): refactor() may be called; the factor is then kept
     // as CHOLMOD factors a prepermuted matrix, in natural order. Where factoring costs
     // supernodal_flops or more (tetrahedral bodies, whose separators are surfaces; 2D bodies
-    // from about 200k unknowns), a refactorable factor is instead a supernodal LU of the same
-    // prepermuted matrix with diagonal pivots (Eigen's SparseLU, MPL-2; CHOLMOD's supernodal
-    // module is GPL): the same order and fill, its dense blocks in BLAS-3 kernels
-    // (docs/decisions.md, "The factor of a 3D body"). Its solve() and refactor() allocate.
+    // from about 200k unknowns), a refactorable factor is instead our supernodal Cholesky in
+    // the same order (linalg/supernodal_cholesky.hpp; CHOLMOD's supernodal module is GPL): its
+    // dense panels in BLAS-3 kernels (docs/decisions.md, "A supernodal Cholesky of our own").
     // kernel: of a refactorable factor, by the rule above (automatic) or forced (tests,
-    // benchmarks).
-    enum class Kernel { automatic, simplicial, supernodal_lu };
+    // benchmarks; supernodal_lu, Eigen's SparseLU of the same order, is the factor it replaced,
+    // kept for comparison and allocating in its solve() and refactor()).
+    enum class Kernel { automatic, simplicial, supernodal, supernodal_lu };
     TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false,
                      Kernel kernel = Kernel::automatic);
     ~TrailingCholesky();
@@ -46,7 +48,10 @@ public:
     double factor_nonzeros() const;
     // The analysis's flops of one factorization, and whether the factor is the supernodal LU.
     double factor_flops() const { return factor_flops_; }
-    bool supernodal() const { return lu_ != nullptr; }
+    bool supernodal() const { return lu_ != nullptr || supernodal_ != nullptr; }
+    Kernel kernel() const {
+        return supernodal_ ? Kernel::supernodal : lu_ ? Kernel::supernodal_lu : Kernel::simplicial;
+    }
     static constexpr double supernodal_flops = 1e9;
     // Factors K2 in place of K, keeping the ordering and symbolic analysis: K2's nonzeros must
     // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
@@ -66,6 +71,8 @@ private:
     struct Lu;
     std::unique_ptr<Cholmod> c_;
     std::unique_ptr<Lu> lu_;
+    std::unique_ptr<SupernodalCholesky> supernodal_;
+    void factor_supernodal(const SparseMatrix& lower, const char* what);  // throws if not SPD
     double factor_flops_ = 0;
     Eigen::Index n_ = 0, m_ = 0;
     std::vector<int> perm_, inverse_perm_;  // factor position -> unknown, and back

@@ -1,8 +1,12 @@
 """The supernodal Cholesky (solver/linalg/supernodal_cholesky) against the body's factor today
 (TrailingCholesky: CHOLMOD's simplicial Cholesky and the supernodal LU, both on CHOLMOD's
 fill-reducing order) on factor_kernels.py's bodies, all three in the same order and in one
-process per body (bench_supernodal), beside the machine's own dense rate in the same process
-(Eigen's GEMM at n = 1000, one thread). A factorization is the best of three.
+process per body (bench_supernodal), beside the machine's own dense rate: Eigen's GEMM at
+n = 1000 (the baseline build, in the same process) and numpy's OpenBLAS at n = 2000 (one thread,
+just before each body). The supernodal Cholesky runs with the baseline kernels and with the
+fastest this CPU has (linalg/supernodal_kernels.hpp). A factorization is the best of three.
+--large adds cost3d.py's 111k-node hemisphere, the supernodal Cholesky alone (today's factors
+take tens of minutes there).
 
 Writes benchmarks/results/supernodal.{json,md}. About two minutes.
 
@@ -10,9 +14,14 @@ Writes benchmarks/results/supernodal.{json,md}. About two minutes.
 """
 import argparse
 import json
+import os
 import pathlib
 import subprocess
 import tempfile
+import time
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+import numpy as np  # noqa: E402
 
 from contactbody import meshes
 from factor_kernels import HEMISPHERES, RECTANGLES
@@ -21,9 +30,21 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results"
 
 
+def openblas_gflops(n=2000, repeats=3):
+    """numpy's a @ b at n, one thread: the best of `repeats`."""
+    a, b = np.random.rand(n, n), np.random.rand(n, n)
+    best = 1e30
+    for _ in range(repeats):
+        tic = time.perf_counter()
+        a @ b
+        best = min(best, time.perf_counter() - tic)
+    return 2 * n ** 3 / best * 1e-9
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--large", action="store_true", help="also the 111k-node hemisphere")
     args = parser.parse_args()
     program = pathlib.Path(args.build) / "bench_supernodal"
     rows = []
@@ -33,33 +54,54 @@ def main():
             path = meshes.hemisphere(pathlib.Path(tmp) / f"hemisphere_{h:.3g}.msh", radius=0.05,
                                      contact_size=h, far_size=0.01, fine_distance=0.0045,
                                      refine_distance=0.025, contact_angle=25.0)
-            cases.append((f"hemisphere h = {1e3 * h:.3g} mm", str(path), 3))
-        for name, mesh, dim in cases:
-            out = subprocess.run([str(program), mesh, str(dim)], check=True, capture_output=True,
-                                 text=True).stdout
-            rows.append({"body": name, "dimension": dim, **json.loads(out)})
+            cases.append((f"hemisphere h = {1e3 * h:.3g} mm", str(path), 3, []))
+        if args.large:
+            path = meshes.hemisphere(pathlib.Path(tmp) / "hemisphere_111k.msh", radius=0.05,
+                                     contact_size=1.25e-4, far_size=3e-3, fine_distance=0.0045,
+                                     refine_distance=0.025, contact_angle=25.0)
+            cases.append(("hemisphere, 111k nodes", str(path), 3, ["1", "supernodal"]))
+        for name, mesh, dim, extra in cases:
+            gemm = openblas_gflops()
+            out = subprocess.run([str(program), mesh, str(dim), *extra], check=True,
+                                 capture_output=True, text=True).stdout
+            rows.append({"body": name, "dimension": dim, "openblas_gflops": gemm, **json.loads(out)})
             print(json.dumps(rows[-1]), flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "supernodal.json").write_text(json.dumps({"rows": rows}, indent=1))
     lines = ["# The supernodal Cholesky against the body's factor today", "",
-             "`benchmarks/supernodal.py`: K = A + 4/dt² M (dt = 1e-6 s) on the free dofs, the three "
+             "`benchmarks/supernodal.py`: K = A + 4/dt² M (dt = 1e-6 s) on the free dofs, the "
              "factors in CHOLMOD's fill-reducing order, one process per body; a factorization the "
-             "best of three, a solve the mean of ten. GFlop/s count the Cholesky's flops (CHOLMOD's "
-             "count for the simplicial factor and the LU, which does twice as many; the "
-             "panels' own, with the amalgamation's zeros, for the supernodal Cholesky). GEMM: "
-             "Eigen's at n = 1000, one thread, in the same process.", "",
-             "| body | unknowns | supernodes | nonzeros, simplicial / supernodal | factor s: simplicial / LU / supernodal Cholesky | "
-             "supernodal over simplicial / over LU | GFlop/s: supernodal / GEMM | solve ms: simplicial / LU / supernodal | solution difference |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "best of three (one at 111k nodes), a solve the mean of ten. GFlop/s count the "
+             "Cholesky's flops (the panels' own, with the amalgamation's zeros; the supernodal LU "
+             "does twice as many). GEMM: Eigen's baseline build at n = 1000 in the same process, "
+             "numpy's OpenBLAS at n = 2000 on one thread just before. Supernodal: the baseline "
+             "kernels / the fastest this CPU has.", "",
+             "| body | unknowns | supernodes | factor s: simplicial / LU / supernodal | "
+             "supernodal over simplicial / over LU | fast kernels: set, factor s | "
+             "GFlop/s: supernodal / fast / Eigen GEMM / OpenBLAS GEMM | "
+             "solve ms: simplicial / LU / supernodal | solution difference: to simplicial / fast to baseline | peak MB |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+
+    def seconds(r, key):
+        return f"{r[key]['factor_seconds']:.3g}" if key in r else "–"
+
+    def ratio(r, key):
+        s = r["supernodal_cholesky"]
+        return f"{r[key]['factor_seconds'] / s['factor_seconds']:.2f}×" if key in r else "–"
+
+    def solve(r, key):
+        return f"{1e3 * r[key]['solve_seconds']:.3g}" if key in r else "–"
+
     for r in rows:
-        s, c, lu = r["supernodal_cholesky"], r["simplicial"], r["supernodal_lu"]
+        s, fast = r["supernodal_cholesky"], r["supernodal_cholesky_fast"]
         lines.append(
-            f"| {r['body']} | {r['unknowns']} | {s['supernodes']} | {r['cholesky_nonzeros']:.3g} / {s['nonzeros']:.3g} | "
-            f"{c['factor_seconds']:.3g} / {lu['factor_seconds']:.3g} / {s['factor_seconds']:.3g} | "
-            f"{c['factor_seconds'] / s['factor_seconds']:.2f}× / {lu['factor_seconds'] / s['factor_seconds']:.2f}× | "
-            f"{s['gflops']:.3g} / {r['gemm_gflops']:.3g} | "
-            f"{1e3 * c['solve_seconds']:.3g} / {1e3 * lu['solve_seconds']:.3g} / {1e3 * s['solve_seconds']:.3g} | "
-            f"{s['difference']:.1e} |")
+            f"| {r['body']} | {r['unknowns']} | {s['supernodes']} | "
+            f"{seconds(r, 'simplicial')} / {seconds(r, 'supernodal_lu')} / {s['factor_seconds']:.3g} | "
+            f"{ratio(r, 'simplicial')} / {ratio(r, 'supernodal_lu')} | "
+            f"{fast['kernel_set']}, {fast['factor_seconds']:.3g} | "
+            f"{s['gflops']:.3g} / {fast['gflops']:.3g} / {r['gemm_gflops']:.3g} / {r['openblas_gflops']:.3g} | "
+            f"{solve(r, 'simplicial')} / {solve(r, 'supernodal_lu')} / {1e3 * s['solve_seconds']:.3g} | "
+            f"{s['difference']:.1e} / {fast['difference_to_baseline']:.1e} | {r['peak_memory_mb']:.0f} |")
     (OUT / "supernodal.md").write_text("\n".join(lines) + "\n")
 
 

@@ -62,3 +62,24 @@ TEST(SupernodalCholesky, AMatrixThatIsNotPositiveDefiniteIsReportedWithItsColumn
     EXPECT_GE(f.failed_column(), 0);
     EXPECT_LE(f.failed_column(), bad);
 }
+
+// The kernels for this CPU and the baseline ones solve alike (to round-off: FMA and wider
+// vectors sum in another order), and each names its set; forced, the baseline is the baseline.
+TEST(SupernodalCholesky, TheFastKernelsSolveAsTheBaselineOnes) {
+    const SparseMatrix K = body_matrix(3, 0);
+    const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+    TrailingCholesky reference(K, {});
+    std::vector<int> position(static_cast<size_t>(K.rows()));
+    for (Eigen::Index i = 0; i < K.rows(); ++i)
+        position[static_cast<size_t>(i)] = reference.position(static_cast<int>(i));
+    SupernodalCholesky baseline(lower, position, true), fast(lower, position);
+    EXPECT_STREQ(baseline.kernel_set(), "baseline");
+    EXPECT_STREQ(fast.kernel_set(), supernodal_kernels().name);
+    ASSERT_TRUE(baseline.factor(lower));
+    ASSERT_TRUE(fast.factor(lower));
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+    Eigen::VectorXd x, y;
+    baseline.solve(b, x);
+    fast.solve(b, y);
+    EXPECT_LE((x - y).lpNorm<Eigen::Infinity>(), 1e-12 * x.lpNorm<Eigen::Infinity>()) << fast.kernel_set();
+}

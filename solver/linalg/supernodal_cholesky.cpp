@@ -33,8 +33,9 @@ void permuted_lower(const SparseMatrix& lower, const std::vector<int>& position,
 
 }  // namespace
 
-SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position)
-    : n_(lower.cols()), position_(position) {
+SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position,
+                                       bool baseline_kernels)
+    : n_(lower.cols()), position_(position), kernels_(&supernodal_kernels(baseline_kernels)) {
     const size_t n = static_cast<size_t>(n_);
     if (lower.rows() != n_ || position.size() != n) throw std::invalid_argument("SupernodalCholesky: sizes");
     std::vector<int> start, rows;
@@ -197,41 +198,17 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
     for (size_t s = 0; s < S; ++s)
         largest_below = std::max<Eigen::Index>(
             largest_below, (row_start_[s + 1] - row_start_[s]) - (first_[s + 1] - first_[s]));
-    if (update_.rows() < largest_below) update_.resize(largest_below, largest_below);
-    using Panel = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-    for (size_t s = 0; s < S; ++s) {
-        const Eigen::Index columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
-        const Eigen::Index m = rows - columns;
-        Panel panel(values_.data() + value_start_[s], rows, columns, Eigen::OuterStride<>(rows));
-        auto diagonal = panel.topRows(columns);
-        const Eigen::Index bad = Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal);
-        if (bad >= 0) {
-            failed_ = first_[s] + bad;
-            return false;
-        }
-        if (m == 0) continue;
-        auto L21 = panel.bottomRows(m);
-        diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(L21);
-        auto C = update_.topLeftCorner(m, m);
-        C.triangularView<Eigen::Lower>().setZero();
-        C.selfadjointView<Eigen::Lower>().rankUpdate(L21);
-        // Subtract C from the ancestors' panels: its columns grouped by the supernode that
-        // holds them (rows ascending), each group through that supernode's row places.
-        const int* r = row_index_.data() + row_start_[s] + columns;
-        Eigen::Index q = 0;
-        while (q < m) {
-            const size_t t = static_cast<size_t>(super_of_[static_cast<size_t>(r[q])]);
-            const int t_rows = row_start_[t + 1] - row_start_[t];
-            for (int k = 0; k < t_rows; ++k) local_[static_cast<size_t>(row_index_[row_start_[t] + k])] = k;
-            double* target = values_.data() + value_start_[t];
-            for (; q < m && super_of_[static_cast<size_t>(r[q])] == static_cast<int>(t); ++q) {
-                double* column = target + static_cast<std::ptrdiff_t>(r[q] - first_[t]) * t_rows;
-                for (Eigen::Index p = q; p < m; ++p) column[local_[static_cast<size_t>(r[p])]] -= C(p, q);
-            }
-        }
-    }
+    update_.resize(static_cast<size_t>(largest_below * largest_below));
     gathered_.resize(largest_below);
-    return true;
+    SupernodalLayout layout;
+    layout.supernodes = S;
+    layout.first = first_.data();
+    layout.super_of = super_of_.data();
+    layout.row_start = row_start_.data();
+    layout.row_index = row_index_.data();
+    layout.value_start = value_start_.data();
+    failed_ = kernels_->factor(layout, values_.data(), update_.data(), local_.data());
+    return failed_ < 0;
 }
 
 void SupernodalCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {

@@ -11,14 +11,19 @@
 #include <vector>
 
 #include "assembly/assembly.hpp"
+#include "linalg/supernodal_kernels.hpp"
 
 namespace contactbody {
 
 class SupernodalCholesky {
 public:
     // lower: K's lower triangle (CSC, compressed); position[i]: unknown i's place in the
-    // factor order. The symbolic analysis: supernodes and their row structures.
-    SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position);
+    // factor order. The symbolic analysis: supernodes and their row structures. The numeric
+    // factor runs the fastest kernels this CPU has (linalg/supernodal_kernels.hpp), or the
+    // architecture's baseline ones (baseline_kernels: the same bits on every machine).
+    SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position,
+                       bool baseline_kernels = false);
+    const char* kernel_set() const { return kernels_->name; }
     // The numeric factor of a matrix with lower's pattern. False where K is not positive
     // definite (failed_column() tells where, in factor order).
     bool factor(const SparseMatrix& lower);
@@ -41,8 +46,9 @@ private:
     std::vector<std::ptrdiff_t> value_start_;
     std::vector<double> values_;
     double flops_ = 0;
-    mutable std::vector<int> local_;  // a supernode's row -> its place (factor())
-    mutable Eigen::MatrixXd update_;  // a panel's update of its ancestors
+    const SupernodalKernels* kernels_;
+    std::vector<int> local_;      // a supernode's row -> its place (factor())
+    std::vector<double> update_;  // a panel's update of its ancestors
     mutable Eigen::VectorXd permuted_, gathered_;
 };
 

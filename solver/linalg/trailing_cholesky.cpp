@@ -200,12 +200,13 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         c_->factor = cholmod_analyze(&upper, &c);
         c_->check("analysis");
         factor_flops_ = c.fl;
-        const Kernel chosen = kernel != Kernel::automatic                                 ? kernel
+        const Kernel chosen = kernel != Kernel::automatic                               ? kernel
                               : solid_bodies_built && factor_flops_ >= supernodal_flops ? Kernel::supernodal
                                                                                         : Kernel::simplicial;
         if (chosen == Kernel::supernodal) {
             // (only in builds with solid bodies: the 2D FMU's binaries leave its code out)
-            if constexpr (!solid_bodies_built) throw std::logic_error("this build has no supernodal Cholesky");
+            if constexpr (!solid_bodies_built)
+                throw std::logic_error("this build has no supernodal Cholesky");
             inverse_perm_.assign(n, 0);
             for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
             if constexpr (solid_bodies_built) {
@@ -304,7 +305,8 @@ void TrailingCholesky::refactor(const SparseMatrix& K2) {
 void TrailingCholesky::factor_supernodal(const SparseMatrix& lower, const char* what) {
     if constexpr (solid_bodies_built) {
         if (!supernodal_->factor(lower))
-            throw std::runtime_error(std::string(what) + " is not positive definite (Cholesky failed at column " +
+            throw std::runtime_error(std::string(what) +
+                                     " is not positive definite (Cholesky failed at column " +
                                      std::to_string(supernodal_->failed_column()) + ")");
     }
 }

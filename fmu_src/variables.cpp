@@ -426,6 +426,12 @@ const std::vector<Variable>& all_rows() {
                 "carry the variant's tangential mass, the normal dofs massless: the paper's principle; not "
                 "with redistributed_both, whose tangential dofs have no mass); by_variant takes the default "
                 "measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2")),
+        SOLID_ROW(integer("baseline_kernels", 39, &Values::baseline_kernels, 0, 0, 1,
+                          "Where the body's factor is supernodal (from about 1e9 flops of factorization: "
+                          "tetrahedral bodies from about 2.7k nodes), its dense kernels: 0 = the fastest "
+                          "this CPU has (x86-64-v3, AVX2 with FMA, where the CPU reports it; the log names "
+                          "the set), whose last bits depend on the CPU; 1 = the architecture's baseline "
+                          "ones, the same bits on every machine of an architecture"))
         // Inputs
         real("foundation_velocity", 20, &Values::foundation_velocity, 0, "m/s", 20, none, none,
              per_body("Horizontal velocity V of the rigid foundation",

@@ -46,6 +46,7 @@ struct Values {
     double max_energy, max_energy_ratio;
     int modes;                     // 0: the full body
     int reduced_edge;              // ReducedEdge
+    int baseline_kernels;          // 0 or 1
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;     // 0: no edge history

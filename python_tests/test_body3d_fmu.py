@@ -426,3 +426,34 @@ def test_a_study_runs_on_the_3d_body_with_its_units(tmp_path):
     assert 0.25 < along_z["apparent_friction_ratio"] <= 0.3 * (1 + 1e-9)
     units = json.loads((tmp_path / "study.json").read_text())["units"]
     assert (units["normal_force_mean"], units["energy_final"], units["friction_power"]) == ("N", "J", "W")
+
+
+# ---- the supernodal factor's kernels: the fastest this CPU has, or the baseline ----
+
+@pytest.mark.skipif(SANITIZED, reason="a 7,803-unknown factor under the sanitizers takes minutes")
+def test_the_fast_kernels_agree_with_the_baseline_and_the_log_names_them(unzipped3d, tmp_path):
+    """A hemisphere of 2.7k nodes pressed from the static start: its factor is supernodal (1.1e9
+    flops). The log names the kernel set (`baseline` when baseline_kernels = 1); the outputs of
+    the fastest kernels agree with the baseline's to 1e-10 relative."""
+    from contactbody import meshes
+    from conftest import fmu_log
+    mesh = meshes.hemisphere(tmp_path / "hemisphere.msh", radius=0.05, contact_size=5e-4,
+                             far_size=1e-2, fine_distance=0.0045, refine_distance=0.025,
+                             contact_angle=25.0)
+    scene = {"mesh": str(mesh), "friction_coefficient": 0.0, "initial_state": 1,
+             "top_displacement": -2e-4, "internal_step": 1e-6, "damping_stiffness": 4e-6}
+    outputs = ["normal_force", "strain_energy", "kinetic_energy", "top_reaction_y", "energy"]
+    runs = {}
+    for baseline in (1, 0):
+        error, log = fmu_log({**scene, "baseline_kernels": baseline}, unzipped3d)
+        assert error is None, error
+        line = next(m for m in log if m.startswith("contact solve:"))
+        kernels = line.split("flops of factorization): ")[1]
+        assert kernels == "baseline" if baseline else kernels in ("baseline", "x86-64-v3 (AVX2, FMA)"), line
+        assert line.startswith("contact solve: sparse"), line
+        runs[baseline] = simulate(stop=3e-4, output=outputs, **scene, baseline_kernels=baseline)
+    for name in outputs:  # each against its own size; the kinetic energy against the energy's
+        a, b = runs[1][name], runs[0][name]
+        scale = np.abs(runs[1]["energy" if name == "kinetic_energy" else name]).max()
+        assert scale > 0, name
+        assert np.abs(a - b).max() <= 1e-10 * scale, (name, np.abs(a - b).max() / scale)

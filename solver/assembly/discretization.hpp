@@ -61,6 +61,9 @@ struct SceneParameters {
     // of static_friction_ratio).
     double stribeck_velocity = 0;  // m/s
     double viscous_friction = 0;   // s/m
+    // The supernodal factor's kernels: the fastest this CPU has (false), or the architecture's
+    // baseline ones, which compute the same bits on every machine (linalg/supernodal_kernels.hpp).
+    bool baseline_kernels = false;
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
     double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
@@ -126,6 +129,7 @@ struct SceneParameters {
         f("max_energy_ratio", keep, p.max_energy_ratio...);
         f("modes", rebuild, p.modes...);  // the basis is built from the discretization
         f("reduced_edge", rebuild, p.reduced_edge...);
+        f("baseline_kernels", rebuild, p.baseline_kernels...);  // the factors are made with them
     }
 };
 

@@ -1,6 +1,8 @@
 #include "body/stepper.hpp"
 
+#include "linalg/supernodal_kernels.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "util/build_features.hpp"
 #include "util/text.hpp"
 
 #include <algorithm>
@@ -269,6 +271,9 @@ std::string Stepper::summary() const {
         msg << sparse_contact_kappa_0 << " + " << sparse_contact_kappa_F
             << " F = " << sparse_contact_kappa(params_.friction_coefficient);
     msg << ")";
+    if (solid_bodies_built)  // (which factors are supernodal is known once they are made)
+        msg << "; a supernodal factor's kernels (from " << TrailingCholesky::supernodal_flops
+            << " flops of factorization): " << supernodal_kernels(params_.baseline_kernels).name;
     return msg.str();
 }
 
@@ -372,7 +377,7 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     if (sparse) {  // y and x; a 3D body's z with friction (without, its x is not used)
         const int per_node = held_unknowns_per_node(params_.friction_coefficient);
         contact_dofs.resize(static_cast<size_t>(per_node * nc));
-        f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node);
+        f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node, params_.baseline_kernels);
         f->held->set_slip_coefficient(slip_coefficient());
         return f;
     }

@@ -20,7 +20,9 @@ public:
     // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
     // then each tangent's; Discretization::contact_unknowns), unknowns_per_node of them a node
     // (2: y and x; 3: y, x and z). Slips are held only with one tangent (2 a node).
-    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node);
+    // baseline_kernels: a supernodal factor's (TrailingCholesky).
+    HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node,
+                 bool baseline_kernels = false);
     ~HeldOperator();
     HeldOperator(const HeldOperator&) = delete;
     HeldOperator& operator=(const HeldOperator&) = delete;

@@ -32,8 +32,10 @@ public:
     // benchmarks; supernodal_lu, Eigen's SparseLU of the same order, is the factor it replaced,
     // kept for comparison and allocating in its solve() and refactor()).
     enum class Kernel { automatic, simplicial, supernodal, supernodal_lu };
+    // baseline_kernels: a supernodal Cholesky's, the architecture's baseline kernels
+    // (linalg/supernodal_kernels.hpp).
     TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false,
-                     Kernel kernel = Kernel::automatic);
+                     Kernel kernel = Kernel::automatic, bool baseline_kernels = false);
     ~TrailingCholesky();
     TrailingCholesky(const TrailingCholesky&) = delete;
     TrailingCholesky& operator=(const TrailingCholesky&) = delete;

@@ -49,7 +49,7 @@ def main():
     program = pathlib.Path(args.build) / "bench_supernodal"
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        cases = [(f"rectangle nx = {n}", f"rect:{n}", 2) for n in RECTANGLES]
+        cases = [(f"rectangle nx = {n}", f"rect:{n}", 2, []) for n in RECTANGLES]
         for h in HEMISPHERES:
             path = meshes.hemisphere(pathlib.Path(tmp) / f"hemisphere_{h:.3g}.msh", radius=0.05,
                                      contact_size=h, far_size=0.01, fine_distance=0.0045,

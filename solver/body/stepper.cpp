@@ -1,8 +1,6 @@
 #include "body/stepper.hpp"
 
-#include "linalg/supernodal_kernels.hpp"
 #include "linalg/trailing_cholesky.hpp"
-#include "util/build_features.hpp"
 #include "util/text.hpp"
 
 #include <algorithm>
@@ -271,9 +269,10 @@ std::string Stepper::summary() const {
         msg << sparse_contact_kappa_0 << " + " << sparse_contact_kappa_F
             << " F = " << sparse_contact_kappa(params_.friction_coefficient);
     msg << ")";
-    if (solid_bodies_built)  // (which factors are supernodal is known once they are made)
+    // (which factors are supernodal is known once they are made)
+    if (const char* kernels = TrailingCholesky::supernodal_kernel_set(params_.baseline_kernels))
         msg << "; a supernodal factor's kernels (from " << TrailingCholesky::supernodal_flops
-            << " flops of factorization): " << supernodal_kernels(params_.baseline_kernels).name;
+            << " flops of factorization): " << kernels;
     return msg.str();
 }
 

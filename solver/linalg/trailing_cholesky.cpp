@@ -1,6 +1,7 @@
 #include "linalg/trailing_cholesky.hpp"
 
 #include "linalg/supernodal_cholesky.hpp"
+#include "linalg/supernodal_kernels.hpp"
 #include "util/build_features.hpp"
 
 #if CONTACTBODY_SOLID_BODIES
@@ -300,6 +301,11 @@ void TrailingCholesky::refactor(const SparseMatrix& K2) {
         throw std::runtime_error("the held stiffness is not positive definite (Cholesky failed at column " +
                                  std::to_string(c_->factor->minor) + ")");
     c_->check("refactorization");
+}
+
+const char* TrailingCholesky::supernodal_kernel_set(bool baseline_kernels) {
+    if constexpr (solid_bodies_built) return supernodal_kernels(baseline_kernels).name;
+    return nullptr;
 }
 
 void TrailingCholesky::factor_supernodal(const SparseMatrix& lower, const char* what) {

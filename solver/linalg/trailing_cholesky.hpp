@@ -55,6 +55,9 @@ public:
         return supernodal_ ? Kernel::supernodal : lu_ ? Kernel::supernodal_lu : Kernel::simplicial;
     }
     static constexpr double supernodal_flops = 1e9;
+    // The kernel set a supernodal factor would run (linalg/supernodal_kernels.hpp), or null in
+    // a build without one (the 2D FMU's binaries).
+    static const char* supernodal_kernel_set(bool baseline_kernels);
     // Factors K2 in place of K, keeping the ordering and symbolic analysis: K2's nonzeros must
     // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
     // the diagonal). Only for a refactorable factor.

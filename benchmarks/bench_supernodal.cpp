@@ -89,11 +89,12 @@ int main(int argc, char** argv) {
         std::printf(", \"%s\": {\"factor_seconds\": %.6g, \"solve_seconds\": %.6g}",
                     lu ? "supernodal_lu" : "simplicial", best, solve);
     }
-    // The supernodal Cholesky with the baseline kernels, then with the fastest this CPU has.
-    Eigen::VectorXd baseline_x;
-    for (bool baseline : {true, false}) {
+    // The supernodal Cholesky with the baseline kernels, then with the fastest this CPU has, on
+    // one thread and on two (whose solution must be the one thread's bit for bit).
+    Eigen::VectorXd baseline_x, one_thread_x;
+    for (const auto& [baseline, threads] : {std::pair{true, 1}, std::pair{false, 1}, std::pair{false, 2}}) {
         const auto t0 = Clock::now();
-        SupernodalCholesky s(lower, position, baseline);
+        SupernodalCholesky s(lower, position, baseline, threads);
         const double analysis = seconds_since(t0);
         double best = 1e30;
         for (int k = 0; k < repeats; ++k) {
@@ -110,16 +111,21 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 10; ++k) s.solve(b, x);
         const double solve = seconds_since(t) / 10;
         if (baseline) baseline_x = x;
+        if (!baseline && threads == 1) one_thread_x = x;
         const Eigen::VectorXd& against = reference_x.size() ? reference_x : baseline_x;
         std::printf(
             ", \"%s\": {\"kernel_set\": \"%s\", \"analysis_seconds\": %.6g, \"factor_seconds\": %.6g, "
             "\"solve_seconds\": %.6g, \"supernodes\": %ld, \"nonzeros\": %.6g, \"flops\": %.6g, "
-            "\"gflops\": %.4g, \"difference\": %.3g, \"difference_to_baseline\": %.3g}",
-            baseline ? "supernodal_cholesky" : "supernodal_cholesky_fast", s.kernel_set(), analysis, best,
-            solve, static_cast<long>(s.supernodes()), s.factor_nonzeros(), s.factor_flops(),
-            s.factor_flops() / best * 1e-9,
+            "\"gflops\": %.4g, \"difference\": %.3g, \"difference_to_baseline\": %.3g, \"threads\": %d, "
+            "\"top_share\": %.3g, \"same_bits_as_one_thread\": %s}",
+            baseline       ? "supernodal_cholesky"
+            : threads == 1 ? "supernodal_cholesky_fast"
+                           : "supernodal_cholesky_fast_2_threads",
+            s.kernel_set(), analysis, best, solve, static_cast<long>(s.supernodes()), s.factor_nonzeros(),
+            s.factor_flops(), s.factor_flops() / best * 1e-9,
             (x - against).lpNorm<Eigen::Infinity>() / against.lpNorm<Eigen::Infinity>(),
-            (x - baseline_x).lpNorm<Eigen::Infinity>() / baseline_x.lpNorm<Eigen::Infinity>());
+            (x - baseline_x).lpNorm<Eigen::Infinity>() / baseline_x.lpNorm<Eigen::Infinity>(), threads,
+            s.top_share(), threads > 1 ? (x == one_thread_x ? "true" : "false") : "null");
     }
     std::printf(", \"peak_memory_mb\": %.1f}\n", peak_rss_mb());
     return 0;

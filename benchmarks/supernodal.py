@@ -75,12 +75,15 @@ def main():
              "Cholesky's flops (the panels' own, with the amalgamation's zeros; the supernodal LU "
              "does twice as many). GEMM: Eigen's baseline build at n = 1000 in the same process, "
              "numpy's OpenBLAS at n = 2000 on one thread just before. Supernodal: the baseline "
-             "kernels / the fastest this CPU has.", "",
+             "kernels / the fastest this CPU has; then the fastest on two threads (this machine's "
+             "two cores), whose solution must equal the one thread's bit for bit. Top share: the "
+             "flops of the supernodes above the subtrees that run side by side.", "",
              "| body | unknowns | supernodes | factor s: simplicial / LU / supernodal | "
              "supernodal over simplicial / over LU | fast kernels: set, factor s | "
              "GFlop/s: supernodal / fast / Eigen GEMM / OpenBLAS GEMM | "
-             "solve ms: simplicial / LU / supernodal | solution difference: to simplicial / fast to baseline | peak MB |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "solve ms: simplicial / LU / supernodal | solution difference: to simplicial / fast to baseline | "
+             "2 threads: factor s, speed-up over 1, same bits | top share | peak MB |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def seconds(r, key):
         return f"{r[key]['factor_seconds']:.3g}" if key in r else "–"
@@ -94,6 +97,7 @@ def main():
 
     for r in rows:
         s, fast = r["supernodal_cholesky"], r["supernodal_cholesky_fast"]
+        two = r["supernodal_cholesky_fast_2_threads"]
         lines.append(
             f"| {r['body']} | {r['unknowns']} | {s['supernodes']} | "
             f"{seconds(r, 'simplicial')} / {seconds(r, 'supernodal_lu')} / {s['factor_seconds']:.3g} | "
@@ -101,7 +105,10 @@ def main():
             f"{fast['kernel_set']}, {fast['factor_seconds']:.3g} | "
             f"{s['gflops']:.3g} / {fast['gflops']:.3g} / {r['gemm_gflops']:.3g} / {r['openblas_gflops']:.3g} | "
             f"{solve(r, 'simplicial')} / {solve(r, 'supernodal_lu')} / {1e3 * s['solve_seconds']:.3g} | "
-            f"{s['difference']:.1e} / {fast['difference_to_baseline']:.1e} | {r['peak_memory_mb']:.0f} |")
+            f"{s['difference']:.1e} / {fast['difference_to_baseline']:.1e} | "
+            f"{two['factor_seconds']:.3g}, {fast['factor_seconds'] / two['factor_seconds']:.2f}×, "
+            f"{'yes' if two['same_bits_as_one_thread'] else 'NO'} | {two['top_share']:.2f} | "
+            f"{r['peak_memory_mb']:.0f} |")
     (OUT / "supernodal.md").write_text("\n".join(lines) + "\n")
 
 

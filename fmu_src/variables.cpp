@@ -432,6 +432,11 @@ const std::vector<Variable>& all_rows() {
                           "this CPU has (x86-64-v3, AVX2 with FMA, where the CPU reports it; the log names "
                           "the set), whose last bits depend on the CPU; 1 = the architecture's baseline "
                           "ones, the same bits on every machine of an architecture"))
+        SOLID_ROW(integer("threads", 40, &Values::threads, 1, 1, 64,
+                          "Threads of a supernodal factor's numeric factorization (see baseline_kernels): "
+                          "independent subtrees and blocks of the large panels side by side. The outputs are "
+                          "the same bit for bit for any number; 1 by default, because importers often run "
+                          "many instances side by side"))
         // Inputs
         real("foundation_velocity", 20, &Values::foundation_velocity, 0, "m/s", 20, none, none,
              per_body("Horizontal velocity V of the rigid foundation",

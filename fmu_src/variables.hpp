@@ -47,6 +47,7 @@ struct Values {
     int modes;                     // 0: the full body
     int reduced_edge;              // ReducedEdge
     int baseline_kernels;          // 0 or 1
+    int threads;                   // of a supernodal factor, >= 1
     std::string result_directory;  // field output; empty = none
     double field_output_interval;
     double edge_output_interval;     // 0: no edge history

@@ -448,8 +448,9 @@ def test_the_fast_kernels_agree_with_the_baseline_and_the_log_names_them(unzippe
         error, log = fmu_log({**scene, "baseline_kernels": baseline}, unzipped3d)
         assert error is None, error
         line = next(m for m in log if m.startswith("contact solve:"))
-        kernels = line.split("flops of factorization): ")[1]
+        kernels, threads = line.split("flops of factorization): ")[1].rsplit(", ", 1)
         assert kernels == "baseline" if baseline else kernels in ("baseline", "x86-64-v3 (AVX2, FMA)"), line
+        assert threads == "1 thread", line
         assert line.startswith("contact solve: sparse"), line
         runs[baseline] = simulate(stop=3e-4, output=outputs, **scene, baseline_kernels=baseline)
     for name in outputs:  # each against its own size; the kinetic energy against the energy's
@@ -457,3 +458,29 @@ def test_the_fast_kernels_agree_with_the_baseline_and_the_log_names_them(unzippe
         scale = np.abs(runs[1]["energy" if name == "kinetic_energy" else name]).max()
         assert scale > 0, name
         assert np.abs(a - b).max() <= 1e-10 * scale, (name, np.abs(a - b).max() / scale)
+
+
+@pytest.mark.skipif(SANITIZED, reason="a 7,803-unknown factor under the sanitizers takes minutes")
+def test_two_threads_give_the_outputs_of_one_bit_for_bit(unzipped3d, tmp_path):
+    """The same hemisphere (its factor supernodal, refactored as its held set changes), pressed
+    and sliding, on one thread and on two: every output equal bit for bit, and the log says how
+    many threads ran."""
+    from contactbody import meshes
+    from conftest import fmu_log
+    mesh = meshes.hemisphere(tmp_path / "hemisphere.msh", radius=0.05, contact_size=5e-4,
+                             far_size=1e-2, fine_distance=0.0045, refine_distance=0.025,
+                             contact_angle=25.0)
+    scene = {"mesh": str(mesh), "friction_coefficient": 0.3, "initial_state": 1,
+             "top_displacement": -2e-4, "internal_step": 1e-6, "foundation_velocity": 1.0}
+    outputs = ["normal_force", "friction_force", "friction_force_z", "strain_energy",
+               "friction_dissipation", "top_reaction_y", "energy", "substeps"]
+    runs = {}
+    for threads in (1, 2):
+        error, log = fmu_log({**scene, "threads": threads}, unzipped3d)
+        assert error is None, error
+        line = next(m for m in log if m.startswith("contact solve:"))
+        assert line.endswith(f", {threads} thread" + ("s" if threads > 1 else "")), line
+        runs[threads] = simulate(stop=1e-4, output=outputs, **scene, threads=threads)
+    assert np.abs(runs[1]["normal_force"]).max() > 0 and np.abs(runs[1]["friction_force"]).max() > 0
+    for name in outputs:
+        assert np.array_equal(runs[1][name], runs[2][name]), name

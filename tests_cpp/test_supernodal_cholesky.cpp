@@ -4,6 +4,8 @@
 // reported with its column.
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include "assembly/discretization.hpp"
 #include "linalg/supernodal_cholesky.hpp"
 #include "linalg/trailing_cholesky.hpp"
@@ -82,4 +84,76 @@ TEST(SupernodalCholesky, TheFastKernelsSolveAsTheBaselineOnes) {
     baseline.solve(b, x);
     fast.solve(b, y);
     EXPECT_LE((x - y).lpNorm<Eigen::Infinity>(), 1e-12 * x.lpNorm<Eigen::Infinity>()) << fast.kernel_set();
+}
+
+namespace {
+
+// The 7-point Laplacian of an n^3 grid plus a shift: its separators (n^2 unknowns) give panels
+// wider than SupernodalCholesky's blocks, so their blocked factor and updates run.
+SparseMatrix grid_laplacian(int n) {
+    const auto index = [n](int i, int j, int k) { return (i * n + j) * n + k; };
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const int p = index(i, j, k);
+                entries.emplace_back(p, p, 6.01);
+                if (i + 1 < n) entries.emplace_back(index(i + 1, j, k), p, -1.0);
+                if (j + 1 < n) entries.emplace_back(index(i, j + 1, k), p, -1.0);
+                if (k + 1 < n) entries.emplace_back(index(i, j, k + 1), p, -1.0);
+            }
+    SparseMatrix lower(n * n * n, n * n * n);
+    lower.setFromTriplets(entries.begin(), entries.end());
+    return lower;
+}
+
+}  // namespace
+
+// One thread and several factor the same bits (the subtrees' groups and the panels' blocks do
+// not depend on the threads), on a body's K and on a grid whose panels exceed the blocks; and
+// they solve K x = b.
+TEST(SupernodalCholesky, AnyNumberOfThreadsFactorsTheSameBits) {
+    const SparseMatrix body = body_matrix(3, 0);
+    for (const SparseMatrix& lower :
+         {SparseMatrix(body.triangularView<Eigen::Lower>()), grid_laplacian(22)}) {
+        const SparseMatrix K = lower.selfadjointView<Eigen::Lower>();
+        TrailingCholesky reference(K, {});
+        std::vector<int> position(static_cast<size_t>(K.rows()));
+        for (Eigen::Index i = 0; i < K.rows(); ++i)
+            position[static_cast<size_t>(i)] = reference.position(static_cast<int>(i));
+        const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+        Eigen::VectorXd one;
+        for (int threads : {1, 2, 3}) {
+            SupernodalCholesky f(lower, position, false, threads);
+            ASSERT_TRUE(f.factor(lower));
+            EXPECT_EQ(f.threads(), threads);
+            EXPECT_GT(f.top_share(), 0.0);
+            EXPECT_LT(f.top_share(), 1.0);
+            Eigen::VectorXd x;
+            f.solve(b, x);
+            EXPECT_LE((K * x - b).lpNorm<Eigen::Infinity>(), 1e-10 * b.lpNorm<Eigen::Infinity>() * K.rows());
+            if (threads == 1)
+                one = x;
+            else
+                EXPECT_TRUE(x == one)
+                    << threads << " threads, largest difference " << (x - one).lpNorm<Eigen::Infinity>();
+        }
+    }
+}
+
+// A matrix that is not positive definite is reported at the same column on any number of threads.
+TEST(SupernodalCholesky, AFailureIsReportedAtTheSameColumnOnAnyNumberOfThreads) {
+    SparseMatrix lower = grid_laplacian(14);
+    const Eigen::Index bad = lower.rows() / 3;
+    lower.coeffRef(bad, bad) = -1;
+    std::vector<int> position(static_cast<size_t>(lower.rows()));
+    std::iota(position.begin(), position.end(), 0);
+    Eigen::Index one = -2;
+    for (int threads : {1, 2}) {
+        SupernodalCholesky f(lower, position, false, threads);
+        EXPECT_FALSE(f.factor(lower));
+        EXPECT_GE(f.failed_column(), 0);
+        if (threads == 1) one = f.failed_column();
+        EXPECT_EQ(f.failed_column(), one);
+    }
 }

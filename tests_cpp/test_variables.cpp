@@ -157,8 +157,8 @@ TEST(Variables, SameDiscretizationFollowsTheDeclaration) {
             mine = kept;
         },
         other);
-    EXPECT_EQ(rebuilding, 16);  // mesh ... top_mass: what discretize reads; modes, reduced_edge: the basis;
-                                // baseline_kernels: the factors
+    EXPECT_EQ(rebuilding, 17);  // mesh ... top_mass: what discretize reads; modes, reduced_edge: the basis;
+                                // baseline_kernels, threads: the factors
     EXPECT_GE(keeping, 13);
 }
 

@@ -64,6 +64,7 @@ struct SceneParameters {
     // The supernodal factor's kernels: the fastest this CPU has (false), or the architecture's
     // baseline ones, which compute the same bits on every machine (linalg/supernodal_kernels.hpp).
     bool baseline_kernels = false;
+    int threads = 1;  // of a supernodal factor's numeric factorization (the same bits for any)
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
     double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
@@ -130,6 +131,7 @@ struct SceneParameters {
         f("modes", rebuild, p.modes...);  // the basis is built from the discretization
         f("reduced_edge", rebuild, p.reduced_edge...);
         f("baseline_kernels", rebuild, p.baseline_kernels...);  // the factors are made with them
+        f("threads", rebuild, p.threads...);
     }
 };
 

@@ -272,7 +272,8 @@ std::string Stepper::summary() const {
     // (which factors are supernodal is known once they are made)
     if (const char* kernels = TrailingCholesky::supernodal_kernel_set(params_.baseline_kernels))
         msg << "; a supernodal factor's kernels (from " << TrailingCholesky::supernodal_flops
-            << " flops of factorization): " << kernels;
+            << " flops of factorization): " << kernels << ", " << params_.threads
+            << (params_.threads == 1 ? " thread" : " threads");
     return msg.str();
 }
 
@@ -376,7 +377,8 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     if (sparse) {  // y and x; a 3D body's z with friction (without, its x is not used)
         const int per_node = held_unknowns_per_node(params_.friction_coefficient);
         contact_dofs.resize(static_cast<size_t>(per_node * nc));
-        f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node, params_.baseline_kernels);
+        f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node,
+                                                 FactorOptions{params_.baseline_kernels, params_.threads});
         f->held->set_slip_coefficient(slip_coefficient());
         return f;
     }

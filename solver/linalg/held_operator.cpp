@@ -9,7 +9,7 @@
 namespace contactbody {
 
 HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node,
-                           bool baseline_kernels)
+                           FactorOptions options)
     : K_(K), dofs_(std::move(contact_dofs)) {
     K_.makeCompressed();
     lower_ = K_.triangularView<Eigen::Lower>();
@@ -41,8 +41,8 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs,
     }
     rows_.resize(m, nf);
     rows_.setFromTriplets(entries.begin(), entries.end());
-    factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{}, true, TrailingCholesky::Kernel::automatic,
-                                                 baseline_kernels);
+    factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{}, true,
+                                                 TrailingCholesky::Kernel::automatic, options);
     held_.assign(static_cast<size_t>(m), 0);
     held_dof_.assign(static_cast<size_t>(nf), 0);
     // For slipping rows: each contact unknown's row entries in K_ (by symmetry, its column's

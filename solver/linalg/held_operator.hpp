@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "assembly/assembly.hpp"
+#include "linalg/trailing_cholesky.hpp"
 
 namespace contactbody {
 
@@ -20,9 +21,9 @@ public:
     // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
     // then each tangent's; Discretization::contact_unknowns), unknowns_per_node of them a node
     // (2: y and x; 3: y, x and z). Slips are held only with one tangent (2 a node).
-    // baseline_kernels: a supernodal factor's (TrailingCholesky).
+    // options: how a supernodal factor is made (TrailingCholesky).
     HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node,
-                 bool baseline_kernels = false);
+                 FactorOptions options = {});
     ~HeldOperator();
     HeldOperator(const HeldOperator&) = delete;
     HeldOperator& operator=(const HeldOperator&) = delete;

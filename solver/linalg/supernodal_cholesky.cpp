@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "util/worker_team.hpp"
+
 namespace contactbody {
 
 namespace {
@@ -34,8 +36,11 @@ void permuted_lower(const SparseMatrix& lower, const std::vector<int>& position,
 }  // namespace
 
 SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position,
-                                       bool baseline_kernels)
-    : n_(lower.cols()), position_(position), kernels_(&supernodal_kernels(baseline_kernels)) {
+                                       bool baseline_kernels, int threads)
+    : n_(lower.cols()),
+      position_(position),
+      kernels_(&supernodal_kernels(baseline_kernels)),
+      threads_(std::max(1, threads)) {
     const size_t n = static_cast<size_t>(n_);
     if (lower.rows() != n_ || position.size() != n) throw std::invalid_argument("SupernodalCholesky: sizes");
     std::vector<int> start, rows;
@@ -82,13 +87,11 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
     // Relaxed amalgamation (CHOLMOD's rule): a supernode joins the next one where that one is
     // its parent and the merged panel's zeros stay within a share that falls with its size.
     const size_t f = fundamental.size() - 1;
-    std::vector<int> merged_first(fundamental.begin(), fundamental.end());
-    std::vector<double> zeros(f, 0);
     first_.assign(1, 0);
     {
-        // Walk from the first: keep a current group [first, end) with its panel rows and zeros.
+        // Walk from the first: keep a current group [first, end) with its panel's entries.
         int group_first = 0;
-        double group_zeros = 0, group_entries = 0;
+        double group_entries = 0;
         for (size_t s = 0; s < f; ++s) {
             const int a = fundamental[s], b = fundamental[s + 1];
             double entries = 0;  // of s alone: the lower triangle of its panel
@@ -96,7 +99,6 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
             if (s == 0) {
                 group_first = a;
                 group_entries = entries;
-                group_zeros = 0;
                 continue;
             }
             // Merging the group (ending at a - 1) into s: the group's last column's parent must
@@ -112,15 +114,12 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
             const bool merge = child && (columns <= 4 || (columns <= 16 && share < 0.8) ||
                                          (columns <= 48 && share < 0.1) || share < 0.05);
             if (merge) {
-                group_zeros = new_zeros;
                 group_entries += entries;
-                (void)group_zeros;
                 continue;
             }
             first_.push_back(a);
             group_first = a;
             group_entries = entries;
-            group_zeros = 0;
         }
     }
     first_.push_back(static_cast<int>(n));
@@ -132,6 +131,7 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
     // Row structures by supernode: its columns, then A's rows and the child supernodes' rows
     // beyond its last column.
     std::vector<std::vector<int>> child_supernodes(S);
+    std::vector<double> own_flops(S, 0);
     std::vector<std::vector<int>> below(S);
     row_start_.assign(1, 0);
     value_start_.assign(1, 0);
@@ -163,11 +163,72 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
         value_start_.push_back(value_start_.back() + panel_rows * columns);
         // Flops: the diagonal block's Cholesky, the panel's triangular solve and its update.
         const double c = static_cast<double>(columns), m = static_cast<double>(r.size());
-        flops_ += c * c * c / 3 + m * c * c + m * m * c;
+        own_flops[s] = c * c * c / 3 + m * c * c + m * m * c;
+        flops_ += own_flops[s];
     }
     for (size_t s = 0; s < S; ++s) std::vector<int>().swap(below[s]);
-    local_.assign(n, -1);
+    divide_among_groups(child_supernodes, own_flops);
     permuted_.resize(n_);
+}
+
+// Subtrees for the groups: from the roots down, the heaviest subtree (by flops) is split (its
+// root goes to the top, its children become subtrees) until none exceeds a quarter of a
+// group's share; then each subtree, heaviest first, joins the lightest group. All of it from
+// the analysis alone, never from the number of threads.
+void SupernodalCholesky::divide_among_groups(const std::vector<std::vector<int>>& children,
+                                             const std::vector<double>& own_flops) {
+    const size_t S = own_flops.size();
+    std::vector<double> subtree(own_flops);
+    std::vector<int> parent(S, -1);
+    for (size_t s = 0; s < S; ++s)
+        for (int c : children[s]) {
+            subtree[s] += subtree[static_cast<size_t>(c)];  // children come first
+            parent[static_cast<size_t>(c)] = static_cast<int>(s);
+        }
+    std::vector<int> parts, group(S, -1);
+    for (size_t s = 0; s < S; ++s)
+        if (parent[s] < 0) parts.push_back(static_cast<int>(s));
+    std::vector<char> top(S, 0);
+    const auto heavier = [&](int a, int b) {
+        return subtree[static_cast<size_t>(a)] != subtree[static_cast<size_t>(b)]
+                   ? subtree[static_cast<size_t>(a)] > subtree[static_cast<size_t>(b)]
+                   : a < b;
+    };
+    for (;;) {
+        const auto h = std::min_element(parts.begin(), parts.end(), heavier);
+        if (h == parts.end() || subtree[static_cast<size_t>(*h)] <= flops_ / (4 * groups) ||
+            children[static_cast<size_t>(*h)].empty())
+            break;
+        const int root = *h;
+        parts.erase(h);
+        top[static_cast<size_t>(root)] = 1;
+        parts.insert(parts.end(), children[static_cast<size_t>(root)].begin(),
+                     children[static_cast<size_t>(root)].end());
+    }
+    std::sort(parts.begin(), parts.end(), heavier);
+    std::vector<double> load(groups, 0);
+    for (int part : parts) {
+        const int g = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+        load[static_cast<size_t>(g)] += subtree[static_cast<size_t>(part)];
+        group[static_cast<size_t>(part)] = g;
+    }
+    group_supernodes_.assign(groups, {});
+    top_.clear();
+    top_offset_.assign(S, -1);
+    top_values_ = 0;
+    top_flops_ = 0;
+    for (size_t s = S; s-- > 0;)  // parents first: a subtree's supernodes take its root's group
+        if (!top[s] && group[s] < 0) group[s] = group[static_cast<size_t>(parent[s])];
+    for (size_t s = 0; s < S; ++s) {
+        if (top[s]) {
+            top_.push_back(static_cast<int>(s));
+            top_offset_[s] = top_values_;
+            top_values_ += value_start_[s + 1] - value_start_[s];
+            top_flops_ += own_flops[s];
+        } else {
+            group_supernodes_[static_cast<size_t>(group[s])].push_back(static_cast<int>(s));
+        }
+    }
 }
 
 double SupernodalCholesky::factor_nonzeros() const {
@@ -194,21 +255,142 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
             const std::ptrdiff_t place = std::lower_bound(r, r + rows, i) - r;
             values_[static_cast<size_t>(value_start_[s] + (j - first_[s]) * rows + place)] += it.value();
         }
-    Eigen::Index largest_below = 0;
-    for (size_t s = 0; s < S; ++s)
-        largest_below = std::max<Eigen::Index>(
-            largest_below, (row_start_[s + 1] - row_start_[s]) - (first_[s + 1] - first_[s]));
-    update_.resize(static_cast<size_t>(largest_below * largest_below));
+    std::ptrdiff_t update_size = 0, largest_below = 0;
+    for (size_t s = 0; s < S; ++s) {
+        const std::ptrdiff_t m = (row_start_[s + 1] - row_start_[s]) - (first_[s + 1] - first_[s]);
+        update_size = std::max(update_size, m * std::min(m, update_block));
+        largest_below = std::max(largest_below, m);
+    }
     gathered_.resize(largest_below);
-    SupernodalLayout layout;
-    layout.supernodes = S;
-    layout.first = first_.data();
-    layout.super_of = super_of_.data();
-    layout.row_start = row_start_.data();
-    layout.row_index = row_index_.data();
-    layout.value_start = value_start_.data();
-    failed_ = kernels_->factor(layout, values_.data(), update_.data(), local_.data());
-    return failed_ < 0;
+    const WorkerTeam team(threads_);
+    update_.resize(static_cast<size_t>(threads_));
+    local_.resize(static_cast<size_t>(threads_));
+    for (int w = 0; w < threads_; ++w) {
+        update_[static_cast<size_t>(w)].resize(static_cast<size_t>(update_size));
+        local_[static_cast<size_t>(w)].resize(static_cast<size_t>(n_));
+    }
+    // Groups 1.. update the top in buffers of their own (zero less their updates), added in
+    // their order after them.
+    top_updates_.resize(groups - 1);
+    targets_.resize(groups);
+    for (int g = 0; g < groups; ++g) {
+        std::vector<double*>& t = targets_[static_cast<size_t>(g)];
+        t.resize(S);
+        if (g > 0) top_updates_[static_cast<size_t>(g - 1)].assign(static_cast<size_t>(top_values_), 0.0);
+        for (size_t s = 0; s < S; ++s)
+            t[s] = g > 0 && top_offset_[s] >= 0
+                       ? top_updates_[static_cast<size_t>(g - 1)].data() + top_offset_[s]
+                       : values_.data() + value_start_[s];
+    }
+    std::vector<std::ptrdiff_t> failed(groups, -1);
+    team.run(groups, [&](int g, int worker) {
+        for (int s : group_supernodes_[static_cast<size_t>(g)]) {
+            failed[static_cast<size_t>(g)] = factor_supernode(
+                static_cast<size_t>(s), targets_[static_cast<size_t>(g)].data(), worker, nullptr);
+            if (failed[static_cast<size_t>(g)] >= 0) return;
+        }
+    });
+    for (std::ptrdiff_t f : failed)
+        if (f >= 0 && (failed_ < 0 || f < failed_)) failed_ = f;
+    if (failed_ >= 0) return false;
+    team.run(static_cast<int>(top_.size()), [&](int k, int) {
+        const size_t s = static_cast<size_t>(top_[static_cast<size_t>(k)]);
+        double* panel = values_.data() + value_start_[s];
+        const std::ptrdiff_t size = value_start_[s + 1] - value_start_[s];
+        for (int g = 1; g < groups; ++g) {
+            const double* u = top_updates_[static_cast<size_t>(g - 1)].data() + top_offset_[s];
+            for (std::ptrdiff_t i = 0; i < size; ++i) panel[i] += u[i];
+        }
+    });
+    for (int s : top_) {
+        failed_ = factor_supernode(static_cast<size_t>(s), targets_[0].data(), 0, &team);
+        if (failed_ >= 0) return false;
+    }
+    return true;
+}
+
+// Right-looking: the diagonal block's Cholesky, the rows below by a triangular solve, their
+// update C = L21 L21^T subtracted from the ancestors' panels. A panel of more than column_block
+// columns is factored by blocks of them (each block's rows below solved, then the panel's
+// columns after it updated), and C is made update_block columns at a time; blocks of rows and
+// columns are the tasks of team.
+std::ptrdiff_t SupernodalCholesky::factor_supernode(size_t s, double* const* targets, int worker,
+                                                    const WorkerTeam* team) {
+    const std::ptrdiff_t columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
+    const std::ptrdiff_t m = rows - columns;
+    double* panel = values_.data() + value_start_[s];
+    const SupernodalKernels& k = *kernels_;
+    const auto run = [&](std::ptrdiff_t tasks, const auto& task) {
+        if (team)
+            team->run(static_cast<int>(tasks), task);
+        else
+            for (std::ptrdiff_t t = 0; t < tasks; ++t) task(static_cast<int>(t), worker);
+    };
+    const auto blocks = [](std::ptrdiff_t size, std::ptrdiff_t block) { return (size + block - 1) / block; };
+    // Rows [from, rows) of columns [c0, c0 + width), solved against that block's diagonal.
+    const auto solve_below = [&](std::ptrdiff_t c0, std::ptrdiff_t width, std::ptrdiff_t from) {
+        const std::ptrdiff_t below = rows - from;
+        if (below <= 0) return;
+        const double* diagonal = panel + c0 * rows + c0;
+        run(blocks(below, row_block), [&](int b, int) {
+            const std::ptrdiff_t r0 = from + b * row_block, height = std::min(row_block, rows - r0);
+            k.solve_right(diagonal, width, rows, panel + c0 * rows + r0, height, rows);
+        });
+    };
+    if (columns <= column_block) {
+        const std::ptrdiff_t bad = k.cholesky(panel, columns, rows);
+        if (bad >= 0) return first_[s] + bad;
+        solve_below(0, columns, columns);
+    } else {
+        for (std::ptrdiff_t c0 = 0; c0 < columns; c0 += column_block) {
+            const std::ptrdiff_t width = std::min(column_block, columns - c0), next = c0 + width;
+            const std::ptrdiff_t bad = k.cholesky(panel + c0 * rows + c0, width, rows);
+            if (bad >= 0) return first_[s] + c0 + bad;
+            solve_below(c0, width, next);
+            run(blocks(columns - next, update_block), [&](int b, int) {
+                const std::ptrdiff_t j0 = next + b * update_block, w = std::min(update_block, columns - j0);
+                const double* a = panel + c0 * rows + j0;
+                k.subtract_product(a, rows, a, rows, rows - j0, w, width, panel + j0 * rows + j0, rows);
+            });
+        }
+    }
+    if (m == 0) return -1;
+    const double* L21 = panel + columns;
+    if (m <= update_block) {
+        double* C = update_[static_cast<size_t>(worker)].data();
+        k.lower_product(L21, rows, m, columns, C, m);
+        scatter(s, 0, m, C, m, targets, local_[static_cast<size_t>(worker)].data());
+        return -1;
+    }
+    run(blocks(m, update_block), [&](int b, int w) {
+        const std::ptrdiff_t q0 = b * update_block, width = std::min(update_block, m - q0);
+        double* C = update_[static_cast<size_t>(w)].data();
+        k.product(L21 + q0, rows, L21 + q0, rows, m - q0, width, columns, C, m - q0);
+        scatter(s, q0, q0 + width, C, m - q0, targets, local_[static_cast<size_t>(w)].data());
+    });
+    return -1;
+}
+
+// Columns [q0, q1) of supernode s's update C (C's rows from q0 on, leading dimension ldc)
+// subtracted from the panels that hold them, grouped by supernode (rows ascending), each group
+// through that supernode's row places.
+void SupernodalCholesky::scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C,
+                                 std::ptrdiff_t ldc, double* const* targets, int* local) const {
+    const std::ptrdiff_t columns = first_[s + 1] - first_[s];
+    const std::ptrdiff_t m = (row_start_[s + 1] - row_start_[s]) - columns;
+    const int* r = row_index_.data() + row_start_[s] + columns;
+    std::ptrdiff_t q = q0;
+    while (q < q1) {
+        const size_t t = static_cast<size_t>(super_of_[static_cast<size_t>(r[q])]);
+        const int t_rows = row_start_[t + 1] - row_start_[t];
+        for (int i = 0; i < t_rows; ++i) local[row_index_[static_cast<size_t>(row_start_[t] + i)]] = i;
+        double* target = targets[t];
+        for (; q < q1 && super_of_[static_cast<size_t>(r[q])] == static_cast<int>(t); ++q) {
+            double* column = target + static_cast<std::ptrdiff_t>(r[q] - first_[t]) * t_rows;
+            const double* c = C + (q - q0) * ldc - q0;
+            for (std::ptrdiff_t p = q; p < m; ++p) column[local[r[p]]] -= c[p];
+        }
+    }
 }
 
 void SupernodalCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {

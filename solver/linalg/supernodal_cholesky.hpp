@@ -2,7 +2,9 @@
 // fill-reducing order: columns with the same structure below them are grouped into supernodes
 // (fundamental ones, then relaxed amalgamation: a child merged into its parent where the zeros
 // it adds stay few), each stored as a dense panel and factored right-looking by dense kernels
-// (Eigen's blocked LLT, triangular solve and rank update); its solves run by panels.
+// (Eigen's blocked LLT, triangular solve and rank update); its solves run by panels. On several
+// threads, independent subtrees run side by side and the large panels near the root are cut
+// into blocks of fixed sizes: the same arithmetic for any number of threads, so the same bits.
 // Written here because CHOLMOD's supernodal module is GPL (docs/decisions.md, "The factor of a
 // 3D body"). Not yet the body's factor: no held dofs, trailing block or partial refactorization.
 #pragma once
@@ -21,8 +23,9 @@ public:
     // factor order. The symbolic analysis: supernodes and their row structures. The numeric
     // factor runs the fastest kernels this CPU has (linalg/supernodal_kernels.hpp), or the
     // architecture's baseline ones (baseline_kernels: the same bits on every machine).
+    // threads: of the numeric factor (util/worker_team.hpp), its bits the same for any number.
     SupernodalCholesky(const SparseMatrix& lower, const std::vector<int>& position,
-                       bool baseline_kernels = false);
+                       bool baseline_kernels = false, int threads = 1);
     const char* kernel_set() const { return kernels_->name; }
     // The numeric factor of a matrix with lower's pattern. False where K is not positive
     // definite (failed_column() tells where, in factor order).
@@ -35,6 +38,14 @@ public:
     Eigen::Index supernodes() const { return static_cast<Eigen::Index>(first_.size()) - 1; }
     double factor_nonzeros() const;                 // of the panels (the amalgamation's zeros included)
     double factor_flops() const { return flops_; }  // of the factorization, with those zeros
+    int threads() const { return threads_; }
+    // The subtrees' groups that run side by side, and the share of the flops left to the
+    // supernodes above them (run one by one, each cut into blocks).
+    static constexpr int groups = 4;
+    double top_share() const { return top_flops_ / flops_; }
+    // Blocks of a panel: columns factored at a time, the columns of an update computed at a
+    // time, and rows of a triangular solve.
+    static constexpr std::ptrdiff_t column_block = 256, update_block = 256, row_block = 512;
 
 private:
     Eigen::Index n_ = 0, failed_ = -1;
@@ -45,11 +56,30 @@ private:
     std::vector<int> first_, super_of_, row_start_, row_index_;
     std::vector<std::ptrdiff_t> value_start_;
     std::vector<double> values_;
-    double flops_ = 0;
+    double flops_ = 0, top_flops_ = 0;
     const SupernodalKernels* kernels_;
-    std::vector<int> local_;      // a supernode's row -> its place (factor())
-    std::vector<double> update_;  // a panel's update of its ancestors
+    int threads_ = 1;
+    // The groups' supernodes (ascending), and those above them (top_, ascending); each top
+    // supernode's place in the buffers that take groups 1.. 's updates of it (top_offset_).
+    std::vector<std::vector<int>> group_supernodes_;
+    std::vector<int> top_;
+    std::vector<std::ptrdiff_t> top_offset_;
+    std::ptrdiff_t top_values_ = 0;
+    std::vector<std::vector<double>> top_updates_;  // groups 1.. : their updates of the top
+    std::vector<std::vector<double*>> targets_;     // per group: where each supernode's panel is
+    // Per worker: a panel's update of its ancestors (a block of columns), a supernode's
+    // row -> its place.
+    std::vector<std::vector<double>> update_;
+    std::vector<std::vector<int>> local_;
     mutable Eigen::VectorXd permuted_, gathered_;
+    // One supernode's factor and its updates of the panels at `targets`; team: where its blocks
+    // run (null: on worker alone). -1, or the failed column.
+    std::ptrdiff_t factor_supernode(size_t s, double* const* targets, int worker,
+                                    const class WorkerTeam* team);
+    void divide_among_groups(const std::vector<std::vector<int>>& children,
+                             const std::vector<double>& own_flops);
+    void scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C, std::ptrdiff_t ldc,
+                 double* const* targets, int* local) const;
 };
 
 }  // namespace contactbody

@@ -16,13 +16,11 @@ bool cpu_has_x86_64_v3() {
 }  // namespace
 
 const SupernodalKernels& supernodal_kernels(bool baseline) {
-    static const SupernodalKernels base{"baseline", &factor_panels_baseline};
 #if defined(CONTACTBODY_X86_64_V3_KERNELS)
-    static const SupernodalKernels v3{"x86-64-v3 (AVX2, FMA)", &factor_panels_x86_64_v3};
     static const bool has_v3 = cpu_has_x86_64_v3();
-    if (!baseline && has_v3) return v3;
+    if (!baseline && has_v3) return supernodal_kernels_x86_64_v3;
 #endif
-    return base;
+    return supernodal_kernels_baseline;
 }
 
 }  // namespace contactbody

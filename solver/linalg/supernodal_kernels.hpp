@@ -1,8 +1,8 @@
-// The supernodal Cholesky's numeric factorization (linalg/supernodal_cholesky.hpp), compiled once
-// for each instruction set it may run on, behind plain types: the baseline of the architecture
+// The supernodal Cholesky's dense kernels (linalg/supernodal_cholesky.hpp), compiled once for
+// each instruction set they may run on, behind plain types: the baseline of the architecture
 // (SSE2 on x86_64, NEON on aarch64), and on x86_64 also x86-64-v3 (AVX2 with FMA). The binary
-// picks one set at run time from what the CPU reports (supernodal_kernels()), through a function
-// pointer chosen once: ELF ifunc and target_clones do not work with MinGW. Each set's Eigen lives
+// picks one set at run time from what the CPU reports (supernodal_kernels()), through function
+// pointers chosen once: ELF ifunc and target_clones do not work with MinGW. Each set's Eigen lives
 // in a namespace of its own (its file defines Eigen to another name), so that no inline Eigen
 // function compiled for AVX2 can stand in for the baseline's at link time; no Eigen object
 // crosses this interface, so their alignments need not agree. docs/decisions.md, "The factor's
@@ -13,33 +13,32 @@
 
 namespace contactbody {
 
-// The panels of a supernodal factor: supernode s has columns first[s] .. first[s + 1] - 1 and
-// rows row_index[row_start[s] .. row_start[s + 1]) (its columns first), its column-major panel
-// at values + value_start[s]; super_of[j] is column j's supernode.
-struct SupernodalLayout {
-    std::size_t supernodes = 0;
-    const int* first = nullptr;
-    const int* super_of = nullptr;
-    const int* row_start = nullptr;
-    const int* row_index = nullptr;
-    const std::ptrdiff_t* value_start = nullptr;
-};
-
-// Factors the panels in place (they hold P K P^T's lower entries): -1, or the first column (in
-// factor order) where K is not positive definite. update: room for the largest panel's rows
-// below its columns, squared; local: one int per column.
-using FactorPanels = std::ptrdiff_t (*)(const SupernodalLayout& layout, double* values, double* update,
-                                        int* local);
-
+// Column-major blocks: a pointer to the first entry and the leading dimension (ld).
 struct SupernodalKernels {
     const char* name;  // "baseline" or "x86-64-v3 (AVX2, FMA)"
-    FactorPanels factor;
+    // The n x n lower block a in place of its Cholesky factor: -1, or the column where it is
+    // not positive definite (Eigen's blocked LLT).
+    std::ptrdiff_t (*cholesky)(double* a, std::ptrdiff_t n, std::ptrdiff_t ld);
+    // x <- x L^-T: x rows x n, L the n x n lower block l (a triangular solve on the right).
+    void (*solve_right)(const double* l, std::ptrdiff_t n, std::ptrdiff_t ldl, double* x, std::ptrdiff_t rows,
+                        std::ptrdiff_t ldx);
+    // c = a a^T, its lower triangle only (a rows x depth, c rows x rows: SYRK).
+    void (*lower_product)(const double* a, std::ptrdiff_t lda, std::ptrdiff_t rows, std::ptrdiff_t depth,
+                          double* c, std::ptrdiff_t ldc);
+    // c = a b^T (a rows x depth, b cols x depth, c rows x cols: GEMM).
+    void (*product)(const double* a, std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb,
+                    std::ptrdiff_t rows, std::ptrdiff_t cols, std::ptrdiff_t depth, double* c,
+                    std::ptrdiff_t ldc);
+    // c -= a b^T (the same shapes).
+    void (*subtract_product)(const double* a, std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb,
+                             std::ptrdiff_t rows, std::ptrdiff_t cols, std::ptrdiff_t depth, double* c,
+                             std::ptrdiff_t ldc);
 };
 
 // The fastest set this CPU runs, or the baseline (baseline true, or no other set built).
 const SupernodalKernels& supernodal_kernels(bool baseline = false);
 
-std::ptrdiff_t factor_panels_baseline(const SupernodalLayout&, double*, double*, int*);
-std::ptrdiff_t factor_panels_x86_64_v3(const SupernodalLayout&, double*, double*, int*);
+extern const SupernodalKernels supernodal_kernels_baseline;
+extern const SupernodalKernels supernodal_kernels_x86_64_v3;
 
 }  // namespace contactbody

@@ -131,7 +131,7 @@ cholmod_factor* analyze_given(cholmod_sparse& a, std::vector<int>& perm, cholmod
 }  // namespace
 
 TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable,
-                                   Kernel kernel, bool baseline_kernels)
+                                   Kernel kernel, FactorOptions options)
     : c_(std::make_unique<Cholmod>()), n_(K.rows()), m_(static_cast<Eigen::Index>(trailing.size())) {
     cholmod_common& c = c_->common;
     // Simplicial L L^T: with one right-hand side its solves are faster than the supernodal
@@ -211,7 +211,8 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
             inverse_perm_.assign(n, 0);
             for (size_t k = 0; k < n; ++k) inverse_perm_[static_cast<size_t>(perm_[k])] = static_cast<int>(k);
             if constexpr (solid_bodies_built) {
-                supernodal_ = std::make_unique<SupernodalCholesky>(lower, inverse_perm_, baseline_kernels);
+                supernodal_ = std::make_unique<SupernodalCholesky>(lower, inverse_perm_,
+                                                                   options.baseline_kernels, options.threads);
                 factor_supernodal(lower, "4/dt^2 M + A");
             }
             return;

@@ -17,6 +17,15 @@ namespace contactbody {
 
 class SupernodalCholesky;
 
+// How a supernodal factor is made (linalg/supernodal_cholesky.hpp): its dense kernels, the
+// architecture's baseline ones (baseline_kernels) or the fastest this CPU has
+// (linalg/supernodal_kernels.hpp), and the threads of its numeric factorization (the same bits
+// for any number).
+struct FactorOptions {
+    bool baseline_kernels = false;
+    int threads = 1;
+};
+
 class TrailingCholesky {
 public:
     // Factors the symmetric positive definite K (only its lower triangle is read) with the
@@ -32,10 +41,8 @@ public:
     // benchmarks; supernodal_lu, Eigen's SparseLU of the same order, is the factor it replaced,
     // kept for comparison and allocating in its solve() and refactor()).
     enum class Kernel { automatic, simplicial, supernodal, supernodal_lu };
-    // baseline_kernels: a supernodal Cholesky's, the architecture's baseline kernels
-    // (linalg/supernodal_kernels.hpp).
     TrailingCholesky(const SparseMatrix& K, const std::vector<int>& trailing, bool refactorable = false,
-                     Kernel kernel = Kernel::automatic, bool baseline_kernels = false);
+                     Kernel kernel = Kernel::automatic, FactorOptions options = {});
     ~TrailingCholesky();
     TrailingCholesky(const TrailingCholesky&) = delete;
     TrailingCholesky& operator=(const TrailingCholesky&) = delete;

@@ -19,17 +19,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_factor_kernels MESH|rect:NX DIMENSION\n");
         return 2;
     }
-    SceneParameters p;
-    if (std::strncmp(argv[1], "rect:", 5) == 0)
-        p.nx = p.ny = std::atoi(argv[1] + 5);
-    else
-        p.mesh = argv[1];
-    p.dimension = std::atoi(argv[2]);
-    p.friction_coefficient = 0;
-    const Discretization d = discretize(p);
-    const double dt = 1e-6;  // the substep of the contact_scaling scenes
-    SparseMatrix K = d.A_free + (4 / (dt * dt)) * d.M_free;
-    K.makeCompressed();
+    const SparseMatrix K = body_stiffness(argv[1], std::atoi(argv[2]));
     const SparseMatrix lower = K.triangularView<Eigen::Lower>();
     const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
     std::printf("{\"unknowns\": %ld", static_cast<long>(K.rows()));
@@ -41,10 +31,7 @@ int main(int argc, char** argv) {
         f.refactor(lower);
         const double refactor = seconds_since(t);
         Eigen::VectorXd x;
-        f.solve(b, x);
-        t = Clock::now();
-        for (int k = 0; k < 20; ++k) f.solve(b, x);
-        const double solve = seconds_since(t) / 20;
+        const double solve = mean_solve_seconds(f, b, x, 20);
         const bool lu = kernel == TrailingCholesky::Kernel::supernodal_lu;
         if (!lu)
             std::printf(", \"flops\": %.6g, \"factor_nonzeros\": %.6g", f.factor_flops(),

@@ -5,11 +5,15 @@
 // each factor, the seconds of a factorization (the best of REPEATS) and of a solve, the
 // GFlop/s, and the solutions' largest difference; the supernodal Cholesky with its baseline
 // kernels and with the fastest this CPU has; the peak memory.
+// With WRITE_K=PREFIX in the environment it also writes K's lower triangle (PREFIX.mtx, Matrix
+// Market) and CHOLMOD's order (PREFIX.perm: factor position -> unknown, a line each) for
+// cholmod_supernodal.c.
 //   bench_supernodal MESH|rect:NX DIMENSION [REPEATS [ONLY]]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "bench_common.hpp"
 #include "linalg/supernodal_cholesky.hpp"
@@ -23,21 +27,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_supernodal MESH|rect:NX DIMENSION [REPEATS]\n");
         return 2;
     }
-    SceneParameters p;
-    if (std::strncmp(argv[1], "rect:", 5) == 0)
-        p.nx = p.ny = std::atoi(argv[1] + 5);
-    else
-        p.mesh = argv[1];
-    p.dimension = std::atoi(argv[2]);
+    const SparseMatrix K = body_stiffness(argv[1], std::atoi(argv[2]));
     const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
     // ONLY = supernodal: the supernodal Cholesky alone (CHOLMOD's order), for bodies where
     // today's factors take tens of minutes.
     const bool only_supernodal = argc > 4 && std::strcmp(argv[4], "supernodal") == 0;
-    p.friction_coefficient = 0;
-    const Discretization d = discretize(p);
-    const double dt = 1e-6;
-    SparseMatrix K = d.A_free + (4 / (dt * dt)) * d.M_free;
-    K.makeCompressed();
     const SparseMatrix lower = K.triangularView<Eigen::Lower>();
     const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
     // The machine's dense rate, in this run.
@@ -73,10 +67,7 @@ int main(int argc, char** argv) {
             best = std::min(best, seconds_since(t));
         }
         Eigen::VectorXd x;
-        f.solve(b, x);
-        auto t = Clock::now();
-        for (int k = 0; k < 10; ++k) f.solve(b, x);
-        const double solve = seconds_since(t) / 10;
+        const double solve = mean_solve_seconds(f, b, x, 10);
         const bool lu = kernel == TrailingCholesky::Kernel::supernodal_lu;
         if (!lu) {
             reference_x = x;
@@ -88,6 +79,23 @@ int main(int argc, char** argv) {
         }
         std::printf(", \"%s\": {\"factor_seconds\": %.6g, \"solve_seconds\": %.6g}",
                     lu ? "supernodal_lu" : "simplicial", best, solve);
+    }
+    if (const char* prefix = std::getenv("WRITE_K")) {
+        FILE* f = std::fopen((std::string(prefix) + ".mtx").c_str(), "w");
+        std::fprintf(f, "%%%%MatrixMarket matrix coordinate real symmetric\n%ld %ld %ld\n",
+                     static_cast<long>(K.rows()), static_cast<long>(K.cols()),
+                     static_cast<long>(lower.nonZeros()));
+        for (Eigen::Index j = 0; j < lower.outerSize(); ++j)
+            for (SparseMatrix::InnerIterator it(lower, j); it; ++it)
+                std::fprintf(f, "%ld %ld %.17g\n", static_cast<long>(it.row() + 1), static_cast<long>(j + 1),
+                             it.value());
+        std::fclose(f);
+        std::vector<int> unknown_at(position.size());
+        for (size_t i = 0; i < position.size(); ++i)
+            unknown_at[static_cast<size_t>(position[i])] = static_cast<int>(i);
+        f = std::fopen((std::string(prefix) + ".perm").c_str(), "w");
+        for (int u : unknown_at) std::fprintf(f, "%d\n", u);
+        std::fclose(f);
     }
     // The supernodal Cholesky with the baseline kernels, then with the fastest this CPU has, on
     // one thread and on two (whose solution must be the one thread's bit for bit).
@@ -106,10 +114,7 @@ int main(int argc, char** argv) {
             best = std::min(best, seconds_since(t));
         }
         Eigen::VectorXd x;
-        s.solve(b, x);
-        auto t = Clock::now();
-        for (int k = 0; k < 10; ++k) s.solve(b, x);
-        const double solve = seconds_since(t) / 10;
+        const double solve = mean_solve_seconds(s, b, x, 10);
         if (baseline) baseline_x = x;
         if (!baseline && threads == 1) one_thread_x = x;
         const Eigen::VectorXd& against = reference_x.size() ? reference_x : baseline_x;
@@ -117,7 +122,7 @@ int main(int argc, char** argv) {
             ", \"%s\": {\"kernel_set\": \"%s\", \"analysis_seconds\": %.6g, \"factor_seconds\": %.6g, "
             "\"solve_seconds\": %.6g, \"supernodes\": %ld, \"nonzeros\": %.6g, \"flops\": %.6g, "
             "\"gflops\": %.4g, \"difference\": %.3g, \"difference_to_baseline\": %.3g, \"threads\": %d, "
-            "\"top_share\": %.3g, \"same_bits_as_one_thread\": %s}",
+            "\"top_share\": %.3g, \"buffer_mb\": %.1f, \"same_bits_as_one_thread\": %s}",
             baseline       ? "supernodal_cholesky"
             : threads == 1 ? "supernodal_cholesky_fast"
                            : "supernodal_cholesky_fast_2_threads",
@@ -125,7 +130,8 @@ int main(int argc, char** argv) {
             s.factor_flops(), s.factor_flops() / best * 1e-9,
             (x - against).lpNorm<Eigen::Infinity>() / against.lpNorm<Eigen::Infinity>(),
             (x - baseline_x).lpNorm<Eigen::Infinity>() / baseline_x.lpNorm<Eigen::Infinity>(), threads,
-            s.top_share(), threads > 1 ? (x == one_thread_x ? "true" : "false") : "null");
+            s.top_share(), 8e-6 * s.buffer_values(),
+            threads > 1 ? (x == one_thread_x ? "true" : "false") : "null");
     }
     std::printf(", \"peak_memory_mb\": %.1f}\n", peak_rss_mb());
     return 0;

@@ -28,6 +28,14 @@ SparseMatrix body_matrix(int dimension, int n) {
     return K;
 }
 
+// Each unknown's place in f's order (CHOLMOD's fill-reducing one).
+std::vector<int> factor_order(const TrailingCholesky& f) {
+    std::vector<int> position(static_cast<size_t>(f.size()));
+    for (Eigen::Index i = 0; i < f.size(); ++i)
+        position[static_cast<size_t>(i)] = f.position(static_cast<int>(i));
+    return position;
+}
+
 }  // namespace
 
 TEST(SupernodalCholesky, SolvesAsTheBodysFactorOn2DAnd3DBodies) {
@@ -35,9 +43,7 @@ TEST(SupernodalCholesky, SolvesAsTheBodysFactorOn2DAnd3DBodies) {
         const SparseMatrix K = body_matrix(dimension, n);
         const SparseMatrix lower = K.triangularView<Eigen::Lower>();
         TrailingCholesky reference(K, {});
-        std::vector<int> position(static_cast<size_t>(K.rows()));
-        for (Eigen::Index i = 0; i < K.rows(); ++i)
-            position[static_cast<size_t>(i)] = reference.position(static_cast<int>(i));
+        const std::vector<int> position = factor_order(reference);
         SupernodalCholesky f(lower, position);
         ASSERT_TRUE(f.factor(lower));
         EXPECT_LT(f.supernodes(), K.rows() / 3) << "dimension " << dimension;
@@ -71,9 +77,7 @@ TEST(SupernodalCholesky, TheFastKernelsSolveAsTheBaselineOnes) {
     const SparseMatrix K = body_matrix(3, 0);
     const SparseMatrix lower = K.triangularView<Eigen::Lower>();
     TrailingCholesky reference(K, {});
-    std::vector<int> position(static_cast<size_t>(K.rows()));
-    for (Eigen::Index i = 0; i < K.rows(); ++i)
-        position[static_cast<size_t>(i)] = reference.position(static_cast<int>(i));
+    const std::vector<int> position = factor_order(reference);
     SupernodalCholesky baseline(lower, position, true), fast(lower, position);
     EXPECT_STREQ(baseline.kernel_set(), "baseline");
     EXPECT_STREQ(fast.kernel_set(), supernodal_kernels().name);
@@ -118,9 +122,7 @@ TEST(SupernodalCholesky, AnyNumberOfThreadsFactorsTheSameBits) {
          {SparseMatrix(body.triangularView<Eigen::Lower>()), grid_laplacian(22)}) {
         const SparseMatrix K = lower.selfadjointView<Eigen::Lower>();
         TrailingCholesky reference(K, {});
-        std::vector<int> position(static_cast<size_t>(K.rows()));
-        for (Eigen::Index i = 0; i < K.rows(); ++i)
-            position[static_cast<size_t>(i)] = reference.position(static_cast<int>(i));
+        const std::vector<int> position = factor_order(reference);
         const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
         Eigen::VectorXd one;
         for (int threads : {1, 2, 3}) {

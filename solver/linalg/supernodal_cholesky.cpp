@@ -172,9 +172,10 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
 }
 
 // Subtrees for the groups: from the roots down, the heaviest subtree (by flops) is split (its
-// root goes to the top, its children become subtrees) until none exceeds a quarter of a
-// group's share; then each subtree, heaviest first, joins the lightest group. All of it from
-// the analysis alone, never from the number of threads.
+// root goes to the top, its children become subtrees) until none exceeds half a group's share;
+// then each subtree, heaviest first, joins the lightest group. All of it from the analysis
+// alone, never from the number of threads (docs/decisions.md, "The supernodal factor on
+// several threads").
 void SupernodalCholesky::divide_among_groups(const std::vector<std::vector<int>>& children,
                                              const std::vector<double>& own_flops) {
     const size_t S = own_flops.size();
@@ -196,7 +197,7 @@ void SupernodalCholesky::divide_among_groups(const std::vector<std::vector<int>>
     };
     for (;;) {
         const auto h = std::min_element(parts.begin(), parts.end(), heavier);
-        if (h == parts.end() || subtree[static_cast<size_t>(*h)] <= flops_ / (4 * groups) ||
+        if (h == parts.end() || subtree[static_cast<size_t>(*h)] <= flops_ / (2.0 * groups) ||
             children[static_cast<size_t>(*h)].empty())
             break;
         const int root = *h;
@@ -214,19 +215,27 @@ void SupernodalCholesky::divide_among_groups(const std::vector<std::vector<int>>
     }
     group_supernodes_.assign(groups, {});
     top_.clear();
-    top_offset_.assign(S, -1);
-    top_values_ = 0;
     top_flops_ = 0;
     for (size_t s = S; s-- > 0;)  // parents first: a subtree's supernodes take its root's group
         if (!top[s] && group[s] < 0) group[s] = group[static_cast<size_t>(parent[s])];
+    // Group g's buffer holds the panels of the top supernodes its supernodes update.
+    top_offset_.assign(groups, std::vector<std::ptrdiff_t>(S, -1));
+    top_values_.assign(groups, 0);
     for (size_t s = 0; s < S; ++s) {
         if (top[s]) {
             top_.push_back(static_cast<int>(s));
-            top_offset_[s] = top_values_;
-            top_values_ += value_start_[s + 1] - value_start_[s];
             top_flops_ += own_flops[s];
-        } else {
-            group_supernodes_[static_cast<size_t>(group[s])].push_back(static_cast<int>(s));
+            continue;
+        }
+        const size_t g = static_cast<size_t>(group[s]);
+        group_supernodes_[g].push_back(static_cast<int>(s));
+        for (int k = row_start_[s] + (first_[s + 1] - first_[s]); g > 0 && k < row_start_[s + 1]; ++k) {
+            const size_t t =
+                static_cast<size_t>(super_of_[static_cast<size_t>(row_index_[static_cast<size_t>(k)])]);
+            if (top[t] && top_offset_[g][t] < 0) {
+                top_offset_[g][t] = top_values_[g];
+                top_values_[g] += value_start_[t + 1] - value_start_[t];
+            }
         }
     }
 }
@@ -271,19 +280,18 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
     }
     // Groups 1.. update the top in buffers of their own (zero less their updates), added in
     // their order after them.
-    top_updates_.resize(groups - 1);
+    top_updates_.resize(groups);
     targets_.resize(groups);
-    for (int g = 0; g < groups; ++g) {
-        std::vector<double*>& t = targets_[static_cast<size_t>(g)];
+    for (size_t g = 0; g < groups; ++g) {
+        std::vector<double*>& t = targets_[g];
         t.resize(S);
-        if (g > 0) top_updates_[static_cast<size_t>(g - 1)].assign(static_cast<size_t>(top_values_), 0.0);
+        top_updates_[g].assign(static_cast<size_t>(top_values_[g]), 0.0);
         for (size_t s = 0; s < S; ++s)
-            t[s] = g > 0 && top_offset_[s] >= 0
-                       ? top_updates_[static_cast<size_t>(g - 1)].data() + top_offset_[s]
-                       : values_.data() + value_start_[s];
+            t[s] = top_offset_[g][s] >= 0 ? top_updates_[g].data() + top_offset_[g][s]
+                                          : values_.data() + value_start_[s];
     }
     std::vector<std::ptrdiff_t> failed(groups, -1);
-    team.run(groups, [&](int g, int worker) {
+    team.run(static_cast<int>(groups), [&](int g, int worker) {
         for (int s : group_supernodes_[static_cast<size_t>(g)]) {
             failed[static_cast<size_t>(g)] = factor_supernode(
                 static_cast<size_t>(s), targets_[static_cast<size_t>(g)].data(), worker, nullptr);
@@ -297,8 +305,9 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
         const size_t s = static_cast<size_t>(top_[static_cast<size_t>(k)]);
         double* panel = values_.data() + value_start_[s];
         const std::ptrdiff_t size = value_start_[s + 1] - value_start_[s];
-        for (int g = 1; g < groups; ++g) {
-            const double* u = top_updates_[static_cast<size_t>(g - 1)].data() + top_offset_[s];
+        for (size_t g = 1; g < groups; ++g) {
+            if (top_offset_[g][s] < 0) continue;
+            const double* u = top_updates_[g].data() + top_offset_[g][s];
             for (std::ptrdiff_t i = 0; i < size; ++i) panel[i] += u[i];
         }
     });

@@ -39,10 +39,17 @@ public:
     double factor_nonzeros() const;                 // of the panels (the amalgamation's zeros included)
     double factor_flops() const { return flops_; }  // of the factorization, with those zeros
     int threads() const { return threads_; }
-    // The subtrees' groups that run side by side, and the share of the flops left to the
-    // supernodes above them (run one by one, each cut into blocks).
-    static constexpr int groups = 4;
+    // The subtrees' groups that run side by side (each group past the first updates the
+    // supernodes above them in a buffer of its own: memory that one more group costs), and the
+    // share of the flops left to those supernodes (run one by one, each cut into blocks).
+    static constexpr size_t groups = 2;
     double top_share() const { return top_flops_ / flops_; }
+    // The buffers' entries (groups 1.. 's updates of the top), the memory that threads cost.
+    double buffer_values() const {
+        double sum = 0;
+        for (size_t g = 1; g < top_values_.size(); ++g) sum += static_cast<double>(top_values_[g]);
+        return sum;
+    }
     // Blocks of a panel: columns factored at a time, the columns of an update computed at a
     // time, and rows of a triangular solve.
     static constexpr std::ptrdiff_t column_block = 256, update_block = 256, row_block = 512;
@@ -63,9 +70,9 @@ private:
     // supernode's place in the buffers that take groups 1.. 's updates of it (top_offset_).
     std::vector<std::vector<int>> group_supernodes_;
     std::vector<int> top_;
-    std::vector<std::ptrdiff_t> top_offset_;
-    std::ptrdiff_t top_values_ = 0;
-    std::vector<std::vector<double>> top_updates_;  // groups 1.. : their updates of the top
+    std::vector<std::vector<std::ptrdiff_t>> top_offset_;  // per group (group 0 has none)
+    std::vector<std::ptrdiff_t> top_values_;
+    std::vector<std::vector<double>> top_updates_;  // per group: its buffer
     std::vector<std::vector<double*>> targets_;     // per group: where each supernode's panel is
     // Per worker: a panel's update of its ancestors (a block of columns), a supernode's
     // row -> its place.

@@ -193,6 +193,8 @@ std::vector<char> serialize(const FmuState& s) {
         w.value(sim.contact_factorization.substep);
         w.value<uint64_t>(static_cast<uint64_t>(sim.contact_factorization.pattern.size()));
         for (signed char x : sim.contact_factorization.pattern) w.value<int8_t>(x);
+        w.value<uint64_t>(static_cast<uint64_t>(sim.contact_factorization.slip.size()));
+        for (double x : sim.contact_factorization.slip) w.value(x);
     }
 
     std::vector<char> out(header_size + w.bytes.size());
@@ -352,6 +354,17 @@ FmuState deserialize(const char* bytes, size_t size) {
             if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3)
                 r.fail("invalid contact factorization node state");
         }
+        const uint64_t slips = r.value<uint64_t>("contact factorization slips");
+        if (slips != 0 && (pattern == 0 || slips % pattern != 0 || slips / pattern != tangents))
+            r.fail("contact factorization slips do not fit the mesh");
+        f.slip.resize(static_cast<size_t>(slips));
+        for (double& x : f.slip) {
+            x = r.finite("contact factorization slip");
+            if (std::abs(x) > 1) r.fail("invalid contact factorization slip");
+        }
+        for (size_t k = 0; k < f.slip.size(); ++k)
+            if (f.slip[k] != 0 && f.pattern[k % f.pattern.size()] != 3)
+                r.fail("a contact factorization slip at a node that holds none");
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");
     return s;

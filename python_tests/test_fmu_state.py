@@ -159,11 +159,21 @@ def corruptions(blob, md):
     v_length = o["u"] + 8 * n_u
     flipped = bytearray(blob)
     flipped[HEADER + 100] ^= 0x40
-    # The last fields: the contact factorization's substep and node pattern (empty here).
-    factorization = len(blob) - HEADER - 16
+    # The last fields: the contact factorization's substep, node pattern and held slips (both
+    # empty here).
+    factorization = len(blob) - HEADER - 24
     nodes = struct.unpack_from("<i", blob, HEADER + o["edge_nodes"])[0]
-    pattern = lambda states: reseal(blob[:-8] + struct.pack("<Q", len(states)) + bytes(states))
+
+    def pattern(states, slips=()):
+        return reseal(blob[:-16] + struct.pack("<Q", len(states)) + bytes(states) +
+                      struct.pack("<Q", len(slips)) + struct.pack(f"<{len(slips)}d", *slips))
+
     return {
+        "contact factorization slips without its nodes": pattern([], [1.0] * nodes),
+        "contact factorization slips of another mesh": pattern([3] * nodes, [1.0] * (nodes + 1)),
+        "contact factorization slip above 1": pattern([3] * nodes, [1.5] * nodes),
+        "contact factorization slip NaN": pattern([3] * nodes, [float("nan")] * nodes),
+        "contact factorization slip at a node without one": pattern([2] * nodes, [1.0] * nodes),
         "contact factorization substep NaN": patch(blob, factorization, "<d", float("nan")),
         "contact factorization substep negative": patch(blob, factorization, "<d", -2e-6),
         "contact factorization of another mesh": pattern([1] * (nodes - 1)),
@@ -173,8 +183,8 @@ def corruptions(blob, md):
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 17": blob[:8] + struct.pack("<I", 17) + blob[12:],
-        "version 15 (before the 3D model's threads)": blob[:8] + struct.pack("<I", 15) + blob[12:],
+        "version 18": blob[:8] + struct.pack("<I", 18) + blob[12:],
+        "version 16 (before the held 3D slips)": blob[:8] + struct.pack("<I", 16) + blob[12:],
         "version 14 (before the 3D model's baseline_kernels)": blob[:8] + struct.pack("<I", 14) + blob[12:],
         "version 13 (before the 3D model's z variables)": blob[:8] + struct.pack("<I", 13) + blob[12:],
         "version 12 (before the contact factorization)": blob[:8] + struct.pack("<I", 12) + blob[12:],

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "assembly/discretization.hpp"
 #include "body/stepper.hpp"
 #include "contact/friction_law.hpp"
+#include "linalg/held_operator.hpp"
 #include "linalg/trailing_cholesky.hpp"
 #include "mesh/gmsh.hpp"
 #include "output/field_output.hpp"
@@ -491,13 +493,18 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
     for (auto v : {MassVariant::redistributed_normal, MassVariant::redistributed_implicit_contact}) {
         for (const bool creeping : {false, true}) {
             SCOPED_TRACE(std::to_string(static_cast<int>(v)) + (creeping ? " creeping" : " sliding"));
-            SceneParameters p = box_scene(Box{}, "box_paths.msh", v);
+            Box box;  // 64 contact nodes: more slips than GCR's kept directions span
+            box.nx = box.nz = 7;
+            SceneParameters p = box_scene(box, "box_paths.msh", v);
             p.friction_coefficient = 0.4;
             p.static_friction_ratio = creeping ? 1.3 : 1.0;
-            Stepper sparse(p), condensed(p);
+            Stepper sparse(p), condensed(p), gcr(p);
             sparse.set_contact_path(Stepper::ContactPath::sparse);
             condensed.set_contact_path(Stepper::ContactPath::condensed);
-            State a = sparse.initial_state(-2e-5), b = condensed.initial_state(-2e-5);
+            gcr.set_contact_path(Stepper::ContactPath::sparse_gcr);
+            State a = sparse.initial_state(-2e-5), b = condensed.initial_state(-2e-5),
+                  c = gcr.initial_state(-2e-5);
+            int held_slips = 0;  // substeps whose factor held slipping rows
             const auto energy = [&](Stepper& body, const State& state) {
                 const auto [kinetic, strain] = body.kinetic_and_strain_energy(state);
                 return kinetic + strain;
@@ -516,6 +523,10 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
                 load.foundation_velocity[1] = speed * std::sin(heading);
                 const SubstepReport ra = sparse.substep(a, dt, load);
                 const SubstepReport rb = condensed.substep(b, dt, load);
+                const SubstepReport rc = gcr.substep(c, dt, load);
+                const std::vector<double>& held = sparse.contact_factorization().slip;
+                held_slips += std::any_of(held.begin(), held.end(), [](double x) { return x != 0; });
+                worst = std::max(worst, std::abs(rc.normal_force - rb.normal_force));
                 wa += ra.work;
                 wb += rb.work;
                 least_dissipation =
@@ -539,6 +550,19 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
             EXPECT_TRUE(sparse.sparse_contact());
             EXPECT_FALSE(condensed.sparse_contact());
             EXPECT_GT(slipping, 100);
+            // The slipping rows in the factor (docs/decisions.md, "A 3D body's factor holds its
+            // slipping nodes"): held where more nodes slip than GCR's kept directions span (the
+            // box's slipping nodes fall from 64 to about 40 as it bounces), with fewer held solves
+            // than the slips left to GCR, and no slip held by the GCR path.
+            EXPECT_TRUE(gcr.contact_factorization().slip.empty());
+            RecordProperty(creeping ? "creeping_held_solves" : "sliding_held_solves",
+                           std::to_string(sparse.sparse_solver().solves()) + " against " +
+                               std::to_string(gcr.sparse_solver().solves()) + " by GCR");
+            if (!creeping) {
+                RecordProperty("held_slips", held_slips);
+                EXPECT_GT(held_slips, substeps / 10);
+                EXPECT_LT(sparse.sparse_solver().solves(), gcr.sparse_solver().solves());
+            }
             if (creeping) EXPECT_GT(sticking, 100);
             EXPECT_LT(worst / scale, 1e-8);
             EXPECT_LT(worst_work / work_scale, 1e-9);
@@ -597,6 +621,75 @@ TEST(Body3D, SparseContactSolveConvergesOnAQuasiStaticLoadStepWithFriction) {
     EXPECT_NEAR(ra.friction_force[1], rb.friction_force[1], 1e-8 * rb.normal_force);
     EXPECT_NEAR((step.a.u - step.b.u).lpNorm<Eigen::Infinity>(), 0,
                 1e-8 * step.b.u.lpNorm<Eigen::Infinity>());
+}
+
+// A 3D body's held operator with slipping rows: a held solve satisfies K's rows where free,
+// the held values, and r_T = F r_y t on each slipping node (r = K x - b, t its unit slip
+// direction), which is what the sparse contact solve reads of it; with the slips dropped it is
+// the Cholesky's solve again.
+TEST(Body3D, SlippingRowsHoldTheDiscsSlipLaw) {
+    Box box;
+    box.nx = box.nz = 6;
+    SceneParameters p = box_scene(box, "box_held_slips.msh", MassVariant::redistributed_normal);
+    p.friction_coefficient = 0.3;
+    const Stepper body(p);
+    const Discretization& d = body.discretization();
+    const double dt = 1e-6;
+    const SparseMatrix K = (4.0 / (dt * dt)) * d.M_free + d.A_free;
+    HeldOperator held(K, d.contact_unknowns(), 3);
+    held.set_slip_coefficient(0.3);
+    ASSERT_EQ(held.slip_coefficient(), 0.3);  // the node's x, y and z columns share their rows
+    const Eigen::Index n = held.unknowns() / 3;
+    std::vector<char> hold(static_cast<size_t>(3 * n), 0);
+    std::vector<double> slip(static_cast<size_t>(2 * n), 0.0);
+    for (Eigen::Index i = 0; i < n; ++i) {  // open, sticking, slipping along a heading, pressed
+        hold[static_cast<size_t>(i)] = i % 4 != 0;
+        hold[static_cast<size_t>(n + i)] = hold[static_cast<size_t>(2 * n + i)] = i % 4 == 1;
+        if (i % 4 == 2) {
+            slip[static_cast<size_t>(i)] = std::cos(0.7 * static_cast<double>(i));
+            slip[static_cast<size_t>(n + i)] = std::sin(0.7 * static_cast<double>(i));
+        }
+    }
+    held.hold(hold, slip);
+    ASSERT_EQ(held.slip(), slip);  // the LU found its pivots
+    Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1e3, 2e3), values(3 * n), x;
+    for (Eigen::Index j = 0; j < 3 * n; ++j) values[j] = 1e-6 * static_cast<double>(j % 5 - 2);
+    const Eigen::VectorXd rhs = b;
+    held.impose(b, values);
+    held.solve(b, x);
+    const Eigen::VectorXd r = K * x - rhs;
+    const double tol = 1e-9 * rhs.norm();
+    std::vector<char> contact(static_cast<size_t>(K.rows()), 0);
+    for (Eigen::Index j = 0; j < 3 * n; ++j) contact[static_cast<size_t>(held.dof(j))] = 1;
+    for (Eigen::Index k = 0; k < K.rows(); ++k)
+        if (!contact[static_cast<size_t>(k)]) EXPECT_NEAR(r[k], 0, tol) << "free row " << k;
+    int slipping = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const int y = held.dof(i);
+        if (hold[static_cast<size_t>(i)])
+            EXPECT_DOUBLE_EQ(x[y], values[i]);
+        else
+            EXPECT_NEAR(r[y], 0, tol);
+        for (Eigen::Index c = 1; c <= 2; ++c) {
+            const int t = held.dof(c * n + i);
+            if (hold[static_cast<size_t>(c * n + i)])
+                EXPECT_DOUBLE_EQ(x[t], values[c * n + i]);
+            else
+                EXPECT_NEAR(r[t] - 0.3 * slip[static_cast<size_t>((c - 1) * n + i)] * r[y], 0, tol)
+                    << "node " << i << ", tangent " << c;
+        }
+        slipping += slip[static_cast<size_t>(i)] != 0;
+    }
+    EXPECT_GT(slipping, 8);
+    // Without the slips: K held at the same dofs, symmetric again.
+    held.hold(hold);
+    EXPECT_TRUE(std::all_of(held.slip().begin(), held.slip().end(), [](double s) { return s == 0; }));
+    b = rhs;
+    held.impose(b, values);
+    held.solve(b, x);
+    const Eigen::VectorXd r2 = K * x - rhs;
+    for (Eigen::Index j = n; j < 3 * n; ++j)
+        if (!hold[static_cast<size_t>(j)]) EXPECT_NEAR(r2[held.dof(j)], 0, tol);
 }
 
 // Where a refactorization costs more held solves than GCR may take (a tetrahedral body of a

@@ -264,7 +264,7 @@ TEST(HeldOperator, SlippingRowsHoldTheirSlipLaw) {
     held.set_slip_coefficient(0.3);
     const Eigen::Index n = held.unknowns() / 2;
     std::vector<char> hold(static_cast<size_t>(2 * n), 0);
-    std::vector<signed char> slip(static_cast<size_t>(n), 0);
+    std::vector<double> slip(static_cast<size_t>(n), 0.0);
     for (Eigen::Index i = 0; i < n; ++i) {  // open, sticking, slipping either way, pressed
         hold[static_cast<size_t>(i)] = i % 4 != 0;
         hold[static_cast<size_t>(n + i)] = i % 4 == 1;

@@ -4,6 +4,7 @@
 // reported with its column.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 #include "assembly/discretization.hpp"
@@ -157,5 +158,53 @@ TEST(SupernodalCholesky, AFailureIsReportedAtTheSameColumnOnAnyNumberOfThreads) 
         EXPECT_GE(f.failed_column(), 0);
         if (threads == 1) one = f.failed_column();
         EXPECT_EQ(f.failed_column(), one);
+    }
+}
+
+// The LU without pivoting of a matrix with K's pattern but values that are not symmetric (K's
+// entries above the diagonal scaled by up to 30 %, as the held operator's slipping rows make
+// it): A x = b to round-off on the grid, whose panels exceed the blocks, and on the 3D body;
+// with K's own values, the Cholesky's solution; a Cholesky after it; a zero pivot reported.
+TEST(SupernodalCholesky, TheLuSolvesAMatrixWithoutSymmetricValues) {
+    for (const int which : {0, 1}) {
+        SCOPED_TRACE(which == 0 ? "grid" : "3D body");
+        SparseMatrix K = which == 0 ? grid_laplacian(22) : body_matrix(3, 0);
+        if (which == 0) K = SparseMatrix(SparseMatrix(K).selfadjointView<Eigen::Lower>());  // both triangles
+        K.makeCompressed();
+        const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+        TrailingCholesky reference(K, {});
+        const std::vector<int> position = factor_order(reference);
+        SupernodalCholesky f(lower, position);
+        const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+        Eigen::VectorXd x, expected;
+        ASSERT_TRUE(f.factor_lu(K, K.valuePtr()));
+        EXPECT_TRUE(f.lu());
+        f.solve(b, x);
+        reference.solve(b, expected);
+        EXPECT_LE((x - expected).lpNorm<Eigen::Infinity>(), 1e-10 * expected.lpNorm<Eigen::Infinity>());
+        // Not symmetric: each stored entry (r, c) above the diagonal scaled by 1 + 0.3 sin(r + 2c).
+        SparseMatrix A = K;
+        for (Eigen::Index c = 0; c < A.outerSize(); ++c)
+            for (SparseMatrix::InnerIterator it(A, c); it; ++it)
+                if (it.row() < c) it.valueRef() *= 1 + 0.3 * std::sin(static_cast<double>(it.row() + 2 * c));
+        ASSERT_GT((SparseMatrix(A.transpose()) - A).norm(), 1e-3 * A.norm());
+        ASSERT_TRUE(f.factor_lu(A, A.valuePtr()));
+        f.solve(b, x);
+        EXPECT_LE((A * x - b).lpNorm<Eigen::Infinity>(),
+                  1e-9 * b.lpNorm<Eigen::Infinity>() * A.norm() / std::sqrt(static_cast<double>(A.rows())));
+        // A Cholesky again after the LU: the symmetric solve.
+        ASSERT_TRUE(f.factor(lower));
+        EXPECT_FALSE(f.lu());
+        f.solve(b, x);
+        EXPECT_LE((x - expected).lpNorm<Eigen::Infinity>(), 1e-10 * expected.lpNorm<Eigen::Infinity>());
+        // A zero pivot: its row and column cleared (the diagonal too).
+        SparseMatrix Z = A;
+        const Eigen::Index zero = K.rows() / 2;
+        for (Eigen::Index c = 0; c < Z.outerSize(); ++c)
+            for (SparseMatrix::InnerIterator it(Z, c); it; ++it)
+                if (it.row() == zero || c == zero) it.valueRef() = 0;
+        EXPECT_FALSE(f.factor_lu(Z, Z.valuePtr()));
+        EXPECT_GE(f.failed_column(), 0);
+        EXPECT_LE(f.failed_column(), position[static_cast<size_t>(zero)]);
     }
 }

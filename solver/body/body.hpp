@@ -24,7 +24,11 @@ struct ContactSnapshot;
 // (ContactSolver::factored_pattern): the node pattern, or empty for none.
 struct ContactFactorization {
     double substep = 0;
+    // Per contact node: 0 open, 1 sticking, 2 pressed, 3 pressed with its slipping rows held.
     std::vector<signed char> pattern;
+    // The held slips (HeldOperator::slip: tangents x nodes, +-1 in 2D, a unit direction in 3D),
+    // nonzero where the pattern is 3; empty where none is.
+    std::vector<double> slip;
 };
 
 class Body {

@@ -290,15 +290,21 @@ ContactFactorization Stepper::contact_factorization() const {
         if (c && c->id == current_factor_) f = c.get();
     if (!f || !f->held) return {};
     const Eigen::Index nc = num_contact_nodes();
-    ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc))};
+    const std::vector<double>& slip = f->held->slip();
+    ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc)), {}};
+    bool slips = false;
     for (Eigen::Index i = 0; i < nc; ++i) {
-        const signed char slip = f->held->slip()[static_cast<size_t>(i)];
+        bool slipping = false;
+        for (size_t s = static_cast<size_t>(i); s < slip.size(); s += static_cast<size_t>(nc))
+            slipping = slipping || slip[s] != 0;
+        slips = slips || slipping;
         out.pattern[static_cast<size_t>(i)] =
             static_cast<signed char>(!f->held->held()[static_cast<size_t>(i)]       ? 0
                                      : f->held->held()[static_cast<size_t>(nc + i)] ? 1
-                                     : slip                                         ? 3 * slip
+                                     : slipping                                     ? 3
                                                                                     : 2);
     }
+    if (slips) out.slip = slip;
     return out;
 }
 
@@ -309,15 +315,15 @@ void Stepper::set_contact_factorization(const ContactFactorization& saved) {
         if (!c || !c->held || c->dt != saved.substep) continue;
         const Eigen::Index nc = num_contact_nodes();
         std::vector<char> held(static_cast<size_t>(c->held->unknowns()));
-        std::vector<signed char> slip(static_cast<size_t>(nc));
         for (Eigen::Index i = 0; i < nc; ++i) {
             const signed char x = saved.pattern[static_cast<size_t>(i)];
             held[static_cast<size_t>(i)] = x != 0;
             for (size_t j = static_cast<size_t>(nc + i); j < held.size(); j += static_cast<size_t>(nc))
                 held[j] = x == 1;  // the tangential dofs of a sticking node
-            slip[static_cast<size_t>(i)] = x == 3 ? 1 : x == -3 ? -1 : 0;  // a slipping row's sign
         }
-        c->held->hold(held, slip);
+        if (!saved.slip.empty() && saved.slip.size() != c->held->slip().size())
+            throw std::invalid_argument("contact factorization: its slips do not fit the body");
+        c->held->hold(held, saved.slip);
         current_factor_ = c->id;
     }
 }

@@ -65,25 +65,50 @@ void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem&
     }
 }
 
-void SparseContactSolver::held_set(bool friction, bool slips) {
+void SparseContactSolver::held_set(const ContactProblem& p, bool slips) {
     const Eigen::Index n = pattern_.size();
     const Eigen::Index tangents = static_cast<Eigen::Index>(held_.size()) / n - 1;
-    slip_.assign(static_cast<size_t>(n), 0);
+    const bool friction = p.has_friction();
+    slip_.assign(static_cast<size_t>(tangents * n), 0.0);
     for (Eigen::Index i = 0; i < n; ++i) {
         held_[static_cast<size_t>(i)] = pattern_[i] != 0;
         for (Eigen::Index c = 1; c <= tangents; ++c)
             held_[static_cast<size_t>(c * n + i)] = friction && pattern_[i] == 1;
-        if (slips && friction && (pattern_[i] == 2 || pattern_[i] == -2))
+        if (!slips || !friction || (pattern_[i] != 2 && pattern_[i] != -2)) continue;
+        if (isotropic(p)) {  // along the pattern's slip direction (the last residual's)
+            if (!(ratio_[i] <= max_held_ratio)) continue;
+            for (Eigen::Index c = 0; c < tangents; ++c)
+                slip_[static_cast<size_t>(c * n + i)] = direction_[c * n + i];
+        } else
             slip_[static_cast<size_t>(i)] = pattern_[i] > 0 ? 1 : -1;
+    }
+    // Where GCR's kept directions can span every slip's unknowns, they solve them without held
+    // solves once made: a 3D factor holds slips only beyond that.
+    if (isotropic(p)) {
+        Eigen::Index held = 0;
+        for (Eigen::Index i = 0; i < n; ++i)
+            held += slip_[static_cast<size_t>(i)] != 0 || slip_[static_cast<size_t>(n + i)] != 0;
+        if (tangents * held <= max_directions) std::fill(slip_.begin(), slip_.end(), 0.0);
     }
 }
 
 namespace {
-// The friction coefficient that K's factor gives contact unknown j's row (sf of a slipping x
-// row), else 0.
+// The friction coefficient that K's factor gives contact unknown j's row (sf of a slipping
+// tangential row), else 0.
 double factor_slip(const HeldOperator& K, Eigen::Index j, Eigen::Index n) {
-    if (j < n || j >= 2 * n || K.slip().empty()) return 0.0;
+    if (j < n || j - n >= static_cast<Eigen::Index>(K.slip().size())) return 0.0;
     return K.slip()[static_cast<size_t>(j - n)] * K.slip_coefficient();
+}
+
+// Whether node i's held slip in `a` and in `b` (tangents x n) differ in kind: one holds a slip
+// and the other none, or their directions are more than 60 degrees apart (in 2D: opposite
+// signs). A 3D slip's direction moves with every Newton iteration; where it moved less, the
+// factor's slip is kept and GCR takes the difference.
+bool slip_differs(const std::vector<double>& a, const std::vector<double>& b, size_t i, size_t n) {
+    double ab = 0, aa = 0, bb = 0;
+    for (size_t s = i; s < a.size(); s += n) ab += a[s] * b[s], aa += a[s] * a[s], bb += b[s] * b[s];
+    if ((aa == 0) != (bb == 0)) return true;
+    return aa != 0 && !(ab >= 0.5 * std::sqrt(aa * bb));
 }
 }  // namespace
 
@@ -160,7 +185,7 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     int differing = 0;
-    held_set(friction, K.slip_coefficient() > 0);
+    held_set(p, K.slip_coefficient() > 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
         for (Eigen::Index c = 1; c < m / n; ++c)
@@ -168,7 +193,13 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     }
     for (Eigen::Index j = 0; j < m; ++j)
         differing += held_[static_cast<size_t>(j)] != K.held()[static_cast<size_t>(j)];
-    for (size_t i = 0; i < slip_.size(); ++i) differing += slip_[i] != K.slip()[i];
+    // A 3D pattern whose held dofs alone differ from the factor's in more than max_differing
+    // (a contact set still growing: a static start's load increments) asks for no held slips:
+    // it is refactored as the Cholesky, at half the LU's cost, and its slips are GCR's, until
+    // the set settles.
+    if (isotropic(p) && differing > max_differing) std::fill(slip_.begin(), slip_.end(), 0.0);
+    for (Eigen::Index i = 0; i < n && !slip_.empty(); ++i)
+        differing += slip_differs(slip_, K.slip(), static_cast<size_t>(i), static_cast<size_t>(n));
     // A pattern that differs from the factor's held set in more than max_differing dofs is
     // refactored at once, and one that differs in fewer tried on the factor with max_detour
     // solves. On a factor that holds nothing, where a refactorization costs more held solves
@@ -187,7 +218,14 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
                          ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
                          : max_differing;
     const bool renting = differing > most && costly && detour_solves_ < refactorization;
-    if (differing > most && !renting) K.hold(held_, slip_);
+    // A factor whose held slips are the pattern's but for their directions' drift (a 3D
+    // slip's moves with each Newton iteration and substep) is kept, and GCR takes the
+    // difference, until GCR's solves beyond one a Newton iteration have cost a
+    // refactorization: then it is refactored at the pattern's directions (the same rent).
+    const bool drifting = isotropic(p) && differing <= most && !K.holds(held_, slip_) &&
+                          std::any_of(K.slip().begin(), K.slip().end(), [](double s) { return s != 0; });
+    if ((differing > most && !renting) || (drifting && detour_solves_ >= refactorization))
+        K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);
     const long before = solves_;
     if (!solve_coupled(K, p, rhs, scale, tolerance, detour && !costly ? max_detour : max_directions,
@@ -196,6 +234,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
         solve_coupled(K, p, rhs, scale, tolerance, max_directions, false);
     } else if (renting) {
         detour_solves_ += solves_ - before;
+    } else if (drifting && detour) {
+        detour_solves_ += std::max<long>(0, solves_ - before - 1);
     }
     reactions(K, p, rhs);
 }
@@ -359,13 +399,17 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
         const double sf = !slips         ? 0.0
                           : isotropic(p) ? p.friction[i] * direction_[(j / n - 1) * n + i]
                                          : slip_sign(p, i, pattern_[i]);
-        // A slipping row that the factor has (a 2D body's) is in K's solve already, unless
-        // its coefficient differs (the static one, or another node state).
+        // A slipping row that the factor has is in K's solve already, unless its coefficient
+        // differs (the static one, another node state, or a 3D slip direction that moved:
+        // then both of the node's tangential unknowns, whose law is one).
+        bool other = !slips || !isotropic(p) ? sf != factor_slip(K, j, n) : false;
+        for (Eigen::Index c = 0; slips && isotropic(p) && c < p.tangents; ++c)
+            other = other || p.friction[i] * direction_[c * n + i] != factor_slip(K, (1 + c) * n + i, n);
         if (wants && !has)
             coupling_.push_back({static_cast<int>(j), load, 0.0, true, -1});
         else if (!wants && has)
             coupling_.push_back({static_cast<int>(j), value, sf, false, -1});
-        else if (!wants && sf != factor_slip(K, j, n))
+        else if (!wants && other)
             coupling_.push_back({static_cast<int>(j), load, sf, false, -1});
         else if (warm &&
                  !std::isnan(last_xi_[j]))  // coupled at the last iteration: held to its value, or unloaded
@@ -615,7 +659,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         }
     }
     if (fresh_factor) {
-        held_set(friction, K.slip_coefficient() > 0);
+        held_set(p, K.slip_coefficient() > 0);
         K.hold(held_, slip_);
         forget();
     }

@@ -15,9 +15,11 @@
 //                  rho = F p / |z| (a spring across t: Newton in t, not a fixed point),
 //   open node:     unloaded.
 // The held factor is the Cholesky factor of K with a set of contact dofs held (their rows and
-// columns the identity's), in K's own fill-reducing ordering and symbolic analysis; a 2D body's
-// factor holds its slipping nodes too, their x rows K_x - sf K_y (r_x = sf r_y: the slip law),
-// which makes it an LU on the same order and pattern (PatternLu). A pattern
+// columns the identity's), in K's own fill-reducing ordering and symbolic analysis; it holds
+// the slipping nodes too, their tangential rows K_j - sf_j K_y (r_j = sf_j r_y: the slip law,
+// sf = +-F in 2D, F t_j along a 3D node's slip direction t at the time it was factored, where
+// rho is small and more slip than GCR's kept directions span), which makes it an LU on the
+// same order and pattern (PatternLu, or the supernodal factor's LU). A pattern
 // is solved on the factor of a nearby held set: what differs (dofs held now but free in the
 // factor, dofs free now but held in it, and the slipping nodes' loads that the factor does not
 // hold) are the unknowns of a
@@ -76,11 +78,18 @@ public:
     // The solutions combined after GCR are solved again where the sizes combined exceed the
     // combination's by this (digits lost to cancellation that a solve would keep).
     static constexpr double max_cancellation = 100;
+    // A 3D slip is held in the factor (F p along a fixed t) only where its linearized disc law
+    // is near that: its rho = F p / |z| at most this (the spring across t that the factor leaves
+    // out, rho r_T / (1 - rho), at most 0.11 r_T). Sliding substeps have rho of 1e-4 to 0.05, a
+    // static start's load increments 0.3 to 1 (docs/decisions.md, "A 3D body's factor holds its
+    // slipping nodes").
+    static constexpr double max_held_ratio = 0.1;
 
 private:
-    // held_ from pattern_: active nodes' y dofs, and sticking nodes' x dofs with friction; and
-    // slip_ (where the factor may hold slips): slipping nodes' signs.
-    void held_set(bool friction, bool slips);
+    // held_ from pattern_: active nodes' y dofs, and sticking nodes' tangential dofs with
+    // friction; and slip_ (where the factor may hold slips): slipping nodes' signs (2D) or
+    // slip directions (3D), tangents x n (HeldOperator::hold).
+    void held_set(const ContactProblem& p, bool slips);
     void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs, double scale,
                        double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took
@@ -131,7 +140,7 @@ private:
     Eigen::VectorXd ratio_, trial_ratio_, newton_shift_;
     Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1> status_, trial_status_;
     std::vector<char> held_;
-    std::vector<signed char> slip_;
+    std::vector<double> slip_;
     // The iterate and the pattern step's result (new_), the backtracking trial.
     Eigen::VectorXd w_new_, lambda_new_, w_trial_, lambda_trial_, phi_, phi_new_;
     Eigen::VectorXd b_, values_, targets_, z_;  // targets_: the held dofs' values

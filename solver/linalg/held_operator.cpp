@@ -46,9 +46,8 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs,
     held_.assign(static_cast<size_t>(m), 0);
     held_dof_.assign(static_cast<size_t>(nf), 0);
     // For slipping rows: each contact unknown's row entries in K_ (by symmetry, its column's
-    // rows' columns), found in each column's sorted rows; a node's x and y columns must share
-    // their rows (unknowns j and m/2 + j: a 2D body's), so that K_x - sf K_y keeps K's
-    // pattern. A 3D body's operator fails that (its stepper gives it no slip coefficient).
+    // rows' columns), found in each column's sorted rows; a node's tangential and y columns
+    // must share their rows (unknowns c n + i and i), so that K_j - sf K_y keeps K's pattern.
     unknown_of_ = std::move(unknown_of);
     row_positions_.assign(static_cast<size_t>(m), {});
     full_diagonal_.assign(static_cast<size_t>(m), -1);
@@ -63,13 +62,15 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs,
             if (r == c) full_diagonal_[static_cast<size_t>(j)] = k;
         }
     }
-    slips_allowed_ = unknowns_per_node == 2;
-    for (Eigen::Index i = 0; slips_allowed_ && i < m / 2; ++i) {
-        const int y = dof(i), x = dof(m / 2 + i);
-        slips_allowed_ = outer[x + 1] - outer[x] == outer[y + 1] - outer[y] &&
-                         std::equal(inner + outer[x], inner + outer[x + 1], inner + outer[y]);
+    tangents_ = unknowns_per_node - 1;
+    const Eigen::Index n = m / unknowns_per_node;
+    slips_allowed_ = tangents_ >= 1;
+    for (Eigen::Index j = n; slips_allowed_ && j < m; ++j) {
+        const int y = dof(j % n), t = dof(j);
+        slips_allowed_ = outer[t + 1] - outer[t] == outer[y + 1] - outer[y] &&
+                         std::equal(inner + outer[t], inner + outer[t + 1], inner + outer[y]);
     }
-    slip_.assign(static_cast<size_t>(m / unknowns_per_node), 0);
+    slip_.assign(static_cast<size_t>(tangents_ * n), 0.0);
 }
 
 HeldOperator::~HeldOperator() = default;
@@ -86,22 +87,31 @@ double HeldOperator::refactorization_in_solves() const {
     return factor_->factor_flops() / (4 * factor_->factor_nonzeros());
 }
 
-void HeldOperator::hold(const std::vector<char>& held, const std::vector<signed char>& slip) {
+void HeldOperator::hold(const std::vector<char>& held, const std::vector<double>& slip) {
     const bool slips =
-        slip_coefficient() > 0 && std::any_of(slip.begin(), slip.end(), [](signed char s) { return s != 0; });
+        slip_coefficient() > 0 && std::any_of(slip.begin(), slip.end(), [](double s) { return s != 0; });
     if (held == held_ && (slips ? slip == slip_ : !lu_held_)) return;
     held_ = held;
     if (slips)
         slip_ = slip;
     else
-        std::fill(slip_.begin(), slip_.end(), 0);
+        std::fill(slip_.begin(), slip_.end(), 0.0);
     for (size_t j = 0; j < held.size(); ++j) held_dof_[static_cast<size_t>(dofs_[j])] = held[j];
     factor_held();
 }
 
 void HeldOperator::factor_held() {
     ++refactorizations_;
-    lu_held_ = std::any_of(slip_.begin(), slip_.end(), [](signed char s) { return s != 0; });
+    lu_held_ = std::any_of(slip_.begin(), slip_.end(), [](double s) { return s != 0; });
+    if (lu_held_ && factor_->kernel() == TrailingCholesky::Kernel::supernodal) {
+        // The slipping rows in our supernodal factor's LU (a 3D body's: docs/decisions.md, "A 3D
+        // body's factor holds its slipping nodes"), else in PatternLu.
+        slip_values();
+        if (factor_->refactor_lu(K_, lu_values_.data())) return;
+        slips_allowed_ = false;
+        lu_held_ = false;
+        std::fill(slip_.begin(), slip_.end(), 0.0);
+    }
     if (lu_held_) {
         if (!lu_) {
             std::vector<int> position(static_cast<size_t>(size()));
@@ -109,29 +119,12 @@ void HeldOperator::factor_held() {
                 position[static_cast<size_t>(u)] = factor_->position(static_cast<int>(u));
             lu_ = std::make_unique<PatternLu>(K_, position);
         }
-        const double* k = K_.valuePtr();
-        lu_values_.assign(k, k + K_.nonZeros());
-        const size_t n = slip_.size();
-        for (size_t i = 0; i < n; ++i) {  // K_x - sf K_y
-            if (!slip_[i]) continue;
-            const double sf = slip_[i] * slip_coefficient_;
-            const std::vector<int>& x = row_positions_[n + i];
-            const std::vector<int>& y = row_positions_[i];
-            for (size_t e = 0; e < x.size(); ++e) lu_values_[static_cast<size_t>(x[e])] -= sf * k[y[e]];
-        }
-        for (size_t j = 0; j < held_.size(); ++j) {
-            if (!held_[j]) continue;
-            const int c = dofs_[j];
-            std::fill(lu_values_.begin() + K_.outerIndexPtr()[c],
-                      lu_values_.begin() + K_.outerIndexPtr()[c + 1], 0.0);
-            for (int p : row_positions_[j]) lu_values_[static_cast<size_t>(p)] = 0;
-            lu_values_[static_cast<size_t>(full_diagonal_[j])] = 1;
-        }
+        slip_values();
         if (lu_->factor(lu_values_.data())) return;
         // No pivot without pivoting: the slips stay GCR's (SparseContactSolver), on K's Cholesky.
         slips_allowed_ = false;
         lu_held_ = false;
-        std::fill(slip_.begin(), slip_.end(), 0);
+        std::fill(slip_.begin(), slip_.end(), 0.0);
     }
     std::copy(lower_.valuePtr(), lower_.valuePtr() + lower_.nonZeros(), held_lower_.valuePtr());
     for (size_t j = 0; j < held_.size(); ++j) {
@@ -142,11 +135,34 @@ void HeldOperator::factor_held() {
     factor_->refactor(held_lower_);
 }
 
+// K_H's values with the slipping rows (K_j - sf K_y) and the held rows and columns the
+// identity's, in K_'s pattern (both triangles), into lu_values_.
+void HeldOperator::slip_values() {
+    const double* k = K_.valuePtr();
+    lu_values_.assign(k, k + K_.nonZeros());
+    const size_t n = held_.size() / static_cast<size_t>(tangents_ + 1);
+    for (size_t s = 0; s < slip_.size(); ++s) {  // K_j - sf K_y
+        if (slip_[s] == 0) continue;
+        const double sf = slip_[s] * slip_coefficient_;
+        const std::vector<int>& t = row_positions_[n + s];
+        const std::vector<int>& y = row_positions_[s % n];
+        for (size_t e = 0; e < t.size(); ++e) lu_values_[static_cast<size_t>(t[e])] -= sf * k[y[e]];
+    }
+    for (size_t j = 0; j < held_.size(); ++j) {
+        if (!held_[j]) continue;
+        const int c = dofs_[j];
+        std::fill(lu_values_.begin() + K_.outerIndexPtr()[c], lu_values_.begin() + K_.outerIndexPtr()[c + 1],
+                  0.0);
+        for (int p : row_positions_[j]) lu_values_[static_cast<size_t>(p)] = 0;
+        lu_values_[static_cast<size_t>(full_diagonal_[j])] = 1;
+    }
+}
+
 void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) const {
-    const size_t n = slip_.size();
+    const size_t n = held_.size() / static_cast<size_t>(tangents_ + 1);
     if (lu_held_)  // a slipping row's right-hand side, from its y row's before that is held
-        for (size_t i = 0; i < n; ++i)
-            if (slip_[i]) b[dofs_[n + i]] -= slip_[i] * slip_coefficient_ * b[dofs_[i]];
+        for (size_t s = 0; s < slip_.size(); ++s)
+            if (slip_[s] != 0) b[dofs_[n + s]] -= slip_[s] * slip_coefficient_ * b[dofs_[s % n]];
     for (size_t j = 0; j < held_.size(); ++j) {
         if (!held_[j] || values[static_cast<Eigen::Index>(j)] == 0) continue;
         const double v = values[static_cast<Eigen::Index>(j)];
@@ -154,11 +170,11 @@ void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) con
             const size_t r = static_cast<size_t>(it.row());
             if (!held_dof_[r]) {
                 b[it.row()] -= it.value() * v;
-            } else if (lu_held_) {  // a held y row's share in its node's slipping row
+            } else if (lu_held_) {  // a held y row's share in its node's slipping rows
                 const int u = unknown_of_[r];
-                if (u >= 0 && static_cast<size_t>(u) < n && slip_[static_cast<size_t>(u)])
-                    b[dofs_[n + static_cast<size_t>(u)]] +=
-                        slip_[static_cast<size_t>(u)] * slip_coefficient_ * it.value() * v;
+                if (u < 0 || static_cast<size_t>(u) >= n) continue;
+                for (size_t s = static_cast<size_t>(u); s < slip_.size(); s += n)
+                    if (slip_[s] != 0) b[dofs_[n + s]] += slip_[s] * slip_coefficient_ * it.value() * v;
             }
         }
     }
@@ -167,7 +183,7 @@ void HeldOperator::impose(Eigen::VectorXd& b, const Eigen::VectorXd& values) con
 }
 
 void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-    if (lu_held_)
+    if (lu_held_ && lu_)
         lu_->solve(b, x);
     else
         factor_->solve(b, x);

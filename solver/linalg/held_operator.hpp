@@ -20,7 +20,7 @@ class HeldOperator {
 public:
     // contact_dofs: the free positions of the contact unknowns in multiplier order (y dofs,
     // then each tangent's; Discretization::contact_unknowns), unknowns_per_node of them a node
-    // (2: y and x; 3: y, x and z). Slips are held only with one tangent (2 a node).
+    // (2: y and x; 3: y, x and z).
     // options: how a supernodal factor is made (TrailingCholesky).
     HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node,
                  FactorOptions options = {});
@@ -35,20 +35,22 @@ public:
     double stiffness(Eigen::Index j) const { return stiffness_[j]; }
     // (K x) at contact unknown j's dof.
     double row_product(Eigen::Index j, const Eigen::VectorXd& x) const { return rows_.row(j).dot(x); }
-    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed), and of a 2D
-    // body (2 n unknowns) loads each node i with slip[i] != 0 along x by sf = slip[i] times
-    // the slip coefficient times its held y dof's reaction (the pressure's sign: r_x = sf r_y,
-    // as SparseContactSolver's slip law): that x dof's row of K_H becomes K_x - sf K_y, its
-    // right-hand side b_x - sf b_y (factored by PatternLu). Without slips (empty or zero) K_H
-    // is symmetric: K's Cholesky.
-    void hold(const std::vector<char>& held, const std::vector<signed char>& slip = {});
+    // Holds the unknowns j with held[j] != 0 (refactoring where the set changed), and loads
+    // each slipping node i along its tangential unknowns j = c n + i (c = 1 .. tangents) by
+    // slip[(c - 1) n + i] times the slip coefficient times its held y dof's reaction (the
+    // pressure's sign: r_j = sf_j r_y, as SparseContactSolver's slip law; in 2D slip is +-1, in
+    // 3D the node's unit slip direction t, so that r_T = F p t): that row of K_H becomes
+    // K_j - sf_j K_y, its right-hand side b_j - sf_j b_y (factored by PatternLu). Without slips
+    // (empty or zero) K_H is symmetric: K's Cholesky.
+    void hold(const std::vector<char>& held, const std::vector<double>& slip = {});
     const std::vector<char>& held() const { return held_; }
-    const std::vector<signed char>& slip() const { return slip_; }
-    bool holds(const std::vector<char>& held, const std::vector<signed char>& slip) const {
+    // The held slips, tangents x n (zero where a node's rows are K's).
+    const std::vector<double>& slip() const { return slip_; }
+    bool holds(const std::vector<char>& held, const std::vector<double>& slip) const {
         return held == held_ && slip == slip_;
     }
     // F of the held slips (the kinetic coefficient: the stepper's), 0 where slips are not held
-    // (two tangents, or a factor whose LU found no pivot: then never again). A new one refactors.
+    // (a factor whose LU found no pivot: then never again). A new one refactors.
     double slip_coefficient() const { return slips_allowed_ ? slip_coefficient_ : 0.0; }
     void set_slip_coefficient(double friction);
     // b <- b - K_H(:, held) values(held) on the rows not held, and values on the held rows: the
@@ -83,11 +85,13 @@ private:
     std::unique_ptr<PatternLu> lu_;
     bool lu_held_ = false, slips_allowed_ = false;
     double slip_coefficient_ = 0;
-    std::vector<signed char> slip_;
+    int tangents_ = 1;
+    std::vector<double> slip_;
     std::vector<double> lu_values_;
     std::vector<std::vector<int>> row_positions_;
     std::vector<int> full_diagonal_, unknown_of_;
     void factor_held();
+    void slip_values();
 };
 
 }  // namespace contactbody

@@ -252,6 +252,8 @@ double SupernodalCholesky::factor_nonzeros() const {
 bool SupernodalCholesky::factor(const SparseMatrix& lower) {
     const size_t S = first_.size() - 1;
     failed_ = -1;
+    lu_ = false;
+    std::vector<double>().swap(upper_);
     values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
     // K's entries into the panels: entry (i, j) of P K P^T (i >= j) into j's supernode.
     for (Eigen::Index col = 0; col < n_; ++col)
@@ -316,6 +318,90 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
         if (failed_ >= 0) return false;
     }
     return true;
+}
+
+bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* values) {
+    const size_t S = first_.size() - 1;
+    failed_ = -1;
+    lu_ = true;
+    values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
+    upper_.assign(values_.size(), 0.0);
+    // A's entry (i, j) of P A P^T: L's side (values_) of j's supernode where i >= j, U's side
+    // (upper_, transposed) of i's where i < j.
+    for (Eigen::Index col = 0; col < n_; ++col)
+        for (int k = pattern.outerIndexPtr()[col]; k < pattern.outerIndexPtr()[col + 1]; ++k) {
+            const int i = position_[static_cast<size_t>(pattern.innerIndexPtr()[k])],
+                      j = position_[static_cast<size_t>(col)];
+            const int a = std::max(i, j), b = std::min(i, j);
+            const size_t s = static_cast<size_t>(super_of_[static_cast<size_t>(b)]);
+            const int* r = row_index_.data() + row_start_[s];
+            const int rows = row_start_[s + 1] - row_start_[s];
+            const std::ptrdiff_t place = std::lower_bound(r, r + rows, a) - r;
+            (i >= j ? values_
+                    : upper_)[static_cast<size_t>(value_start_[s] + (b - first_[s]) * rows + place)] +=
+                values[k];
+        }
+    std::ptrdiff_t update_size = 0, largest_square = 0, largest_below = 0;
+    for (size_t s = 0; s < S; ++s) {
+        const std::ptrdiff_t c = first_[s + 1] - first_[s], m = (row_start_[s + 1] - row_start_[s]) - c;
+        update_size = std::max(update_size, m * std::min(m, update_block));
+        largest_square = std::max(largest_square, c * c);
+        largest_below = std::max(largest_below, m);
+    }
+    gathered_.resize(largest_below);
+    square_.resize(static_cast<size_t>(largest_square));
+    update_.resize(1);
+    local_.resize(1);
+    update_[0].resize(static_cast<size_t>(update_size));
+    local_[0].resize(static_cast<size_t>(n_));
+    std::vector<double*> lower(S), upper(S);
+    for (size_t s = 0; s < S; ++s) {
+        lower[s] = values_.data() + value_start_[s];
+        upper[s] = upper_.data() + value_start_[s];
+    }
+    for (size_t s = 0; s < S; ++s) {
+        failed_ = factor_supernode_lu(s, lower.data(), upper.data());
+        if (failed_ >= 0) return false;
+    }
+    return true;
+}
+
+// The diagonal block (L's lower triangle and U's transposed) gathered, factored by the dense
+// LU and put back (L unit lower in values_, U^T in upper_); the rows below solved on each side
+// (L21 = A21 U11^-1, U12^T = A12^T L11^-T); the update L21 U12 subtracted, its lower part from
+// the ancestors' L and its upper part, as U12^T L21^T, from their U.
+std::ptrdiff_t SupernodalCholesky::factor_supernode_lu(size_t s, double* const* lower, double* const* upper) {
+    const std::ptrdiff_t columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
+    const std::ptrdiff_t m = rows - columns;
+    double* L = values_.data() + value_start_[s];
+    double* U = upper_.data() + value_start_[s];
+    double* D = square_.data();
+    const SupernodalKernels& k = *kernels_;
+    for (std::ptrdiff_t c = 0; c < columns; ++c)
+        for (std::ptrdiff_t r = 0; r < columns; ++r)
+            D[c * columns + r] = r >= c ? L[c * rows + r] : U[r * rows + c];
+    const std::ptrdiff_t bad = k.lu(D, columns, columns);
+    if (bad >= 0) return first_[s] + bad;
+    for (std::ptrdiff_t c = 0; c < columns; ++c)
+        for (std::ptrdiff_t r = c; r < columns; ++r) {
+            L[c * rows + r] = r == c ? 1.0 : D[c * columns + r];
+            U[c * rows + r] = D[r * columns + c];
+        }
+    if (m == 0) return -1;
+    k.solve_right(U, columns, rows, L + columns, m, rows);
+    k.solve_right(L, columns, rows, U + columns, m, rows);
+    const double* L21 = L + columns;
+    const double* U12t = U + columns;
+    double* C = update_[0].data();
+    int* local = local_[0].data();
+    for (std::ptrdiff_t q0 = 0; q0 < m; q0 += update_block) {
+        const std::ptrdiff_t width = std::min(update_block, m - q0);
+        k.product(L21 + q0, rows, U12t + q0, rows, m - q0, width, columns, C, m - q0);
+        scatter(s, q0, q0 + width, C, m - q0, lower, local);
+        k.product(U12t + q0, rows, L21 + q0, rows, m - q0, width, columns, C, m - q0);
+        scatter(s, q0, q0 + width, C, m - q0, upper, local, true);
+    }
+    return -1;
 }
 
 // Right-looking: the diagonal block's Cholesky, the rows below by a triangular solve, their
@@ -384,7 +470,7 @@ std::ptrdiff_t SupernodalCholesky::factor_supernode(size_t s, double* const* tar
 // subtracted from the panels that hold them, grouped by supernode (rows ascending), each group
 // through that supernode's row places.
 void SupernodalCholesky::scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C,
-                                 std::ptrdiff_t ldc, double* const* targets, int* local) const {
+                                 std::ptrdiff_t ldc, double* const* targets, int* local, bool strict) const {
     const std::ptrdiff_t columns = first_[s + 1] - first_[s];
     const std::ptrdiff_t m = (row_start_[s + 1] - row_start_[s]) - columns;
     const int* r = row_index_.data() + row_start_[s] + columns;
@@ -397,7 +483,7 @@ void SupernodalCholesky::scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1,
         for (; q < q1 && super_of_[static_cast<size_t>(r[q])] == static_cast<int>(t); ++q) {
             double* column = target + static_cast<std::ptrdiff_t>(r[q] - first_[t]) * t_rows;
             const double* c = C + (q - q0) * ldc - q0;
-            for (std::ptrdiff_t p = q; p < m; ++p) column[local[r[p]]] -= c[p];
+            for (std::ptrdiff_t p = strict ? q + 1 : q; p < m; ++p) column[local[r[p]]] -= c[p];
         }
     }
 }
@@ -419,10 +505,11 @@ void SupernodalCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) con
         const int* r = row_index_.data() + row_start_[s] + columns;
         for (Eigen::Index p = 0; p < m; ++p) y[r[p]] -= g[p];
     }
-    for (size_t s = S; s-- > 0;) {  // L^T z = y
+    const double* back = lu_ ? upper_.data() : values_.data();  // U^T's panels, or L's
+    for (size_t s = S; s-- > 0;) {                              // L^T z = y (U z = y)
         const Eigen::Index columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
         const Eigen::Index m = rows - columns;
-        const Panel panel(values_.data() + value_start_[s], rows, columns, Eigen::OuterStride<>(rows));
+        const Panel panel(back + value_start_[s], rows, columns, Eigen::OuterStride<>(rows));
         auto ys = y.segment(first_[s], columns);
         if (m > 0) {
             auto g = gathered_.head(m);

@@ -6,7 +6,8 @@
 // threads, independent subtrees run side by side and the large panels near the root are cut
 // into blocks of fixed sizes: the same arithmetic for any number of threads, so the same bits.
 // Written here because CHOLMOD's supernodal module is GPL (docs/decisions.md, "The factor of a
-// 3D body"). Not yet the body's factor: no held dofs, trailing block or partial refactorization.
+// 3D body"). It also makes the LU without pivoting of a matrix with the same pattern but values
+// that are not symmetric, on the same supernodes (factor_lu: a held operator's slipping rows).
 #pragma once
 
 #include <Eigen/Dense>
@@ -31,6 +32,13 @@ public:
     // definite (failed_column() tells where, in factor order).
     bool factor(const SparseMatrix& lower);
     Eigen::Index failed_column() const { return failed_; }
+    // The LU factor without pivoting, P A P^T = L U, of a matrix A with lower's symmetric
+    // pattern (both triangles in `pattern`, CSC; its values in `values`) but values that need not
+    // be: the same supernodes, U's rows beside L's columns (twice the flops and memory), on one
+    // thread. False where a pivot is not above 1e-12 times what is left of its column's largest
+    // entry (failed_column()). The held operator's slipping rows (linalg/held_operator.hpp).
+    bool factor_lu(const SparseMatrix& pattern, const double* values);
+    bool lu() const { return lu_; }
     // x = K^-1 b. Allocates nothing once the factor exists.
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
@@ -63,6 +71,11 @@ private:
     std::vector<int> first_, super_of_, row_start_, row_index_;
     std::vector<std::ptrdiff_t> value_start_;
     std::vector<double> values_;
+    // The LU's U by rows beside L's columns: supernode s's U(its columns, the rows below)
+    // transposed, at upper_[value_start_[s]] as values_'s panel (its diagonal block: U^T, lower);
+    // values_'s diagonal blocks then hold L's unit lower triangle. Empty for a Cholesky.
+    std::vector<double> upper_, square_;
+    bool lu_ = false;
     double flops_ = 0, top_flops_ = 0;
     const SupernodalKernels* kernels_;
     int threads_ = 1;
@@ -85,8 +98,10 @@ private:
                                     const class WorkerTeam* team);
     void divide_among_groups(const std::vector<std::vector<int>>& children,
                              const std::vector<double>& own_flops);
+    // strict: C's diagonal left out (the LU's update of U, whose diagonal L's update has made).
     void scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C, std::ptrdiff_t ldc,
-                 double* const* targets, int* local) const;
+                 double* const* targets, int* local, bool strict = false) const;
+    std::ptrdiff_t factor_supernode_lu(size_t s, double* const* lower, double* const* upper);
 };
 
 }  // namespace contactbody

@@ -29,6 +29,10 @@ struct SupernodalKernels {
     void (*product)(const double* a, std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb,
                     std::ptrdiff_t rows, std::ptrdiff_t cols, std::ptrdiff_t depth, double* c,
                     std::ptrdiff_t ldc);
+    // The n x n block a in place of its LU factor without pivoting (L unit lower below the
+    // diagonal, U upper on and above it): -1, or the column whose pivot is not above 1e-12
+    // times the largest entry of what is left of its column.
+    std::ptrdiff_t (*lu)(double* a, std::ptrdiff_t n, std::ptrdiff_t ld);
     // c -= a b^T (the same shapes).
     void (*subtract_product)(const double* a, std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb,
                              std::ptrdiff_t rows, std::ptrdiff_t cols, std::ptrdiff_t depth, double* c,

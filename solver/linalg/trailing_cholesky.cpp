@@ -318,6 +318,12 @@ void TrailingCholesky::factor_supernodal(const SparseMatrix& lower, const char* 
     }
 }
 
+bool TrailingCholesky::refactor_lu(const SparseMatrix& pattern, const double* values) {
+    if constexpr (solid_bodies_built)
+        if (supernodal_) return supernodal_->factor_lu(pattern, values);
+    return false;
+}
+
 double TrailingCholesky::factor_nonzeros() const {
     if constexpr (solid_bodies_built)
         if (supernodal_) return supernodal_->factor_nonzeros();

@@ -69,6 +69,11 @@ public:
     // lie in K's pattern (the sparse contact solve's held dofs: rows and columns zeroed, 1 on
     // the diagonal). Only for a refactorable factor.
     void refactor(const SparseMatrix& K2);
+    // A supernodal factor's LU without pivoting of A in place of K (A's pattern K's, both
+    // triangles in `pattern`; its values, which need not be symmetric, in `values`): then
+    // solve() solves A. False where a pivot fails (the factor is then made again by refactor())
+    // or where the factor is not our supernodal one.
+    bool refactor_lu(const SparseMatrix& pattern, const double* values);
 
     // y = L^-1 P b; the returned view is valid until the next forward() and may be
     // modified in place before backward(). Not for the supernodal LU (throws).

@@ -339,7 +339,7 @@ bool ReducedStepper::fits(const State& s) const {
 
 ContactFactorization ReducedStepper::contact_factorization() const {
     if (problem_dt_ <= 0) return saved_factorization_;  // not yet used since it was set
-    return {problem_dt_, solver_.factored_pattern(problem_.revision)};
+    return {problem_dt_, solver_.factored_pattern(problem_.revision), {}};
 }
 
 std::vector<double> ReducedStepper::cached_substeps() const {

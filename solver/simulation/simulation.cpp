@@ -314,6 +314,12 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     for (signed char x : f.pattern)
         if (x != 0 && x != 1 && x != 2 && x != -2 && x != 3 && x != -3)
             throw std::invalid_argument("invalid node state in the contact factorization");
+    if (!f.slip.empty() && (f.pattern.empty() || f.slip.size() % f.pattern.size() != 0 ||
+                            f.slip.size() / f.pattern.size() > max_tangents))
+        throw std::invalid_argument("the contact factorization's slips do not fit its nodes");
+    for (size_t s = 0; s < f.slip.size(); ++s)
+        if (!(std::abs(f.slip[s]) <= 1) || (f.slip[s] != 0 && f.pattern[s % f.pattern.size()] != 3))
+            throw std::invalid_argument("invalid slip in the contact factorization");
     body_->set_cached_substeps(snapshot.factor_substeps);
     body_->forget_kept();
     body_->set_contact_factorization(f);

@@ -1,0 +1,124 @@
+"""3D sliding with the slipping nodes held in the factor (issue 71), against the slips left to
+GCR, in one run: the tetrahedral hemispheres of benchmarks/cost3d.py (2.7k and 12.6k nodes),
+F = 0.3, beta = 4e-6 s, 1e-6 s substeps, the static start under -0.2 mm, then the foundation at
+20 m/s. Each mesh runs build/bench_contact_scaling twice, one process each:
+
+* "in the factor": the FMU's contact solve (automatic): a slipping node's tangential rows
+  K_j - F t_j K_y held in the factor (an LU on the Cholesky's supernodes) along its slip
+  direction t, GCR taking the directions' drift;
+* "by GCR": the contact path sparse_gcr, the solve before issue 71 (the factor holds the
+  normal dofs; every slip law is GCR's).
+
+For each: the set-up (discretization, factors, the static start with friction), the held
+solves a substep (exact counts), Newton iterations, wall time a substep, the refactorizations
+over the run, and the normal force (the same solution). The substeps timed follow a first
+communication step of 10. Then, on each mesh's K, the factor with slipping rows against the
+Cholesky (build/bench_supernodal, one repeat: the supernodal Cholesky with the fast kernels and
+its LU, factor and solve times).
+
+Writes benchmarks/results/sliding3d.json and sliding3d.md.
+
+    .venv/bin/python benchmarks/sliding3d.py [--build build] [--meshes 0,1] [--substeps 300,200]
+        [--only sliding|factors]  (the other part's rows kept from the results file)
+"""
+import argparse
+import json
+import pathlib
+import subprocess
+import tempfile
+
+from contactbody import meshes
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+OUT = ROOT / "benchmarks" / "results"
+MESHES = [(5e-4, 1e-2), (2.5e-4, 1e-2)]  # contact and far element sizes (cost3d.py's)
+SOLVES = {"in the factor": "automatic", "by GCR": "sparse_gcr"}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--meshes", default="0,1", help="indices into MESHES, smallest first")
+    parser.add_argument("--substeps", default="300,200", help="timed substeps, per mesh chosen")
+    parser.add_argument("--only", choices=["sliding", "factors"])
+    parser.add_argument("--out", default=str(OUT))
+    args = parser.parse_args()
+    program = pathlib.Path(args.build) / "bench_contact_scaling"
+    chosen = [int(i) for i in args.meshes.split(",")]
+    substeps = [int(s) for s in args.substeps.split(",")]
+    kept = json.loads((pathlib.Path(args.out) / "sliding3d.json").read_text()) if args.only else {}
+    rows = kept.get("rows", []) if args.only == "factors" else []
+    factors = kept.get("factors", []) if args.only == "sliding" else []
+    with tempfile.TemporaryDirectory() as tmp:
+        for (contact, far), count in zip((MESHES[i] for i in chosen), substeps):
+            path = meshes.hemisphere(pathlib.Path(tmp) / f"hemisphere_{contact:.3g}.msh", radius=0.05,
+                                     contact_size=contact, far_size=far, fine_distance=0.0045,
+                                     refine_distance=0.025, contact_angle=25.0)
+            nodes = int(path.read_text().split("$Nodes\n")[1].split()[1])
+            if args.only != "sliding":
+                run = json.loads(subprocess.run(
+                    [str(pathlib.Path(args.build) / "bench_supernodal"), str(path), "3", "1", "supernodal"],
+                    check=True, capture_output=True, text=True).stdout)
+                cholesky, lu = run["supernodal_cholesky_fast"], run["supernodal_lu_fast"]
+                factors.append({"nodes": nodes, "unknowns": run["unknowns"], "gemm_gflops": run["gemm_gflops"],
+                                "cholesky_seconds": cholesky["factor_seconds"], "cholesky_gflops": cholesky["gflops"],
+                                "cholesky_solve_seconds": cholesky["solve_seconds"],
+                                "lu_seconds": lu["factor_seconds"], "lu_gflops": lu["gflops"],
+                                "lu_solve_seconds": lu["solve_seconds"], "lu_difference": lu["difference"],
+                                "lu_over_cholesky": lu["factor_seconds"] / cholesky["factor_seconds"]})
+                print(json.dumps(factors[-1]), flush=True)
+            if args.only == "factors":
+                continue
+            for slips, contact_path in SOLVES.items():
+                case = subprocess.run([str(program), str(path), "0", contact_path, str(count), "0.3", "3",
+                                       "-2e-4", "0", "1e-5"], check=True, capture_output=True,
+                                      text=True).stdout
+                row = {"nodes": nodes, "slips": slips, "substeps": count, **json.loads(case)}
+                rows.append(row)
+                print(json.dumps(row), flush=True)
+    for r in rows:
+        if "substep_speedup" in r:
+            continue
+        gcr = next(g for g in rows if g["nodes"] == r["nodes"] and g["slips"] == "by GCR")
+        r["substep_speedup"] = gcr["substep_seconds"] / r["substep_seconds"]
+        r["solves_ratio"] = gcr["held_solves_per_substep"] / r["held_solves_per_substep"]
+        r["static_start_speedup"] = gcr["static_start_seconds"] / r["static_start_seconds"]
+        r["normal_force_difference"] = abs(r["normal_force"] - gcr["normal_force"]) / abs(gcr["normal_force"])
+    write(rows, factors, pathlib.Path(args.out))
+
+
+def write(rows, factors, out):
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "sliding3d.json").write_text(json.dumps({"rows": rows, "factors": factors}, indent=1) + "\n")
+    lines = ["# 3D sliding: the slipping nodes in the factor", "",
+             "`.venv/bin/python benchmarks/sliding3d.py`: tetrahedral hemispheres (R = 50 mm), "
+             "F = 0.3, beta = 4e-6 s, 1e-6 s substeps, static start under -0.2 mm, then the "
+             "foundation at 20 m/s; the substeps timed follow a first communication step of 10. "
+             "*In the factor*: the FMU's contact solve, the slipping rows held in the factor's LU "
+             "along their slip directions; *by GCR*: every slip law left to GCR (the contact path "
+             "`sparse_gcr`, the solve before). Held solves are exact counts; times are wall "
+             "times of one process each, in one run.", "",
+             "| nodes | contact nodes | slips | substeps | held solves / substep | Newton iterations / substep | substep [ms] | one solve [ms] | refactorizations | static start [s] | substep speed-up | normal force difference |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['nodes']} | {r['contact_nodes']} | {r['slips']} | {r['substeps']} | "
+                     f"{r['held_solves_per_substep']:.2f} | {r['newton_iterations_per_substep']:.2f} | "
+                     f"{1e3 * r['substep_seconds']:.3g} | {1e3 * r['sparse_solve_seconds']:.3g} | "
+                     f"{r['held_refactorizations']} | {r['static_start_seconds']:.3g} | "
+                     f"{r['substep_speedup']:.2f} | {r['normal_force_difference']:.1e} |")
+    lines += ["", "The factor with slipping rows: on each mesh's K (`bench_supernodal`, one repeat), "
+              "the supernodal Cholesky with the fast kernels and its LU without pivoting (twice "
+              "the flops), beside the GEMM rate of the bench's own Eigen (its build's flags, not the kernels'), in the same run.", "",
+              "| nodes | unknowns | GEMM [GFlop/s] | Cholesky [s] | Cholesky [GFlop/s] | LU [s] | LU [GFlop/s] | LU / Cholesky | Cholesky solve [ms] | LU solve [ms] |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for f in factors:
+        lines.append(f"| {f['nodes']} | {f['unknowns']} | {f['gemm_gflops']:.3g} | {f['cholesky_seconds']:.3g} | "
+                     f"{f['cholesky_gflops']:.3g} | {f['lu_seconds']:.3g} | {f['lu_gflops']:.3g} | "
+                     f"{f['lu_over_cholesky']:.2f} | {1e3 * f['cholesky_solve_seconds']:.3g} | "
+                     f"{1e3 * f['lu_solve_seconds']:.3g} |")
+    (out / "sliding3d.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

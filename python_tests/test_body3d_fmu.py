@@ -487,7 +487,7 @@ def test_two_threads_give_the_outputs_of_one_bit_for_bit(unzipped3d, tmp_path):
 
 
 def test_a_state_whose_factor_holds_sliding_nodes_replays_bit_for_bit(unzipped3d, md3d, tmp_path):
-    """A hemisphere sliding at F = 0.3 (its factor supernodal, its slipping nodes' rows held in
+    """A damped hemisphere sliding at F = 0.3 (its factor supernodal, its slipping nodes' rows held in
     the factor's LU along their slip directions): a state taken mid-run carries those
     directions (the bytes' last field is not empty), and restored, also from its bytes, it gives
     the same outputs bit for bit."""
@@ -504,17 +504,22 @@ def test_a_state_whose_factor_holds_sliding_nodes_replays_bit_for_bit(unzipped3d
     inst.setString([vr["mesh"]], [str(mesh)])
     inst.setInteger([vr["initial_state"]], [1])
     inst.setReal([vr[n] for n in ("friction_coefficient", "top_displacement", "internal_step",
-                                  "foundation_velocity", "foundation_velocity_z")],
-                 [0.3, -2e-4, 1e-6, 12.0, 16.0])
+                                  "foundation_velocity", "foundation_velocity_z", "damping_stiffness")],
+                 [0.3, -2e-4, 1e-6, 12.0, 16.0, 4e-6])
     inst.exitInitializationMode()
     h = 2e-5
     for k in range(3):
         inst.doStep(k * h, h)
     state = inst.getFMUstate()
     blob = inst.serializeFMUstate(state)
-    slips = struct.unpack_from("<Q", blob, len(blob) - 8 - 8 * next(
-        k for k in range(len(blob) // 8) if struct.unpack_from("<Q", blob, len(blob) - 8 - 8 * k)[0] == k))[0]
-    assert slips > 0  # tangents x contact nodes: the held slip directions
+    def held_slips(k):  # k doubles at the end after their count, after the nodes' pattern
+        at = len(blob) - 8 * k - 8
+        nodes = k // 2
+        return (k % 2 == 0 and struct.unpack_from("<Q", blob, at)[0] == k and
+                struct.unpack_from("<Q", blob, at - nodes - 8)[0] == nodes)
+    slips = next(k for k in range(2, len(blob) // 8, 2) if held_slips(k))
+    directions = struct.unpack_from(f"<{slips}d", blob, len(blob) - 8 * slips)
+    assert sum(x != 0 for x in directions) > 100  # the slipping nodes' directions, x then z
     later = []
     for k in range(3, 6):
         inst.doStep(k * h, h)

@@ -252,8 +252,7 @@ double SupernodalCholesky::factor_nonzeros() const {
 bool SupernodalCholesky::factor(const SparseMatrix& lower) {
     const size_t S = first_.size() - 1;
     failed_ = -1;
-    lu_ = false;
-    std::vector<double>().swap(upper_);
+    lu_ = false;  // upper_ stays allocated: a held operator goes back and forth
     values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
     // K's entries into the panels: entry (i, j) of P K P^T (i >= j) into j's supernode.
     for (Eigen::Index col = 0; col < n_; ++col)
@@ -350,8 +349,10 @@ bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* va
     }
     gathered_.resize(largest_below);
     square_.resize(static_cast<size_t>(largest_square));
-    update_.resize(1);
-    local_.resize(1);
+    if (update_.empty()) {  // else factor()'s, whose first worker's fit
+        update_.resize(1);
+        local_.resize(1);
+    }
     update_[0].resize(static_cast<size_t>(update_size));
     local_[0].resize(static_cast<size_t>(n_));
     std::vector<double*> lower(S), upper(S);

@@ -73,7 +73,8 @@ private:
     std::vector<double> values_;
     // The LU's U by rows beside L's columns: supernode s's U(its columns, the rows below)
     // transposed, at upper_[value_start_[s]] as values_'s panel (its diagonal block: U^T, lower);
-    // values_'s diagonal blocks then hold L's unit lower triangle. Empty for a Cholesky.
+    // values_'s diagonal blocks then hold L's unit lower triangle. Kept after a Cholesky, so that
+    // a held operator that goes back and forth between the two allocates nothing.
     std::vector<double> upper_, square_;
     bool lu_ = false;
     double flops_ = 0, top_flops_ = 0;

@@ -292,19 +292,17 @@ ContactFactorization Stepper::contact_factorization() const {
     const Eigen::Index nc = num_contact_nodes();
     const std::vector<double>& slip = f->held->slip();
     ContactFactorization out{f->dt, std::vector<signed char>(static_cast<size_t>(nc)), {}};
-    bool slips = false;
     for (Eigen::Index i = 0; i < nc; ++i) {
         bool slipping = false;
         for (size_t s = static_cast<size_t>(i); s < slip.size(); s += static_cast<size_t>(nc))
             slipping = slipping || slip[s] != 0;
-        slips = slips || slipping;
         out.pattern[static_cast<size_t>(i)] =
             static_cast<signed char>(!f->held->held()[static_cast<size_t>(i)]       ? 0
                                      : f->held->held()[static_cast<size_t>(nc + i)] ? 1
                                      : slipping                                     ? 3
                                                                                     : 2);
     }
-    if (slips) out.slip = slip;
+    if (f->held->holds_slips()) out.slip = slip;
     return out;
 }
 

@@ -222,8 +222,7 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // slip's moves with each Newton iteration and substep) is kept, and GCR takes the
     // difference, until GCR's solves beyond one a Newton iteration have cost a
     // refactorization: then it is refactored at the pattern's directions (the same rent).
-    const bool drifting = isotropic(p) && differing <= most && !K.holds(held_, slip_) &&
-                          std::any_of(K.slip().begin(), K.slip().end(), [](double s) { return s != 0; });
+    const bool drifting = isotropic(p) && differing <= most && K.holds_slips() && !K.holds(held_, slip_);
     if ((differing > most && !renting) || (drifting && detour_solves_ >= refactorization))
         K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);

@@ -46,6 +46,7 @@ public:
     const std::vector<char>& held() const { return held_; }
     // The held slips, tangents x n (zero where a node's rows are K's).
     const std::vector<double>& slip() const { return slip_; }
+    bool holds_slips() const { return lu_held_; }  // some node's rows are slipping rows
     bool holds(const std::vector<char>& held, const std::vector<double>& slip) const {
         return held == held_ && slip == slip_;
     }

@@ -355,13 +355,13 @@ bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* va
     }
     update_[0].resize(static_cast<size_t>(update_size));
     local_[0].resize(static_cast<size_t>(n_));
-    std::vector<double*> lower(S), upper(S);
+    lu_targets_.resize(2 * S);  // L's panels, then U's
     for (size_t s = 0; s < S; ++s) {
-        lower[s] = values_.data() + value_start_[s];
-        upper[s] = upper_.data() + value_start_[s];
+        lu_targets_[s] = values_.data() + value_start_[s];
+        lu_targets_[S + s] = upper_.data() + value_start_[s];
     }
     for (size_t s = 0; s < S; ++s) {
-        failed_ = factor_supernode_lu(s, lower.data(), upper.data());
+        failed_ = factor_supernode_lu(s, lu_targets_.data(), lu_targets_.data() + S);
         if (failed_ >= 0) return false;
     }
     return true;

@@ -76,6 +76,7 @@ private:
     // values_'s diagonal blocks then hold L's unit lower triangle. Kept after a Cholesky, so that
     // a held operator that goes back and forth between the two allocates nothing.
     std::vector<double> upper_, square_;
+    std::vector<double*> lu_targets_;  // each supernode's L panel, then its U panel
     bool lu_ = false;
     double flops_ = 0, top_flops_ = 0;
     const SupernodalKernels* kernels_;

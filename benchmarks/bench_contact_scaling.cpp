@@ -7,11 +7,12 @@
 // machine whose speed drifts between runs), that factor's flops, nonzeros and kernel, the
 // solve's counts (held solves over the timed substeps too) and the peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
-//                         [DIMENSION [TOP [GAP [STEP [SAVE]]]]]
+//                         [DIMENSION [TOP [GAP [STEP [SAVE [BETA]]]]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
 // initial gap (0; a large one lifts the body), STEP the communication step (1e-5 s); SAVE 1
 // saves a state before each step (untimed), as an importer that can go back a step does:
-// what the contact solve keeps from step to step goes at each (Body::forget_kept).
+// what the contact solve keeps from step to step goes at each (Body::forget_kept); BETA the
+// stiffness-proportional damping (4e-6 s; 0: undamped).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -38,7 +39,7 @@ int main(int argc, char** argv) {
         p.mesh = argv[1];
     p.modes = std::atoi(argv[2]);
     p.friction_coefficient = 0.3;
-    p.damping_stiffness = 4e-6;
+    p.damping_stiffness = argc > 11 ? std::atof(argv[11]) : 4e-6;
     p.internal_step = 1e-6;
     p.static_initial_state = true;
     if (argc > 6) p.dimension = std::atoi(argv[6]);

@@ -1,7 +1,10 @@
 """3D sliding with the slipping nodes held in the factor (issue 71), against the slips left to
 GCR, in one run: the tetrahedral hemispheres of benchmarks/cost3d.py (2.7k and 12.6k nodes),
-F = 0.3, beta = 4e-6 s, 1e-6 s substeps, the static start under -0.2 mm, then the foundation at
-20 m/s. Each mesh runs build/bench_contact_scaling twice, one process each:
+F = 0.3, 1e-6 s substeps, the static start under -0.2 mm, then the foundation at 20 m/s, damped
+(beta = 4e-6 s) and undamped (beta = 0, the FMU's default: rho reaches 0.26 there, so that
+fewer slips are held; on the 2.7k-node mesh only: at 12.6k nodes an undamped substep took
+8.7 s in a run of 20, docs/decisions.md). Each mesh and damping runs
+build/bench_contact_scaling twice, one process each:
 
 * "in the factor": the FMU's contact solve (automatic): a slipping node's tangential rows
   K_j - F t_j K_y held in the factor (an LU on the Cholesky's supernodes) along its slip
@@ -33,6 +36,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results"
 MESHES = [(5e-4, 1e-2), (2.5e-4, 1e-2)]  # contact and far element sizes (cost3d.py's)
 SOLVES = {"in the factor": "automatic", "by GCR": "sparse_gcr"}
+DAMPINGS = {"": 4e-6, ", undamped": 0.0}  # the rows' slips label: its suffix, and beta [s]
+UNDAMPED_MESHES = (0,)  # indices into MESHES
 
 
 def main():
@@ -50,7 +55,8 @@ def main():
     rows = kept.get("rows", []) if args.only == "factors" else []
     factors = kept.get("factors", []) if args.only == "sliding" else []
     with tempfile.TemporaryDirectory() as tmp:
-        for (contact, far), count in zip((MESHES[i] for i in chosen), substeps):
+        for index, count in zip(chosen, substeps):
+            contact, far = MESHES[index]
             path = meshes.hemisphere(pathlib.Path(tmp) / f"hemisphere_{contact:.3g}.msh", radius=0.05,
                                      contact_size=contact, far_size=far, fine_distance=0.0045,
                                      refine_distance=0.025, contact_angle=25.0)
@@ -69,17 +75,22 @@ def main():
                 print(json.dumps(factors[-1]), flush=True)
             if args.only == "factors":
                 continue
-            for slips, contact_path in SOLVES.items():
-                case = subprocess.run([str(program), str(path), "0", contact_path, str(count), "0.3", "3",
-                                       "-2e-4", "0", "1e-5"], check=True, capture_output=True,
-                                      text=True).stdout
-                row = {"nodes": nodes, "slips": slips, "substeps": count, **json.loads(case)}
-                rows.append(row)
-                print(json.dumps(row), flush=True)
+            for suffix, beta in DAMPINGS.items():
+                if beta == 0 and index not in UNDAMPED_MESHES:
+                    continue
+                for slips, contact_path in SOLVES.items():
+                    case = subprocess.run([str(program), str(path), "0", contact_path, str(count), "0.3", "3",
+                                           "-2e-4", "0", "1e-5", "0", str(beta)], check=True,
+                                          capture_output=True, text=True).stdout
+                    row = {"nodes": nodes, "slips": slips + suffix, "beta": beta, "substeps": count,
+                           **json.loads(case)}
+                    rows.append(row)
+                    print(json.dumps(row), flush=True)
     for r in rows:
         if "substep_speedup" in r:
             continue
-        gcr = next(g for g in rows if g["nodes"] == r["nodes"] and g["slips"] == "by GCR")
+        gcr = next(g for g in rows if g["nodes"] == r["nodes"] and g["slips"].startswith("by GCR")
+                   and g.get("beta", 4e-6) == r.get("beta", 4e-6))
         r["substep_speedup"] = gcr["substep_seconds"] / r["substep_seconds"]
         r["solves_ratio"] = gcr["held_solves_per_substep"] / r["held_solves_per_substep"]
         r["static_start_speedup"] = gcr["static_start_seconds"] / r["static_start_seconds"]
@@ -92,7 +103,8 @@ def write(rows, factors, out):
     (out / "sliding3d.json").write_text(json.dumps({"rows": rows, "factors": factors}, indent=1) + "\n")
     lines = ["# 3D sliding: the slipping nodes in the factor", "",
              "`.venv/bin/python benchmarks/sliding3d.py`: tetrahedral hemispheres (R = 50 mm), "
-             "F = 0.3, beta = 4e-6 s, 1e-6 s substeps, static start under -0.2 mm, then the "
+             "F = 0.3, beta = 4e-6 s (and 0 where the slips say *undamped*), 1e-6 s substeps, "
+             "static start under -0.2 mm, then the "
              "foundation at 20 m/s; the substeps timed follow a first communication step of 10. "
              "*In the factor*: the FMU's contact solve, the slipping rows held in the factor's LU "
              "along their slip directions; *by GCR*: every slip law left to GCR (the contact path "

@@ -558,6 +558,8 @@ TEST(Body3D, SparseContactSolveWithIsotropicFrictionIsTheCondensedOne) {
             RecordProperty(creeping ? "creeping_held_solves" : "sliding_held_solves",
                            std::to_string(sparse.sparse_solver().solves()) + " against " +
                                std::to_string(gcr.sparse_solver().solves()) + " by GCR");
+            RecordProperty(creeping ? "creeping_refactorizations" : "sliding_refactorizations",
+                           std::to_string(sparse.sparse_refactorizations()));
             if (!creeping) {
                 RecordProperty("held_slips", held_slips);
                 EXPECT_GT(held_slips, substeps / 10);

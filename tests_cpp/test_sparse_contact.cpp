@@ -364,6 +364,43 @@ TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
               10 * SceneParameters{}.contact_tolerance * runs[1].lambda.cwiseAbs().maxCoeff());
 }
 
+// Undamped 3D sliding, where many slipping nodes have a rho above max_held_ratio: a solve's
+// first Newton iteration (no iterate's rho yet) holds the slips the factor holds. It held every
+// slip there, and the next iteration's rho dropped most of them: two refactorizations a
+// substep (80 in 40 substeps on this 156-contact-node hemisphere, the substep 8x slower;
+// docs/decisions.md, "A 3D body's factor holds its slipping nodes"). The mesh is
+// contactbody.meshes.hemisphere(radius=0.05, contact_size=7e-4, far_size=2.5e-2,
+// fine_distance=0.0045, refine_distance=0.015, contact_angle=12.0).
+TEST(SparseContactSolve, UndampedSlidingKeepsItsFactor) {
+    SceneParameters p;
+    p.mesh = data("hemisphere_156.msh");
+    p.dimension = 3;
+    p.friction_coefficient = 0.3;
+    p.internal_step = 1e-6;
+    p.static_initial_state = true;
+    const double top = -2e-4;
+    std::unique_ptr<Stepper> automatic = stepper_on(p, Stepper::ContactPath::automatic);
+    std::unique_ptr<Stepper> gcr = stepper_on(p, Stepper::ContactPath::sparse_gcr);
+    const Stepper &a = *automatic, &g = *gcr;
+    Simulation sa(std::move(automatic), top), sg(std::move(gcr), top);
+    StepInputs in;
+    in.foundation_velocity[0] = 20;
+    in.top_displacement = top;
+    const long before = a.sparse_refactorizations();
+    for (int k = 0; k < 4; ++k) {
+        sa.do_step(1e-5, in);
+        sg.do_step(1e-5, in);
+    }
+    EXPECT_TRUE(a.sparse_contact());
+    EXPECT_GT(sa.observables().normal_force, 0);
+    EXPECT_NEAR(sa.observables().normal_force, sg.observables().normal_force,
+                1e-8 * sg.observables().normal_force);
+    RecordProperty("refactorizations", std::to_string(a.sparse_refactorizations() - before) +
+                                           " in 40 substeps, " + std::to_string(g.sparse_refactorizations()) +
+                                           " by GCR");
+    EXPECT_LE(a.sparse_refactorizations() - before, 4);
+}
+
 // GCR's kept directions outlast a communication step: they go only where a state is saved or
 // restored, which replays the same way (ReplaysBitForBit). Left with the slips (most of its
 // directions), GCR made 571 held solves in the 11 steps with a state saved before each (460 in

@@ -65,7 +65,8 @@ void SparseContactSolver::reactions(const HeldOperator& K, const ContactProblem&
     }
 }
 
-void SparseContactSolver::held_set(const ContactProblem& p, bool slips) {
+void SparseContactSolver::held_set(const ContactProblem& p, const HeldOperator& K, bool ratios_known) {
+    const bool slips = K.slip_coefficient() > 0;
     const Eigen::Index n = pattern_.size();
     const Eigen::Index tangents = static_cast<Eigen::Index>(held_.size()) / n - 1;
     const bool friction = p.has_friction();
@@ -76,7 +77,11 @@ void SparseContactSolver::held_set(const ContactProblem& p, bool slips) {
             held_[static_cast<size_t>(c * n + i)] = friction && pattern_[i] == 1;
         if (!slips || !friction || (pattern_[i] != 2 && pattern_[i] != -2)) continue;
         if (isotropic(p)) {  // along the pattern's slip direction (the last residual's)
-            if (!(ratio_[i] <= max_held_ratio)) continue;
+            // A solve's first pattern has no iterate's rho yet: its slips are held where the
+            // factor holds them (docs/decisions.md, "A 3D body's factor holds its slipping nodes").
+            const bool held_by_factor =
+                K.slip()[static_cast<size_t>(i)] != 0 || K.slip()[static_cast<size_t>(n + i)] != 0;
+            if (ratios_known ? !(ratio_[i] <= max_held_ratio) : !held_by_factor) continue;
             for (Eigen::Index c = 0; c < tangents; ++c)
                 slip_[static_cast<size_t>(c * n + i)] = direction_[c * n + i];
         } else
@@ -185,7 +190,7 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const Eigen::Index n = p.gap_limit.size(), m = K.unknowns();
     const bool friction = p.has_friction();
     int differing = 0;
-    held_set(p, K.slip_coefficient() > 0);
+    held_set(p, K, newton_iteration_ > 1);
     for (Eigen::Index i = 0; i < n; ++i) {
         targets_[i] = -p.gap_limit[i];  // u_N = -w_y = gap limit
         for (Eigen::Index c = 1; c < m / n; ++c)
@@ -657,8 +662,8 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                 pattern_[i] = back;
         }
     }
-    if (fresh_factor) {
-        held_set(p, K.slip_coefficient() > 0);
+    if (fresh_factor) {  // every slip held (rho is zero here): not what K held before
+        held_set(p, K, true);
         K.hold(held_, slip_);
         forget();
     }

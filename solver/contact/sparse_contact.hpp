@@ -87,9 +87,11 @@ public:
 
 private:
     // held_ from pattern_: active nodes' y dofs, and sticking nodes' tangential dofs with
-    // friction; and slip_ (where the factor may hold slips): slipping nodes' signs (2D) or
-    // slip directions (3D), tangents x n (HeldOperator::hold).
-    void held_set(const ContactProblem& p, bool slips);
+    // friction; and slip_ (where K may hold slips): slipping nodes' signs (2D) or slip
+    // directions (3D), tangents x n (HeldOperator::hold); a 3D node's where its rho is at most
+    // max_held_ratio (ratio_, zero before the first residual), or, where ratios_known is false
+    // (a solve's first iteration on a factor it keeps), where K holds it.
+    void held_set(const ContactProblem& p, const HeldOperator& K, bool ratios_known);
     void solve_pattern(HeldOperator& K, const ContactProblem& p, const Eigen::VectorXd& rhs, double scale,
                        double tolerance);
     // The coupled unknowns' system on K's current factor, into w_new_; false where it took

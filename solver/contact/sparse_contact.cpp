@@ -228,6 +228,7 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // difference, until GCR's solves beyond one a Newton iteration have cost a
     // refactorization: then it is refactored at the pattern's directions (the same rent).
     const bool drifting = isotropic(p) && differing <= most && K.holds_slips() && !K.holds(held_, slip_);
+    const long factored = K.refactorizations();
     if ((differing > most && !renting) || (drifting && detour_solves_ >= refactorization))
         K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);
@@ -241,6 +242,9 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     } else if (drifting && detour) {
         detour_solves_ += std::max<long>(0, solves_ - before - 1);
     }
+    // A new factor's detours start at none. The check above does not see this one:
+    // solve_coupled has already made it the factor of its kept directions.
+    if (K.refactorizations() != factored) detour_solves_ = 0;
     reactions(K, p, rhs);
 }
 

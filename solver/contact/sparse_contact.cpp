@@ -24,6 +24,13 @@ double tangential_stiffness(const HeldOperator& K, Eigen::Index n, Eigen::Index 
     return sum / tangents;
 }
 
+// Whether node i holds a slip in `slip` (tangents x n): any of its tangents' entries.
+bool holds_slip(const std::vector<double>& slip, size_t i, size_t n) {
+    for (size_t s = i; s < slip.size(); s += n)
+        if (slip[s] != 0) return true;
+    return false;
+}
+
 double slip_sign(const ContactProblem& p, Eigen::Index i, signed char pattern) {
     return pattern > 0 ? p.friction[i] : -p.friction[i];
 }
@@ -79,9 +86,9 @@ void SparseContactSolver::held_set(const ContactProblem& p, const HeldOperator& 
         if (isotropic(p)) {  // along the pattern's slip direction (the last residual's)
             // A solve's first pattern has no iterate's rho yet: its slips are held where the
             // factor holds them (docs/decisions.md, "A 3D body's factor holds its slipping nodes").
-            const bool held_by_factor =
-                K.slip()[static_cast<size_t>(i)] != 0 || K.slip()[static_cast<size_t>(n + i)] != 0;
-            if (ratios_known ? !(ratio_[i] <= max_held_ratio) : !held_by_factor) continue;
+            if (ratios_known ? !(ratio_[i] <= max_held_ratio)
+                             : !holds_slip(K.slip(), static_cast<size_t>(i), static_cast<size_t>(n)))
+                continue;
             for (Eigen::Index c = 0; c < tangents; ++c)
                 slip_[static_cast<size_t>(c * n + i)] = direction_[c * n + i];
         } else
@@ -92,7 +99,7 @@ void SparseContactSolver::held_set(const ContactProblem& p, const HeldOperator& 
     if (isotropic(p)) {
         Eigen::Index held = 0;
         for (Eigen::Index i = 0; i < n; ++i)
-            held += slip_[static_cast<size_t>(i)] != 0 || slip_[static_cast<size_t>(n + i)] != 0;
+            held += holds_slip(slip_, static_cast<size_t>(i), static_cast<size_t>(n));
         if (tangents * held <= max_directions) std::fill(slip_.begin(), slip_.end(), 0.0);
     }
 }
@@ -215,7 +222,11 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     const double refactorization = K.refactorization_in_solves();
     const bool costly = refactorization > max_directions &&
                         std::none_of(K.held().begin(), K.held().end(), [](char h) { return h != 0; });
-    if (kept_operator_ != &K || kept_refactorizations_ != K.refactorizations()) detour_solves_ = 0;
+    if (detour_operator_ != &K || detour_refactorizations_ != K.refactorizations()) {
+        detour_solves_ = 0;  // a factor's detours start at none
+        detour_operator_ = &K;
+        detour_refactorizations_ = K.refactorizations();
+    }
     // A factor that can hold the pattern's slips (one tangent) is refactored where more dofs
     // differ than its refactorization costs in solves (docs/decisions.md, "A 2D body's factor
     // holds its slipping nodes").
@@ -228,7 +239,6 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // difference, until GCR's solves beyond one a Newton iteration have cost a
     // refactorization: then it is refactored at the pattern's directions (the same rent).
     const bool drifting = isotropic(p) && differing <= most && K.holds_slips() && !K.holds(held_, slip_);
-    const long factored = K.refactorizations();
     if ((differing > most && !renting) || (drifting && detour_solves_ >= refactorization))
         K.hold(held_, slip_);
     const bool detour = !K.holds(held_, slip_);
@@ -242,9 +252,6 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     } else if (drifting && detour) {
         detour_solves_ += std::max<long>(0, solves_ - before - 1);
     }
-    // A new factor's detours start at none. The check above does not see this one:
-    // solve_coupled has already made it the factor of its kept directions.
-    if (K.refactorizations() != factored) detour_solves_ = 0;
     reactions(K, p, rhs);
 }
 

@@ -58,7 +58,7 @@ public:
     void forget() {
         history_ = 0;
         kept_ = parked_ = 0;
-        kept_operator_ = last_operator_ = nullptr;
+        kept_operator_ = last_operator_ = detour_operator_ = nullptr;
         detour_solves_ = 0;
     }
     const Eigen::Matrix<NodeStatus, Eigen::Dynamic, 1>& status() const { return status_; }
@@ -168,8 +168,11 @@ private:
     Eigen::VectorXd kept_friction_, kept_direction_, kept_ratio_;
     const HeldOperator* kept_operator_ = nullptr;
     long kept_refactorizations_ = -1;
-    // Held solves made on the current factor for patterns it does not hold (solve_pattern).
+    // Held solves made on the current factor for patterns it does not hold (solve_pattern),
+    // and the factor they were counted on (an operator and its refactorizations' count).
     long detour_solves_ = 0;
+    const HeldOperator* detour_operator_ = nullptr;
+    long detour_refactorizations_ = -1;
     // The last solve_coupled's result on its factor: the coupled unknowns' values (NaN where
     // not coupled), its solution and the sizes combined into it; this solve's Newton iteration.
     Eigen::VectorXd last_xi_, last_w_;

@@ -108,6 +108,7 @@ int main(int argc, char** argv) {
     const long krylov_iterations = stepper ? stepper->sparse_solver().krylov_iterations() : 0L;
     const long gcr_rounds = stepper ? stepper->sparse_solver().gcr_rounds() : 0L;
     const long held_refactorizations = stepper ? stepper->sparse_refactorizations() : 0L;
+    const double held_refactored_work = stepper ? stepper->sparse_refactored_work() : 0.0;
     const double peak_memory = peak_rss_mb();
     std::printf(
         "{\"contact_nodes\": %d, \"unknowns\": %ld, \"modes\": %d, \"sparse\": %s, "
@@ -116,13 +117,15 @@ int main(int argc, char** argv) {
         "\"newton_iterations_per_substep\": %.4g, \"held_solves\": %ld, "
         "\"held_solves_per_substep\": %.4g, "
         "\"krylov_iterations\": %ld, \"gcr_rounds\": %ld, \"held_refactorizations\": %ld, "
+        "\"held_refactored_work\": %.4g, "
         "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
         "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
         "\"factor_kernel\": \"%s\"}\n",
         contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start, substep, solve,
         substep / solve, static_cast<double>(iterations) / (steps * per_step), held_solves,
-        held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, o.normal_force,
-        o.kinetic_energy, o.strain_energy, peak_memory, factor.factor_flops(), factor.factor_nonzeros(),
+        held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, held_refactored_work,
+        o.normal_force, o.kinetic_energy, o.strain_energy, peak_memory, factor.factor_flops(),
+        factor.factor_nonzeros(),
         factor.kernel() == TrailingCholesky::Kernel::supernodal      ? "supernodal"
         : factor.kernel() == TrailingCholesky::Kernel::supernodal_lu ? "supernodal_lu"
                                                                      : "simplicial");

@@ -14,7 +14,7 @@ build/bench_contact_scaling twice, one process each:
 
 For each: the set-up (discretization, factors, the static start with friction), the held
 solves a substep (exact counts), Newton iterations, wall time a substep, the refactorizations
-over the run, and the normal force (the same solution). The substeps timed follow a first
+over the run and the share of a whole factorization they redid, and the normal force (the same solution). The substeps timed follow a first
 communication step of 10. Then, on each mesh's K, the factor with slipping rows against the
 Cholesky (build/bench_supernodal, one repeat: the supernodal Cholesky with the fast kernels and
 its LU, factor and solve times).
@@ -98,6 +98,13 @@ def main():
     write(rows, factors, pathlib.Path(args.out))
 
 
+def refactored_share(row):
+    """The refactorizations' flops over as many whole factorizations' (the supernodal factor redoes
+    only the supernodes whose values changed and their ancestors)."""
+    count = row["held_refactorizations"]
+    return f"{row['held_refactored_work'] / count:.2f}" if count and "held_refactored_work" in row else "–"
+
+
 def write(rows, factors, out):
     out.mkdir(parents=True, exist_ok=True)
     (out / "sliding3d.json").write_text(json.dumps({"rows": rows, "factors": factors}, indent=1) + "\n")
@@ -108,15 +115,16 @@ def write(rows, factors, out):
              "foundation at 20 m/s; the substeps timed follow a first communication step of 10. "
              "*In the factor*: the FMU's contact solve, the slipping rows held in the factor's LU "
              "along their slip directions; *by GCR*: every slip law left to GCR (the contact path "
-             "`sparse_gcr`, the solve before). Held solves are exact counts; times are wall "
+             "`sparse_gcr`, the solve before). Held solves are exact counts; the refactored share is "
+             "the refactorizations' flops over as many whole factorizations'; times are wall "
              "times of one process each, in one run.", "",
-             "| nodes | contact nodes | slips | substeps | held solves / substep | Newton iterations / substep | substep [ms] | one solve [ms] | refactorizations | static start [s] | substep speed-up | normal force difference |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| nodes | contact nodes | slips | substeps | held solves / substep | Newton iterations / substep | substep [ms] | one solve [ms] | refactorizations | refactored share | static start [s] | substep speed-up | normal force difference |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['nodes']} | {r['contact_nodes']} | {r['slips']} | {r['substeps']} | "
                      f"{r['held_solves_per_substep']:.2f} | {r['newton_iterations_per_substep']:.2f} | "
                      f"{1e3 * r['substep_seconds']:.3g} | {1e3 * r['sparse_solve_seconds']:.3g} | "
-                     f"{r['held_refactorizations']} | {r['static_start_seconds']:.3g} | "
+                     f"{r['held_refactorizations']} | {refactored_share(r)} | {r['static_start_seconds']:.3g} | "
                      f"{r['substep_speedup']:.2f} | {r['normal_force_difference']:.1e} |")
     lines += ["", "The factor with slipping rows: on each mesh's K (`bench_supernodal`, one repeat), "
               "the supernodal Cholesky with the fast kernels and its LU without pivoting (twice "

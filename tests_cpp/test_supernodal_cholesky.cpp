@@ -208,3 +208,95 @@ TEST(SupernodalCholesky, TheLuSolvesAMatrixWithoutSymmetricValues) {
         EXPECT_LE(f.failed_column(), position[static_cast<size_t>(zero)]);
     }
 }
+
+namespace {
+
+// lower (or both triangles) with unknowns `held` as the identity's rows and columns, as the
+// sparse contact solve holds them: the same pattern, values changed in their columns only.
+SparseMatrix held_copy(const SparseMatrix& matrix, const std::vector<int>& held) {
+    SparseMatrix H = matrix;
+    std::vector<char> is_held(static_cast<size_t>(H.rows()), 0);
+    for (int i : held) is_held[static_cast<size_t>(i)] = 1;
+    for (Eigen::Index c = 0; c < H.outerSize(); ++c)
+        for (SparseMatrix::InnerIterator it(H, c); it; ++it)
+            if (is_held[static_cast<size_t>(it.row())] || is_held[static_cast<size_t>(c)])
+                it.valueRef() = it.row() == c ? 1.0 : 0.0;
+    return H;
+}
+
+}  // namespace
+
+// A factorization after one of the same kind redoes only the supernodes its changed values
+// reach (the columns of newly held unknowns and their ancestors), with the same bits as a
+// factor made whole: on the grid (blocked panels and updates) and the 3D body, for the
+// Cholesky on one and two threads and for the LU; after a failure it factors whole again.
+TEST(SupernodalCholesky, ARefactorizationRedoesOnlyWhatChangedWithTheSameBits) {
+    for (const int which : {0, 1}) {
+        SCOPED_TRACE(which == 0 ? "grid" : "3D body");
+        SparseMatrix K = which == 0 ? grid_laplacian(22) : body_matrix(3, 0);
+        if (which == 0) K = SparseMatrix(SparseMatrix(K).selfadjointView<Eigen::Lower>());
+        K.makeCompressed();
+        const SparseMatrix lower = K.triangularView<Eigen::Lower>();
+        TrailingCholesky reference(K, {});
+        const std::vector<int> position = factor_order(reference);
+        // Hold the three unknowns first in the factor's order, then also two in its middle.
+        std::vector<int> by_place(position.size());
+        for (size_t i = 0; i < position.size(); ++i)
+            by_place[static_cast<size_t>(position[i])] = static_cast<int>(i);
+        const std::vector<int> first_held{by_place[0], by_place[1], by_place[2]};
+        std::vector<int> more_held = first_held;
+        more_held.push_back(by_place[by_place.size() / 2]);
+        more_held.push_back(by_place[by_place.size() / 2 + 1]);
+        const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+        for (int threads : {1, 2}) {
+            SupernodalCholesky f(lower, position, false, threads);
+            ASSERT_TRUE(f.factor(lower));
+            EXPECT_EQ(f.refactored_share(), 1.0);
+            for (const std::vector<int>& held : {first_held, more_held, first_held}) {
+                const SparseMatrix H = held_copy(lower, held);
+                ASSERT_TRUE(f.factor(H));
+                EXPECT_GT(f.refactored_share(), 0.0);
+                EXPECT_LT(f.refactored_share(), which == 0 ? 0.9 : 1.0) << held.size() << " held";
+                SupernodalCholesky whole(lower, position, false, threads);
+                ASSERT_TRUE(whole.factor(H));
+                Eigen::VectorXd x, expected;
+                f.solve(b, x);
+                whole.solve(b, expected);
+                EXPECT_TRUE(x == expected)
+                    << threads << " threads, " << held.size() << " held, largest difference "
+                    << (x - expected).lpNorm<Eigen::Infinity>();
+            }
+        }
+        // The LU: the same values with the entries above the diagonal scaled, then held.
+        SparseMatrix A = K;
+        for (Eigen::Index c = 0; c < A.outerSize(); ++c)
+            for (SparseMatrix::InnerIterator it(A, c); it; ++it)
+                if (it.row() < c) it.valueRef() *= 1 + 0.3 * std::sin(static_cast<double>(it.row() + 2 * c));
+        SupernodalCholesky f(lower, position);
+        ASSERT_TRUE(f.factor_lu(A, A.valuePtr()));
+        for (const std::vector<int>& held : {first_held, more_held}) {
+            const SparseMatrix H = held_copy(A, held);
+            ASSERT_TRUE(f.factor_lu(H, H.valuePtr()));
+            EXPECT_LT(f.refactored_share(), which == 0 ? 0.9 : 1.0) << held.size() << " held";
+            SupernodalCholesky whole(lower, position);
+            ASSERT_TRUE(whole.factor_lu(H, H.valuePtr()));
+            Eigen::VectorXd x, expected;
+            f.solve(b, x);
+            whole.solve(b, expected);
+            EXPECT_TRUE(x == expected) << "LU, " << held.size() << " held, largest difference "
+                                       << (x - expected).lpNorm<Eigen::Infinity>();
+        }
+        // A failed factorization leaves nothing to redo from: the next one is whole.
+        SparseMatrix bad = lower;
+        bad.coeffRef(by_place[0], by_place[0]) = -1;
+        SupernodalCholesky g(lower, position);
+        ASSERT_TRUE(g.factor(lower));
+        EXPECT_FALSE(g.factor(bad));
+        ASSERT_TRUE(g.factor(lower));
+        EXPECT_EQ(g.refactored_share(), 1.0);
+        Eigen::VectorXd x, expected;
+        g.solve(b, x);
+        reference.solve(b, expected);
+        EXPECT_LE((x - expected).lpNorm<Eigen::Infinity>(), 1e-10 * expected.lpNorm<Eigen::Infinity>());
+    }
+}

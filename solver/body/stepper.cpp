@@ -333,6 +333,13 @@ long Stepper::sparse_refactorizations() const {
     return count;
 }
 
+double Stepper::sparse_refactored_work() const {
+    double work = 0;
+    for (const auto& f : cache_)
+        if (f && f->held) work += f->held->refactored_work();
+    return work;
+}
+
 bool Stepper::wants_sparse() const {
     if (contact_path_ != ContactPath::automatic) return contact_path_ != ContactPath::condensed;
     return !rate_law(params_).active() &&

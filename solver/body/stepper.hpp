@@ -273,7 +273,8 @@ public:
     const SparseContactSolver& sparse_solver() const { return sparse_solver_; }
     // Which contact solve the body takes, and why (the log's).
     std::string summary() const override;
-    long sparse_refactorizations() const;  // of the cached factors' held operators
+    long sparse_refactorizations() const;   // of the cached factors' held operators
+    double sparse_refactored_work() const;  // what they factored, in whole factorizations
     // The last substep's factor of K (the sparse solve's, its held set's rows and columns the
     // identity's, or the condensed solve's Cholesky factor): its size and one solve with it,
     // the floor of a substep, for benchmarks. Throws std::logic_error before the first substep.

@@ -102,6 +102,11 @@ void HeldOperator::hold(const std::vector<char>& held, const std::vector<double>
 
 void HeldOperator::factor_held() {
     ++refactorizations_;
+    factor_into_held();
+    refactored_work_ += factor_->refactored_share();
+}
+
+void HeldOperator::factor_into_held() {
     lu_held_ = std::any_of(slip_.begin(), slip_.end(), [](double s) { return s != 0; });
     if (lu_held_ && factor_->kernel() == TrailingCholesky::Kernel::supernodal) {
         // The slipping rows in our supernodal factor's LU (a 3D body's: docs/decisions.md, "A 3D

@@ -61,6 +61,8 @@ public:
     // x = K_H^-1 b (K_H: K with the held rows and columns the identity's, and the slipping rows).
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
     long refactorizations() const { return refactorizations_; }
+    // What they factored, in whole factorizations (each its refactored share).
+    double refactored_work() const { return refactored_work_; }
     double factor_nonzeros() const;
     // What a refactorization costs in held solves: its flops (the analysis's) over a solve's,
     // 4 per nonzero of L (forward and backward).
@@ -80,6 +82,7 @@ private:
     std::unique_ptr<TrailingCholesky> factor_;
     std::vector<char> held_, held_dof_;  // per contact unknown, per free dof
     long refactorizations_ = 0;
+    double refactored_work_ = 0;
     // The slipping rows' factor: K's values (both triangles) as held, and per contact unknown
     // the positions of its row's entries (aligned with its column's: x's and y's of a node
     // match) and of its diagonal; each free dof's contact unknown (or -1).
@@ -92,6 +95,7 @@ private:
     std::vector<std::vector<int>> row_positions_;
     std::vector<int> full_diagonal_, unknown_of_;
     void factor_held();
+    void factor_into_held();  // the factorization itself
     void slip_values();
 };
 

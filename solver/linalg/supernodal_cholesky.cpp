@@ -1,6 +1,7 @@
 #include "linalg/supernodal_cholesky.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "util/worker_team.hpp"
@@ -131,7 +132,8 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
     // Row structures by supernode: its columns, then A's rows and the child supernodes' rows
     // beyond its last column.
     std::vector<std::vector<int>> child_supernodes(S);
-    std::vector<double> own_flops(S, 0);
+    own_flops_.assign(S, 0);
+    parent_.assign(S, -1);
     std::vector<std::vector<int>> below(S);
     row_start_.assign(1, 0);
     value_start_.assign(1, 0);
@@ -153,9 +155,10 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
             std::vector<int>().swap(below[static_cast<size_t>(c)]);
         }
         std::sort(r.begin(), r.end());
-        if (!r.empty())
-            child_supernodes[static_cast<size_t>(super_of_[static_cast<size_t>(r.front())])].push_back(
-                static_cast<int>(s));
+        if (!r.empty()) {
+            parent_[s] = super_of_[static_cast<size_t>(r.front())];
+            child_supernodes[static_cast<size_t>(parent_[s])].push_back(static_cast<int>(s));
+        }
         const std::ptrdiff_t columns = b - a, panel_rows = columns + static_cast<std::ptrdiff_t>(r.size());
         for (int j = a; j < b; ++j) row_index_.push_back(j);
         row_index_.insert(row_index_.end(), r.begin(), r.end());
@@ -163,11 +166,13 @@ SupernodalCholesky::SupernodalCholesky(const SparseMatrix& lower, const std::vec
         value_start_.push_back(value_start_.back() + panel_rows * columns);
         // Flops: the diagonal block's Cholesky, the panel's triangular solve and its update.
         const double c = static_cast<double>(columns), m = static_cast<double>(r.size());
-        own_flops[s] = c * c * c / 3 + m * c * c + m * m * c;
-        flops_ += own_flops[s];
+        own_flops_[s] = c * c * c / 3 + m * c * c + m * m * c;
+        flops_ += own_flops_[s];
     }
     for (size_t s = 0; s < S; ++s) std::vector<int>().swap(below[s]);
-    divide_among_groups(child_supernodes, own_flops);
+    divide_among_groups(child_supernodes, own_flops_);
+    redo_.assign(S, 1);
+    reach_.assign(S, 0);
     permuted_.resize(n_);
 }
 
@@ -252,14 +257,19 @@ double SupernodalCholesky::factor_nonzeros() const {
 bool SupernodalCholesky::factor(const SparseMatrix& lower) {
     const size_t S = first_.size() - 1;
     failed_ = -1;
+    const bool partial = plan(Factored::cholesky, lower, lower.valuePtr());
     lu_ = false;  // upper_ stays allocated: a held operator goes back and forth
-    values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
+    if (partial)
+        clear_redone(values_);
+    else
+        values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
     // K's entries into the panels: entry (i, j) of P K P^T (i >= j) into j's supernode.
     for (Eigen::Index col = 0; col < n_; ++col)
         for (SparseMatrix::InnerIterator it(lower, col); it; ++it) {
             int i = position_[static_cast<size_t>(it.row())], j = position_[static_cast<size_t>(col)];
             if (i < j) std::swap(i, j);
             const size_t s = static_cast<size_t>(super_of_[static_cast<size_t>(j)]);
+            if (!redo_[s]) continue;
             const int* r = row_index_.data() + row_start_[s];
             const int rows = row_start_[s + 1] - row_start_[s];
             const std::ptrdiff_t place = std::lower_bound(r, r + rows, i) - r;
@@ -291,19 +301,30 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
             t[s] = top_offset_[g][s] >= 0 ? top_updates_[g].data() + top_offset_[g][s]
                                           : values_.data() + value_start_[s];
     }
-    std::vector<std::ptrdiff_t> failed(groups, -1);
+    // A supernode redone is factored; another updates those it reaches.
+    const auto run_supernode = [&](size_t s, double* const* targets, int worker, const WorkerTeam* on) {
+        if (redo_[s]) return factor_supernode(s, targets, worker, on);
+        update_ancestors(s, reach_[s], targets, worker, on);
+        return std::ptrdiff_t{-1};
+    };
+    std::array<std::ptrdiff_t, groups> failed;
+    failed.fill(-1);
     team.run(static_cast<int>(groups), [&](int g, int worker) {
         for (int s : group_supernodes_[static_cast<size_t>(g)]) {
-            failed[static_cast<size_t>(g)] = factor_supernode(
+            failed[static_cast<size_t>(g)] = run_supernode(
                 static_cast<size_t>(s), targets_[static_cast<size_t>(g)].data(), worker, nullptr);
             if (failed[static_cast<size_t>(g)] >= 0) return;
         }
     });
     for (std::ptrdiff_t f : failed)
         if (f >= 0 && (failed_ < 0 || f < failed_)) failed_ = f;
-    if (failed_ >= 0) return false;
+    if (failed_ >= 0) {
+        factored_ = Factored::none;
+        return false;
+    }
     team.run(static_cast<int>(top_.size()), [&](int k, int) {
         const size_t s = static_cast<size_t>(top_[static_cast<size_t>(k)]);
+        if (!redo_[s]) return;
         double* panel = values_.data() + value_start_[s];
         const std::ptrdiff_t size = value_start_[s + 1] - value_start_[s];
         for (size_t g = 1; g < groups; ++g) {
@@ -313,18 +334,76 @@ bool SupernodalCholesky::factor(const SparseMatrix& lower) {
         }
     });
     for (int s : top_) {
-        failed_ = factor_supernode(static_cast<size_t>(s), targets_[0].data(), 0, &team);
-        if (failed_ >= 0) return false;
+        failed_ = run_supernode(static_cast<size_t>(s), targets_[0].data(), 0, &team);
+        if (failed_ >= 0) {
+            factored_ = Factored::none;
+            return false;
+        }
     }
     return true;
+}
+
+// Whether this factorization may redo only part of the last one: the last factored `kind`
+// with the same pattern. Then redo_ marks the supernodes holding a changed value (entry (i, j)
+// of P K P^T belongs to min(i, j)'s) and their ancestors, reach_ each other supernode's first
+// row below that lies in a redone one (rows ascend along the path to the root, so those rows
+// are the last ones); else redo_ marks all. Keeps the values for the next call.
+bool SupernodalCholesky::plan(Factored kind, const SparseMatrix& pattern, const double* values) {
+    const size_t S = first_.size() - 1;
+    const size_t count = static_cast<size_t>(pattern.nonZeros());
+    const bool partial = factored_ == kind && factored_values_.size() == count;
+    if (partial) {
+        std::fill(redo_.begin(), redo_.end(), 0);
+        for (Eigen::Index col = 0; col < n_; ++col)
+            for (int k = pattern.outerIndexPtr()[col]; k < pattern.outerIndexPtr()[col + 1]; ++k)
+                if (values[k] != factored_values_[static_cast<size_t>(k)]) {
+                    const int i = position_[static_cast<size_t>(pattern.innerIndexPtr()[k])],
+                              j = position_[static_cast<size_t>(col)];
+                    redo_[static_cast<size_t>(super_of_[static_cast<size_t>(std::min(i, j))])] = 1;
+                }
+        for (size_t s = 0; s < S; ++s)  // parents come after their children
+            if (redo_[s] && parent_[s] >= 0) redo_[static_cast<size_t>(parent_[s])] = 1;
+    } else {
+        std::fill(redo_.begin(), redo_.end(), 1);
+    }
+    refactored_flops_ = 0;
+    for (size_t s = 0; s < S; ++s) {
+        const std::ptrdiff_t columns = first_[s + 1] - first_[s];
+        const std::ptrdiff_t m = (row_start_[s + 1] - row_start_[s]) - columns;
+        if (redo_[s]) {
+            reach_[s] = 0;
+            refactored_flops_ += own_flops_[s];
+            continue;
+        }
+        const int* r = row_index_.data() + row_start_[s] + columns;
+        std::ptrdiff_t q = m;
+        while (q > 0 && redo_[static_cast<size_t>(super_of_[static_cast<size_t>(r[q - 1])])]) --q;
+        reach_[s] = q;
+        const double left = static_cast<double>(m - q);
+        refactored_flops_ += left * left * static_cast<double>(columns);
+    }
+    factored_ = kind;
+    factored_values_.assign(values, values + count);
+    return partial;
+}
+
+// Zeroes the panels of the supernodes redone.
+void SupernodalCholesky::clear_redone(std::vector<double>& panels) const {
+    for (size_t s = 0; s + 1 < first_.size(); ++s)
+        if (redo_[s]) std::fill(panels.begin() + value_start_[s], panels.begin() + value_start_[s + 1], 0.0);
 }
 
 bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* values) {
     const size_t S = first_.size() - 1;
     failed_ = -1;
     lu_ = true;
-    values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
-    upper_.assign(values_.size(), 0.0);
+    if (plan(Factored::lu, pattern, values)) {
+        clear_redone(values_);
+        clear_redone(upper_);
+    } else {
+        values_.assign(static_cast<size_t>(value_start_.back()), 0.0);
+        upper_.assign(values_.size(), 0.0);
+    }
     // A's entry (i, j) of P A P^T: L's side (values_) of j's supernode where i >= j, U's side
     // (upper_, transposed) of i's where i < j.
     for (Eigen::Index col = 0; col < n_; ++col)
@@ -333,6 +412,7 @@ bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* va
                       j = position_[static_cast<size_t>(col)];
             const int a = std::max(i, j), b = std::min(i, j);
             const size_t s = static_cast<size_t>(super_of_[static_cast<size_t>(b)]);
+            if (!redo_[s]) continue;
             const int* r = row_index_.data() + row_start_[s];
             const int rows = row_start_[s + 1] - row_start_[s];
             const std::ptrdiff_t place = std::lower_bound(r, r + rows, a) - r;
@@ -361,8 +441,15 @@ bool SupernodalCholesky::factor_lu(const SparseMatrix& pattern, const double* va
         lu_targets_[S + s] = upper_.data() + value_start_[s];
     }
     for (size_t s = 0; s < S; ++s) {
+        if (!redo_[s]) {
+            update_ancestors_lu(s, reach_[s], lu_targets_.data(), lu_targets_.data() + S);
+            continue;
+        }
         failed_ = factor_supernode_lu(s, lu_targets_.data(), lu_targets_.data() + S);
-        if (failed_ >= 0) return false;
+        if (failed_ >= 0) {
+            factored_ = Factored::none;
+            return false;
+        }
     }
     return true;
 }
@@ -391,18 +478,27 @@ std::ptrdiff_t SupernodalCholesky::factor_supernode_lu(size_t s, double* const* 
     if (m == 0) return -1;
     k.solve_right(U, columns, rows, L + columns, m, rows);
     k.solve_right(L, columns, rows, U + columns, m, rows);
-    const double* L21 = L + columns;
-    const double* U12t = U + columns;
+    update_ancestors_lu(s, 0, lower, upper);
+    return -1;
+}
+
+// The update's columns from `from` on, made by the same blocks as all of them (the same bits).
+void SupernodalCholesky::update_ancestors_lu(size_t s, std::ptrdiff_t from, double* const* lower,
+                                             double* const* upper) {
+    const std::ptrdiff_t columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
+    const std::ptrdiff_t m = rows - columns;
+    const SupernodalKernels& k = *kernels_;
+    const double* L21 = values_.data() + value_start_[s] + columns;
+    const double* U12t = upper_.data() + value_start_[s] + columns;
     double* C = update_[0].data();
     int* local = local_[0].data();
-    for (std::ptrdiff_t q0 = 0; q0 < m; q0 += update_block) {
+    for (std::ptrdiff_t q0 = from / update_block * update_block; q0 < m; q0 += update_block) {
         const std::ptrdiff_t width = std::min(update_block, m - q0);
         k.product(L21 + q0, rows, U12t + q0, rows, m - q0, width, columns, C, m - q0);
-        scatter(s, q0, q0 + width, C, m - q0, lower, local);
+        scatter(s, q0, q0 + width, C, m - q0, lower, local, false, from);
         k.product(U12t + q0, rows, L21 + q0, rows, m - q0, width, columns, C, m - q0);
-        scatter(s, q0, q0 + width, C, m - q0, upper, local, true);
+        scatter(s, q0, q0 + width, C, m - q0, upper, local, true, from);
     }
-    return -1;
 }
 
 // Right-looking: the diagonal block's Cholesky, the rows below by a triangular solve, their
@@ -413,7 +509,6 @@ std::ptrdiff_t SupernodalCholesky::factor_supernode_lu(size_t s, double* const* 
 std::ptrdiff_t SupernodalCholesky::factor_supernode(size_t s, double* const* targets, int worker,
                                                     const WorkerTeam* team) {
     const std::ptrdiff_t columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
-    const std::ptrdiff_t m = rows - columns;
     double* panel = values_.data() + value_start_[s];
     const SupernodalKernels& k = *kernels_;
     const auto run = [&](std::ptrdiff_t tasks, const auto& task) {
@@ -450,32 +545,49 @@ std::ptrdiff_t SupernodalCholesky::factor_supernode(size_t s, double* const* tar
             });
         }
     }
-    if (m == 0) return -1;
-    const double* L21 = panel + columns;
+    update_ancestors(s, 0, targets, worker, team);
+    return -1;
+}
+
+// C = L21 L21^T's columns from `from` on, subtracted: made by the same blocks as all of them
+// (one SYRK up to update_block rows, else GEMMs of update_block columns), so the same bits.
+void SupernodalCholesky::update_ancestors(size_t s, std::ptrdiff_t from, double* const* targets, int worker,
+                                          const WorkerTeam* team) {
+    const std::ptrdiff_t columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
+    const std::ptrdiff_t m = rows - columns;
+    if (from >= m) return;
+    const SupernodalKernels& k = *kernels_;
+    const double* L21 = values_.data() + value_start_[s] + columns;
     if (m <= update_block) {
         double* C = update_[static_cast<size_t>(worker)].data();
         k.lower_product(L21, rows, m, columns, C, m);
-        scatter(s, 0, m, C, m, targets, local_[static_cast<size_t>(worker)].data());
-        return -1;
+        scatter(s, 0, m, C, m, targets, local_[static_cast<size_t>(worker)].data(), false, from);
+        return;
     }
-    run(blocks(m, update_block), [&](int b, int w) {
-        const std::ptrdiff_t q0 = b * update_block, width = std::min(update_block, m - q0);
+    const std::ptrdiff_t first_block = from / update_block;
+    const auto task = [&](int b, int w) {
+        const std::ptrdiff_t q0 = (first_block + b) * update_block, width = std::min(update_block, m - q0);
         double* C = update_[static_cast<size_t>(w)].data();
         k.product(L21 + q0, rows, L21 + q0, rows, m - q0, width, columns, C, m - q0);
-        scatter(s, q0, q0 + width, C, m - q0, targets, local_[static_cast<size_t>(w)].data());
-    });
-    return -1;
+        scatter(s, q0, q0 + width, C, m - q0, targets, local_[static_cast<size_t>(w)].data(), false, from);
+    };
+    const std::ptrdiff_t tasks = (m + update_block - 1) / update_block - first_block;
+    if (team)
+        team->run(static_cast<int>(tasks), task);
+    else
+        for (std::ptrdiff_t b = 0; b < tasks; ++b) task(static_cast<int>(b), worker);
 }
 
 // Columns [q0, q1) of supernode s's update C (C's rows from q0 on, leading dimension ldc)
 // subtracted from the panels that hold them, grouped by supernode (rows ascending), each group
 // through that supernode's row places.
 void SupernodalCholesky::scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C,
-                                 std::ptrdiff_t ldc, double* const* targets, int* local, bool strict) const {
+                                 std::ptrdiff_t ldc, double* const* targets, int* local, bool strict,
+                                 std::ptrdiff_t from) const {
     const std::ptrdiff_t columns = first_[s + 1] - first_[s];
     const std::ptrdiff_t m = (row_start_[s + 1] - row_start_[s]) - columns;
     const int* r = row_index_.data() + row_start_[s] + columns;
-    std::ptrdiff_t q = q0;
+    std::ptrdiff_t q = std::max(q0, from);
     while (q < q1) {
         const size_t t = static_cast<size_t>(super_of_[static_cast<size_t>(r[q])]);
         const int t_rows = row_start_[t + 1] - row_start_[t];

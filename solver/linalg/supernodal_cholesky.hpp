@@ -8,6 +8,9 @@
 // Written here because CHOLMOD's supernodal module is GPL (docs/decisions.md, "The factor of a
 // 3D body"). It also makes the LU without pivoting of a matrix with the same pattern but values
 // that are not symmetric, on the same supernodes (factor_lu: a held operator's slipping rows).
+// A factorization of the same kind as the last redoes only the supernodes whose values changed
+// and their ancestors, with the same bits as a whole one (docs/decisions.md, "The supernodal
+// factor redoes only what changed").
 #pragma once
 
 #include <Eigen/Dense>
@@ -39,6 +42,8 @@ public:
     // entry (failed_column()). The held operator's slipping rows (linalg/held_operator.hpp).
     bool factor_lu(const SparseMatrix& pattern, const double* values);
     bool lu() const { return lu_; }
+    // The last factorization's flops over a whole one's (1 where it redid all).
+    double refactored_share() const { return refactored_flops_ / flops_; }
     // x = K^-1 b. Allocates nothing once the factor exists.
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
@@ -78,7 +83,19 @@ private:
     std::vector<double> upper_, square_;
     std::vector<double*> lu_targets_;  // each supernode's L panel, then its U panel
     bool lu_ = false;
-    double flops_ = 0, top_flops_ = 0;
+    double flops_ = 0, top_flops_ = 0, refactored_flops_ = 0;
+    // Each supernode's parent (-1 at a root) and flops (its factor and update). What the last
+    // factorization factored (none after a failure), and its input values: a factorization of
+    // the same kind redoes the supernodes those values' changes reach (redo_), and each other
+    // supernode's update of them, from the first of its rows below that lies in one (reach_).
+    std::vector<int> parent_;
+    std::vector<double> own_flops_;
+    enum class Factored { none, cholesky, lu } factored_ = Factored::none;
+    std::vector<double> factored_values_;
+    std::vector<char> redo_;
+    std::vector<std::ptrdiff_t> reach_;
+    bool plan(Factored kind, const SparseMatrix& pattern, const double* values);
+    void clear_redone(std::vector<double>& panels) const;
     const SupernodalKernels* kernels_;
     int threads_ = 1;
     // The groups' supernodes (ascending), and those above them (top_, ascending); each top
@@ -98,11 +115,16 @@ private:
     // run (null: on worker alone). -1, or the failed column.
     std::ptrdiff_t factor_supernode(size_t s, double* const* targets, int worker,
                                     const class WorkerTeam* team);
+    // Its update of the ancestors' panels from row `from` (of those below its columns) on.
+    void update_ancestors(size_t s, std::ptrdiff_t from, double* const* targets, int worker,
+                          const class WorkerTeam* team);
+    void update_ancestors_lu(size_t s, std::ptrdiff_t from, double* const* lower, double* const* upper);
     void divide_among_groups(const std::vector<std::vector<int>>& children,
                              const std::vector<double>& own_flops);
     // strict: C's diagonal left out (the LU's update of U, whose diagonal L's update has made).
+    // from: the first column scattered (C's still starts at q0).
     void scatter(size_t s, std::ptrdiff_t q0, std::ptrdiff_t q1, const double* C, std::ptrdiff_t ldc,
-                 double* const* targets, int* local, bool strict = false) const;
+                 double* const* targets, int* local, bool strict = false, std::ptrdiff_t from = 0) const;
     std::ptrdiff_t factor_supernode_lu(size_t s, double* const* lower, double* const* upper);
 };
 

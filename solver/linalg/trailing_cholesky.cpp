@@ -318,6 +318,10 @@ void TrailingCholesky::factor_supernodal(const SparseMatrix& lower, const char* 
     }
 }
 
+double TrailingCholesky::refactored_share() const {
+    return supernodal_ ? supernodal_->refactored_share() : 1.0;
+}
+
 bool TrailingCholesky::refactor_lu(const SparseMatrix& pattern, const double* values) {
     if constexpr (solid_bodies_built)
         if (supernodal_) return supernodal_->factor_lu(pattern, values);

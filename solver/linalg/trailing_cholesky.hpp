@@ -74,6 +74,9 @@ public:
     // solve() solves A. False where a pivot fails (the factor is then made again by refactor())
     // or where the factor is not our supernodal one.
     bool refactor_lu(const SparseMatrix& pattern, const double* values);
+    // The last factorization's flops over a whole one's: below 1 where the supernodal factor
+    // redid only what changed (1 for the other kernels, which factor whole).
+    double refactored_share() const;
 
     // y = L^-1 P b; the returned view is valid until the next forward() and may be
     // modified in place before backward(). Not for the supernodal LU (throws).

@@ -6,9 +6,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "assembly/discretization.hpp"
+#include "body/stepper.hpp"
+#include "reduced/reduced_stepper.hpp"
 
 namespace bench {
 
@@ -66,6 +69,27 @@ double mean_solve_seconds(Factor& factor, const Eigen::VectorXd& b, Eigen::Vecto
     const auto t = Clock::now();
     for (int k = 0; k < count; ++k) factor.solve(b, x);
     return seconds_since(t) / count;
+}
+
+// A contact path by its name on the command line: sparse, sparse_gcr, condensed, else automatic.
+inline contactbody::Stepper::ContactPath contact_path(const char* name) {
+    using Path = contactbody::Stepper::ContactPath;
+    return std::strcmp(name, "sparse") == 0       ? Path::sparse
+           : std::strcmp(name, "sparse_gcr") == 0 ? Path::sparse_gcr
+           : std::strcmp(name, "condensed") == 0  ? Path::condensed
+                                                  : Path::automatic;
+}
+
+// The full body (modes = 0) on the contact path named, with *stepper set to it, or the reduced
+// body (*stepper null).
+inline std::unique_ptr<contactbody::Body> body_on_path(const contactbody::SceneParameters& p,
+                                                       const char* path, contactbody::Stepper** stepper) {
+    *stepper = nullptr;
+    if (p.modes > 0) return std::make_unique<contactbody::ReducedStepper>(p, p.modes);
+    auto s = std::make_unique<contactbody::Stepper>(p);
+    s->set_contact_path(contact_path(path));
+    *stepper = s.get();
+    return s;
 }
 
 }  // namespace bench

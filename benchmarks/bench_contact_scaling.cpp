@@ -20,7 +20,6 @@
 
 #include "bench_common.hpp"
 #include "linalg/trailing_cholesky.hpp"
-#include "reduced/reduced_stepper.hpp"
 #include "simulation/simulation.hpp"
 
 using namespace contactbody;
@@ -49,23 +48,9 @@ int main(int argc, char** argv) {
     if (argc > 8) p.initial_gap = std::atof(argv[8]);
     const int substeps = argc > 4 ? std::atoi(argv[4]) : 30;
     if (argc > 5) p.friction_coefficient = std::atof(argv[5]);
-    const Stepper::ContactPath path =
-        std::strcmp(argv[3], "sparse") == 0       ? Stepper::ContactPath::sparse
-        : std::strcmp(argv[3], "sparse_gcr") == 0 ? Stepper::ContactPath::sparse_gcr
-        : std::strcmp(argv[3], "condensed") == 0  ? Stepper::ContactPath::condensed
-                                                  : Stepper::ContactPath::automatic;
     auto t0 = Clock::now();
-    std::unique_ptr<Body> body;
     Stepper* stepper = nullptr;
-    if (p.modes == 0) {
-        auto s = std::make_unique<Stepper>(p);
-        s->set_contact_path(path);
-        stepper = s.get();
-        body = std::move(s);
-    } else {
-        body = std::make_unique<ReducedStepper>(p, p.modes);
-    }
-    Simulation sim(std::move(body), top);
+    Simulation sim(body_on_path(p, argv[3], &stepper), top);
     const double start = seconds_since(t0);
     StepInputs in;
     in.foundation_velocity[0] = velocity;

@@ -12,10 +12,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <memory>
 
 #include "bench_common.hpp"
-#include "reduced/reduced_stepper.hpp"
 #include "simulation/simulation.hpp"
 
 using namespace contactbody;
@@ -55,23 +53,10 @@ int main(int argc, char** argv) {
     p.damping_stiffness = 2e-6;
     p.static_initial_state = true;
     const double top = -1e-4, stop = argc > 4 ? std::atof(argv[4]) : 3e-3;
-    const Stepper::ContactPath path =
-        std::strcmp(argv[3], "sparse") == 0       ? Stepper::ContactPath::sparse
-        : std::strcmp(argv[3], "sparse_gcr") == 0 ? Stepper::ContactPath::sparse_gcr
-                                                  : Stepper::ContactPath::automatic;
     double cpu = cpu_seconds();
     auto t0 = Clock::now();
-    std::unique_ptr<Body> body;
     Stepper* stepper = nullptr;
-    if (p.modes == 0) {
-        auto s = std::make_unique<Stepper>(p);
-        s->set_contact_path(path);
-        stepper = s.get();
-        body = std::move(s);
-    } else {
-        body = std::make_unique<ReducedStepper>(p, p.modes);
-    }
-    Simulation sim(std::move(body), top);
+    Simulation sim(body_on_path(p, argv[3], &stepper), top);
     const double setup_seconds = seconds_since(t0), setup_cpu = cpu_seconds() - cpu;
     std::array<Phase, 3> phases{Phase{"straight"}, Phase{"turning"}, Phase{"along z"}};
     const int steps = static_cast<int>(std::lround(stop / interval));
@@ -105,25 +90,27 @@ int main(int argc, char** argv) {
     }
     const Observables& o = sim.observables();
     double run_cpu = 0;
-    std::printf("{\"nodes\": %d, \"contact_nodes\": %d, \"modes\": %d, \"path\": \"%s\", "
-                "\"sparse\": %s, \"setup_seconds\": %.6g, \"setup_cpu_seconds\": %.6g, \"phases\": [",
-                sim.body().discretization().mesh.num_nodes(), sim.body().num_contact_nodes(), p.modes,
-                argv[3], stepper && stepper->sparse_contact() ? "true" : "false", setup_seconds, setup_cpu);
+    std::printf(
+        "{\"nodes\": %d, \"contact_nodes\": %d, \"modes\": %d, \"path\": \"%s\", "
+        "\"sparse\": %s, \"setup_seconds\": %.6g, \"setup_cpu_seconds\": %.6g, \"phases\": [",
+        sim.body().discretization().mesh.num_nodes(), sim.body().num_contact_nodes(), p.modes, argv[3],
+        stepper && stepper->sparse_contact() ? "true" : "false", setup_seconds, setup_cpu);
     for (size_t i = 0; i < phases.size(); ++i) {
         const Phase& f = phases[i];
         run_cpu += f.cpu;
-        std::printf("%s{\"phase\": \"%s\", \"substeps\": %d, \"held_solves\": %ld, "
-                    "\"held_solves_per_substep\": %.4g, \"newton_iterations_per_substep\": %.4g, "
-                    "\"refactorizations\": %ld, \"cpu_seconds\": %.6g, \"cpu_ms_per_substep\": %.4g}",
-                    i ? ", " : "", f.name, f.substeps, f.held_solves,
-                    static_cast<double>(f.held_solves) / f.substeps,
-                    static_cast<double>(f.iterations) / f.substeps, f.refactorizations, f.cpu,
-                    1e3 * f.cpu / f.substeps);
+        std::printf(
+            "%s{\"phase\": \"%s\", \"substeps\": %d, \"held_solves\": %ld, "
+            "\"held_solves_per_substep\": %.4g, \"newton_iterations_per_substep\": %.4g, "
+            "\"refactorizations\": %ld, \"cpu_seconds\": %.6g, \"cpu_ms_per_substep\": %.4g}",
+            i ? ", " : "", f.name, f.substeps, f.held_solves, static_cast<double>(f.held_solves) / f.substeps,
+            static_cast<double>(f.iterations) / f.substeps, f.refactorizations, f.cpu,
+            1e3 * f.cpu / f.substeps);
     }
-    std::printf("], \"run_cpu_seconds\": %.6g, \"cpu_seconds_per_simulated_ms\": %.6g, "
-                "\"max_heading_lag\": %.6g, \"normal_force\": %.17g, \"friction_force\": %.17g, "
-                "\"friction_force_z\": %.17g, \"energy\": %.17g, \"peak_memory_mb\": %.1f}\n",
-                run_cpu, run_cpu / (1e3 * stop), max_heading_lag, o.normal_force, o.friction_force[0],
-                o.friction_force[1], o.energy, peak_rss_mb());
+    std::printf(
+        "], \"run_cpu_seconds\": %.6g, \"cpu_seconds_per_simulated_ms\": %.6g, "
+        "\"max_heading_lag\": %.6g, \"normal_force\": %.17g, \"friction_force\": %.17g, "
+        "\"friction_force_z\": %.17g, \"energy\": %.17g, \"peak_memory_mb\": %.1f}\n",
+        run_cpu, run_cpu / (1e3 * stop), max_heading_lag, o.normal_force, o.friction_force[0],
+        o.friction_force[1], o.energy, peak_rss_mb());
     return 0;
 }

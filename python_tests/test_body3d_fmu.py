@@ -406,6 +406,25 @@ def test_turning_pad_example_measures_what_it_draws(tmp_path):
     assert summary["friction_over_F_normal_at_end"] == pytest.approx(1, abs=1e-2)
 
 
+def test_the_reduced_pad_that_is_slower_than_the_full_one_is_warned_about(tmp_path, unzipped3d):
+    """The turning pad at 4 mm cells (188 contact nodes, 564 contact unknowns): its reduced body
+    of 40 modes took 1.4 times the full body's CPU time in benchmarks/results/turning_pad.md,
+    and the initialization says so, naming modes = 0; the full body is not warned about."""
+    from conftest import fmu_log
+    from contactbody import meshes
+    path = meshes.pad3d(tmp_path / "pad.msh", size=4e-3)
+
+    def warned(modes):
+        error, messages = fmu_log({"mesh": str(path), "modes": modes, "friction_coefficient": 0.5,
+                                   "damping_stiffness": 2e-6}, unzipped3d)
+        assert error is None, error
+        return [m for m in messages if "on a long contact edge" in m]
+    long_edge = warned(40)
+    assert len(long_edge) == 1 and "564 contact unknowns" in long_edge[0], long_edge
+    assert "consider modes = 0" in long_edge[0]
+    assert not warned(0)
+
+
 @pytest.mark.skipif(SANITIZED, reason="dask workers do not load the sanitized FMU (as test_study.py)")
 def test_a_study_runs_on_the_3d_body_with_its_units(tmp_path):
     """contactbody.study on ContactBody3D: two points sliding along x and along z; the z

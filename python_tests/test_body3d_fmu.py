@@ -408,7 +408,7 @@ def test_turning_pad_example_measures_what_it_draws(tmp_path):
 
 def test_the_reduced_pad_that_is_slower_than_the_full_one_is_warned_about(tmp_path, unzipped3d):
     """The turning pad at 4 mm cells (188 contact nodes, 564 contact unknowns): its reduced body
-    of 40 modes took 1.4 times the full body's CPU time in benchmarks/results/turning_pad.md,
+    of 40 modes took 1.15 times the full body's CPU time in benchmarks/results/turning_pad.md,
     and the initialization says so, naming modes = 0; the full body is not warned about."""
     from conftest import fmu_log
     from contactbody import meshes

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -171,6 +173,51 @@ TEST(Body3D, RedistributedMassNeedsFiveCellsAcrossTheBoxHeight) {
             EXPECT_EQ(notes.size(), ny == 4 ? 1u : 0u);
         }
     }
+}
+
+// M_r's positive definiteness is decided by certificates where they can, without a
+// factorization (docs/decisions.md, "M_r's positive definiteness by certificates"). On the
+// consistent mass with each off-diagonal pair changed by a random fraction of itself up to f:
+// below 1/(D+2) it is proved definite, and what the certificates prove or refute at larger f a
+// Cholesky confirms.
+TEST(Body3D, MassDefinitenessCertificatesAgreeWithACholesky) {
+    std::vector<std::string> notes;
+    Box b;
+    b.nx = 3, b.ny = 3, b.nz = 3;
+    const Mesh meshes[] = {read_box(b, notes), make_structured_mesh(0.1, 0.1, 6, 5)};
+    std::srand(7);
+    int proved = 0, refuted = 0, undecided = 0;
+    for (const Mesh& mesh : meshes) {
+        const SparseMatrix consistent = scalar_mass_matrix(mesh, 1000);
+        const double bound = 1.0 / (mesh.dim + 2);
+        for (double f : {0.99 * bound, 0.5, 1.0, 3.0})
+            for (int trial = 0; trial < 20; ++trial) {
+                SparseMatrix m = consistent;
+                double largest = 0;
+                for (int j = 0; j < m.outerSize(); ++j)
+                    for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+                        if (it.row() < j) {
+                            const double change = f * (2.0 * std::rand() / RAND_MAX - 1.0);
+                            largest = std::max(largest, std::abs(change));
+                            it.valueRef() *= 1 + change;
+                            m.coeffRef(j, it.row()) = it.value();
+                        }
+                const MassCertificate c = mass_definiteness_certificate(m, largest, mesh.dim);
+                const bool cholesky = Eigen::SimplicialLLT<SparseMatrix>(m).info() == Eigen::Success;
+                if (f < bound) {
+                    EXPECT_EQ(c, MassCertificate::definite) << "f " << f;
+                }
+                if (c != MassCertificate::undecided) {
+                    EXPECT_EQ(cholesky, c == MassCertificate::definite) << "f " << f << ", dim " << mesh.dim;
+                }
+                proved += c == MassCertificate::definite;
+                refuted += c == MassCertificate::indefinite;
+                undecided += c == MassCertificate::undecided;
+            }
+    }
+    EXPECT_GT(proved, 0);
+    EXPECT_GT(refuted, 0);
+    EXPECT_GT(undecided, 0);
 }
 
 TEST(Body3D, ReadsTetrahedraAndTheContactFaces) {

@@ -305,8 +305,11 @@ Triplets corrected_entries(const Triplets& kept, const std::vector<Point>& p, co
     return corrected;
 }
 
-// Whether the entries (which hold no contact node) are positive definite on the other nodes.
-bool positive_definite_off_contact(const Triplets& entries, const std::vector<char>& is_contact) {
+// Whether the entries (which hold no contact node) are positive definite on the other nodes,
+// changed from the consistent mass's by at most `fraction` of each entry: the certificates
+// where they decide, else a sparse Cholesky.
+bool positive_definite_off_contact(const Triplets& entries, const std::vector<char>& is_contact,
+                                   double fraction, int dim) {
     std::vector<int> position(is_contact.size(), -1);
     int n = 0;
     for (size_t k = 0; k < is_contact.size(); ++k)
@@ -314,7 +317,10 @@ bool positive_definite_off_contact(const Triplets& entries, const std::vector<ch
     Triplets restricted;
     restricted.reserve(entries.size());
     for (const auto& e : entries) restricted.emplace_back(position[e.row()], position[e.col()], e.value());
-    Eigen::SimplicialLLT<SparseMatrix> llt(from_triplets(n, restricted));
+    const SparseMatrix m = from_triplets(n, restricted);
+    const MassCertificate certificate = mass_definiteness_certificate(m, fraction, dim);
+    if (certificate != MassCertificate::undecided) return certificate == MassCertificate::definite;
+    Eigen::SimplicialLLT<SparseMatrix> llt(m);
     return llt.info() == Eigen::Success;
 }
 
@@ -354,14 +360,15 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
     // of ny >= 5, and the paper's: its bits are those before). It spreads its correction over
     // every entry alike, and the small cells of a mesh graded along its contact boundary
     // cannot carry their part; there the least relative change, which changes each entry by a
-    // fraction of itself: the P1 mass is at least a quarter of its lumped form (an element's
-    // is area/12 [2 1 1; 1 2 1; 1 1 2], eigenvalues area/12 {4, 1, 1}), so changes of less than
-    // a quarter of every entry keep it positive definite, whatever the grading.
+    // fraction of itself: the P1 mass is at least 1/(D+2) of its lumped form (a triangle's
+    // is area/12 [2 1 1; 1 2 1; 1 1 2], eigenvalues area/12 {4, 1, 1}; a tetrahedron's 1/5),
+    // so changes of less than that of every entry keep it positive definite, whatever the grading.
     double fraction = 0;
     Triplets corrected = corrected_entries<D>(kept, p, target, false, fraction);
-    if (!positive_definite_off_contact(corrected, is_contact)) {
+    if (!positive_definite_off_contact(corrected, is_contact, fraction, D)) {
         corrected = corrected_entries<D>(kept, p, target, true, fraction);
-        if (!positive_definite_off_contact(corrected, is_contact) && mesh.is_rectangle())
+        const bool definite = positive_definite_off_contact(corrected, is_contact, fraction, D);
+        if (!definite && mesh.is_rectangle())
             throw std::invalid_argument(
                 "mass redistribution: M_r is not positive definite on this mesh (nx = " +
                 std::to_string(mesh.nx) + ", ny = " + std::to_string(mesh.ny) +
@@ -370,7 +377,7 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
                 "3 fails for nx >= 3, every other ny >= 2 is carried (checked up to nx = 1000); a "
                 "larger nx does not help. Use ny = 2, 4 or more, or mass_matrix = 0 or 3 "
                 "(consistent mass)");
-        if (!positive_definite_off_contact(corrected, is_contact)) {
+        if (!definite) {
             Text msg;
             msg << "mass redistribution: " << mesh_name(mesh) << " cannot carry M_r. Removing "
                 << "the contact nodes' normal mass and restoring the "
@@ -391,6 +398,16 @@ SparseMatrix redistributed(const Mesh& mesh, const SparseMatrix& scalar_mass,
 }
 
 }  // namespace
+
+MassCertificate mass_definiteness_certificate(const SparseMatrix& m, double fraction, int dim) {
+    const Eigen::VectorXd diagonal = m.diagonal();
+    if (!(diagonal.array() > 0).all()) return MassCertificate::indefinite;
+    for (int j = 0; j < m.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+            if (it.row() != j && !(it.value() * it.value() < diagonal[it.row()] * diagonal[j]))
+                return MassCertificate::indefinite;
+    return fraction < 1.0 / (dim + 2) ? MassCertificate::definite : MassCertificate::undecided;
+}
 
 SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
                                 std::vector<std::string>& notes) {

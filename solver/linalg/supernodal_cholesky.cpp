@@ -605,32 +605,21 @@ void SupernodalCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) con
     const size_t S = first_.size() - 1;
     Eigen::VectorXd& y = permuted_;
     for (Eigen::Index i = 0; i < n_; ++i) y[position_[static_cast<size_t>(i)]] = b[i];
-    using Panel = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
     for (size_t s = 0; s < S; ++s) {  // L y = P b
         const Eigen::Index columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
         const Eigen::Index m = rows - columns;
-        const Panel panel(values_.data() + value_start_[s], rows, columns, Eigen::OuterStride<>(rows));
-        auto ys = y.segment(first_[s], columns);
-        panel.topRows(columns).triangularView<Eigen::Lower>().solveInPlace(ys);
-        if (m == 0) continue;
-        auto g = gathered_.head(m);
-        g.noalias() = panel.bottomRows(m) * ys;
+        kernels_->forward_panel(values_.data() + value_start_[s], rows, columns, y.data() + first_[s],
+                                gathered_.data());
         const int* r = row_index_.data() + row_start_[s] + columns;
-        for (Eigen::Index p = 0; p < m; ++p) y[r[p]] -= g[p];
+        for (Eigen::Index p = 0; p < m; ++p) y[r[p]] -= gathered_[p];
     }
     const double* back = lu_ ? upper_.data() : values_.data();  // U^T's panels, or L's
     for (size_t s = S; s-- > 0;) {                              // L^T z = y (U z = y)
         const Eigen::Index columns = first_[s + 1] - first_[s], rows = row_start_[s + 1] - row_start_[s];
         const Eigen::Index m = rows - columns;
-        const Panel panel(back + value_start_[s], rows, columns, Eigen::OuterStride<>(rows));
-        auto ys = y.segment(first_[s], columns);
-        if (m > 0) {
-            auto g = gathered_.head(m);
-            const int* r = row_index_.data() + row_start_[s] + columns;
-            for (Eigen::Index p = 0; p < m; ++p) g[p] = y[r[p]];
-            ys.noalias() -= panel.bottomRows(m).transpose() * g;
-        }
-        panel.topRows(columns).triangularView<Eigen::Lower>().adjoint().solveInPlace(ys);
+        const int* r = row_index_.data() + row_start_[s] + columns;
+        for (Eigen::Index p = 0; p < m; ++p) gathered_[p] = y[r[p]];
+        kernels_->backward_panel(back + value_start_[s], rows, columns, y.data() + first_[s], gathered_.data());
     }
     x.resize(n_);
     for (Eigen::Index i = 0; i < n_; ++i) x[i] = y[position_[static_cast<size_t>(i)]];

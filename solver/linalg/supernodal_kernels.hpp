@@ -37,6 +37,11 @@ struct SupernodalKernels {
     void (*subtract_product)(const double* a, std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb,
                              std::ptrdiff_t rows, std::ptrdiff_t cols, std::ptrdiff_t depth, double* c,
                              std::ptrdiff_t ldc);
+    // A supernode's part of a solve with its panel l (rows x n, ld = rows: its n x n lower
+    // block, then the rows below): forward, y <- L^-1 y (n entries), then g = below y
+    // (rows - n entries); backward, y <- L^-T (y - below^T g).
+    void (*forward_panel)(const double* l, std::ptrdiff_t rows, std::ptrdiff_t n, double* y, double* g);
+    void (*backward_panel)(const double* l, std::ptrdiff_t rows, std::ptrdiff_t n, double* y, const double* g);
 };
 
 // The fastest set this CPU runs, or the baseline (baseline true, or no other set built).

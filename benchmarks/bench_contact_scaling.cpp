@@ -5,7 +5,9 @@
 // timed beside the substeps (as many solves after each communication step as it had
 // substeps, so that both see the same machine: the ratio is what this run measured, on a
 // machine whose speed drifts between runs), that factor's flops, nonzeros and kernel, the
-// solve's counts (held solves over the timed substeps too) and the peak memory.
+// solve's counts (held solves over the timed substeps too), what the static start's parts
+// cost (its load path's body, its load paths, their held solves and refactorizations) and the
+// peak memory.
 //   bench_contact_scaling MESH|rect:NX MODES PATH(automatic|condensed|sparse|sparse_gcr) [SUBSTEPS] [F]
 //                         [DIMENSION [TOP [GAP [STEP [SAVE [BETA]]]]]]
 // DIMENSION 3 takes a tetrahedral mesh; TOP is the clamp's displacement (-5e-6 m), GAP the
@@ -105,7 +107,9 @@ int main(int argc, char** argv) {
         "\"held_refactored_work\": %.4g, "
         "\"normal_force\": %.17g, \"kinetic_energy\": %.17g, \"strain_energy\": %.17g, "
         "\"peak_memory_mb\": %.1f, \"factor_flops\": %.6g, \"factor_nonzeros\": %.6g, "
-        "\"factor_kernel\": \"%s\"}\n",
+        "\"factor_kernel\": \"%s\", \"static_start_body_seconds\": %.6g, "
+        "\"static_start_path_seconds\": %.6g, \"static_start_held_solves\": %ld, "
+        "\"static_start_refactorizations\": %ld}\n",
         contact_nodes, static_cast<long>(K.rows()), p.modes, sparse ? "true" : "false", start, substep, solve,
         substep / solve, static_cast<double>(iterations) / (steps * per_step), held_solves,
         held_solves_per_substep, krylov_iterations, gcr_rounds, held_refactorizations, held_refactored_work,
@@ -113,5 +117,7 @@ int main(int argc, char** argv) {
         factor.factor_nonzeros(),
         factor.kernel() == TrailingCholesky::Kernel::supernodal      ? "supernodal"
         : factor.kernel() == TrailingCholesky::Kernel::supernodal_lu ? "supernodal_lu"
-                                                                     : "simplicial");
+                                                                     : "simplicial",
+        sim.static_start_cost().path_body_seconds, sim.static_start_cost().path_seconds,
+        sim.static_start_cost().held_solves, sim.static_start_cost().refactorizations);
 }

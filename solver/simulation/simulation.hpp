@@ -113,6 +113,14 @@ struct StepStatistics {
     int gauss_seidel_sweeps = 0;     // of the contact solver's fallback, summed
 };
 
+// What the static start (initial_state = static) cost: the load path's own body (its
+// discretization), the load paths (their factor and contact solves), and the held solves and
+// refactorizations of the body that ran them (a full one; zero for a reduced body's own).
+struct StaticStartCost {
+    double path_body_seconds = 0, path_seconds = 0;
+    long held_solves = 0, refactorizations = 0;
+};
+
 // The share of E(0) + the work put in that the contact may create before a warning: sound
 // scenes stay below 5e-4 (recommended settings 4e-5), unsound ones pass 0.05 (docs/contract.md).
 constexpr double contact_work_warning = 0.01;
@@ -177,6 +185,7 @@ public:
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
     const StepStatistics& statistics() const { return statistics_; }
+    const StaticStartCost& static_start_cost() const { return static_start_cost_; }
     // The bottom edge after the last step (before the first: the initial static reactions).
     const EdgeSnapshot& edge() const { return edge_; }
     // Warnings since the last call: a scene in a measured unstable region (at construction),
@@ -224,6 +233,7 @@ private:
     double sliding_speed_ = 0;  // |V| at t0: where the warnings evaluate a slip-rate law
     Observables observables_;
     StepStatistics statistics_;
+    StaticStartCost static_start_cost_;
     bool energies_current_ = false;
     Eigen::VectorXd lambda_before_;  // warm start of the substep being tried
     // Multipliers summed over the step's substeps (friction per tangent).

@@ -2,6 +2,7 @@
 #include "simulation/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -113,9 +114,25 @@ void Simulation::static_initial_state(double top, double force) {
     // the midpoint, no damping); else full bodies of the path's own (path_stepper).
     const bool own = flat && body_->modes() == 0 && !contact_at_end_of_step(p.mass_matrix) &&
                      !p.force_control && !p.damped();
+    using Clock = std::chrono::steady_clock;
+    const auto seconds_since = [](Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+    };
+    auto started = Clock::now();
     std::unique_ptr<Stepper> path_body = own ? nullptr : path_stepper(path);
     Body& runs = own ? *body_ : *path_body;
     Stepper* timing = flat ? nullptr : path_body.get();
+    static_start_cost_ = StaticStartCost{};
+    static_start_cost_.path_body_seconds = seconds_since(started);
+    started = Clock::now();
+    // What the load paths cost, once they have run (both ways below).
+    const auto count = [&] {
+        static_start_cost_.path_seconds = seconds_since(started);
+        if (const auto* stepper = dynamic_cast<const Stepper*>(&runs)) {
+            static_start_cost_.held_solves = stepper->sparse_solver().solves();
+            static_start_cost_.refactorizations = stepper->sparse_refactorizations();
+        }
+    };
     // Without friction the static state does not depend on the path (the least energy under
     // the contact): a curved boundary's path is one increment, with its contact at the end of
     // the step, not ten contact solves whose contact sets differ (docs/decisions.md, "The
@@ -125,6 +142,7 @@ void Simulation::static_initial_state(double top, double force) {
         // A top pressed below the gap touches: close the gap rigidly first (above).
         const double start = top < -p.initial_gap ? -p.initial_gap : 0.0;
         state_ = body_->from_full(quasi_static_path(runs, timing, top, start, increments_count));
+        count();
         state_.time = time;
         check_static_balance();
         return;
@@ -188,6 +206,7 @@ void Simulation::static_initial_state(double top, double force) {
             pressing = pressing_force(s);
         }
     }
+    count();
     const double scale = flat ? force / pressing : 1.0;
     State full;
     full.u = scale * s.u;

@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -178,8 +179,8 @@ TEST(Body3D, RedistributedMassNeedsFiveCellsAcrossTheBoxHeight) {
 // M_r's positive definiteness is decided by certificates where they can, without a
 // factorization (docs/decisions.md, "M_r's positive definiteness by certificates"). On the
 // consistent mass with each off-diagonal pair changed by a random fraction of itself up to f:
-// below 1/(D+2) it is proved definite, and what the certificates prove or refute at larger f a
-// Cholesky confirms.
+// below 1/(D+2) it is proved definite, and what the certificates (entries, 2x2 minors, the
+// cells' blocks) prove or refute at larger f a Cholesky confirms.
 TEST(Body3D, MassDefinitenessCertificatesAgreeWithACholesky) {
     std::vector<std::string> notes;
     Box b;
@@ -189,6 +190,11 @@ TEST(Body3D, MassDefinitenessCertificatesAgreeWithACholesky) {
     int proved = 0, refuted = 0, undecided = 0;
     for (const Mesh& mesh : meshes) {
         const SparseMatrix consistent = scalar_mass_matrix(mesh, 1000);
+        std::vector<std::array<int, 4>> cells(mesh.num_cells());
+        for (size_t e = 0; e < cells.size(); ++e) {
+            cells[e].fill(-1);
+            std::copy(mesh.cell(e), mesh.cell(e) + mesh.nodes_per_cell(), cells[e].begin());
+        }
         const double bound = 1.0 / (mesh.dim + 2);
         for (double f : {0.99 * bound, 0.5, 1.0, 3.0})
             for (int trial = 0; trial < 20; ++trial) {
@@ -202,7 +208,7 @@ TEST(Body3D, MassDefinitenessCertificatesAgreeWithACholesky) {
                             it.valueRef() *= 1 + change;
                             m.coeffRef(j, it.row()) = it.value();
                         }
-                const MassCertificate c = mass_definiteness_certificate(m, largest, mesh.dim);
+                const MassCertificate c = mass_definiteness_certificate(m, largest, mesh.dim, cells);
                 const bool cholesky = Eigen::SimplicialLLT<SparseMatrix>(m).info() == Eigen::Success;
                 if (f < bound) {
                     EXPECT_EQ(c, MassCertificate::definite) << "f " << f;

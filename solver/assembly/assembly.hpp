@@ -55,14 +55,16 @@ SparseMatrix scalar_mass_matrix(const Mesh& mesh, double rho);
 SparseMatrix redistributed_mass(const Mesh& mesh, const SparseMatrix& scalar_mass,
                                 std::vector<std::string>& notes);
 
-// What two certificates tell of whether m, a block of the consistent scalar P1 mass of a
+// What certificates tell of whether m, a block of the consistent scalar P1 mass of a
 // dim-dimensional mesh (every entry positive) with each entry changed by at most `fraction` of
 // itself, is positive definite: a diagonal entry or a 2x2 principal minor that is not positive
 // refutes it; fraction < 1/(dim+2) proves it (an element's mass is at least 1/(dim+2) of its
-// lumped form). Else undecided: a factorization decides (docs/decisions.md, "M_r's positive
-// definiteness by certificates").
+// lumped form); a principal submatrix on one of `cells` (up to four of m's indices each, -1
+// where a cell's node is not in m) that is not positive definite refutes it. Else undecided: a
+// factorization decides (docs/decisions.md, "M_r's positive definiteness by certificates").
 enum class MassCertificate { definite, indefinite, undecided };
-MassCertificate mass_definiteness_certificate(const SparseMatrix& m, double fraction, int dim);
+MassCertificate mass_definiteness_certificate(const SparseMatrix& m, double fraction, int dim,
+                                              const std::vector<std::array<int, 4>>& cells = {});
 
 // The moments used by the redistribution: sum m_ij, sum m_ij x_i, sum m_ij y_i (, z_i),
 // then sum m_ij x_i x_j, sum m_ij x_i y_j, ... (each pair of coordinates once): 6 in 2D, 10 in 3D.

@@ -79,7 +79,10 @@ struct TrailingCholesky::Cholmod {
     cholmod_dense *permuted = nullptr, *y = nullptr, *x = nullptr;
     cholmod_dense *work_y = nullptr, *work_e = nullptr;
 
-    Cholmod() { cholmod_start(&common); }
+    Cholmod() {
+        cholmod_start(&common);
+        common.print = 0;  // failures reach the caller as exceptions, never as text on stderr
+    }
     ~Cholmod() {
         for (cholmod_dense** d : {&permuted, &y, &x, &work_y, &work_e}) cholmod_free_dense(d, &common);
         cholmod_free_factor(&factor, &common);

@@ -401,6 +401,50 @@ TEST(SparseContactSolve, UndampedSlidingKeepsItsFactor) {
     EXPECT_LE(a.sparse_refactorizations() - before, 4);
 }
 
+// A hemisphere pressed from rest in one quasi-static load step (a static start's load path):
+// the first iterate pushes twice the contact zone through the foundation, and Newton's
+// patterns shrink to it over several iterations. Solved loosely where the last iteration
+// changed the pattern (ContactSolverOptions::inexact_forcing), they take fewer held solves
+// than solved to the tolerance, to the same solution (docs/decisions.md, "The static start's
+// load path solves its early patterns loosely").
+TEST(SparseContactSolve, ChangingPatternsSolvedLooselyReachTheSameSolution) {
+    SceneParameters p;
+    p.mesh = data("hemisphere_156.msh");
+    p.dimension = 3;
+    p.mass_matrix = MassVariant::standard_implicit_contact;
+    struct Run {
+        State s;
+        SubstepReport report;
+        long solves;
+    };
+    const auto press = [&](Stepper::ContactPath path, double forcing) {
+        Stepper body(p);
+        body.set_contact_path(path);
+        body.contact_options().inexact_forcing = forcing;
+        Run r{body.initial_state(0), {}, 0};
+        r.s.v.setZero();
+        SubstepLoad load;
+        load.top_start = 0;
+        load.top_end = -2e-4;
+        r.report = body.substep(r.s, 1e3, load);
+        r.solves = body.sparse_solver().solves();
+        return r;
+    };
+    const Run loose = press(Stepper::ContactPath::sparse, 0.1);
+    const Run tight = press(Stepper::ContactPath::sparse, 0);
+    const Run condensed = press(Stepper::ContactPath::condensed, 0.1);
+    RecordProperty("held_solves", std::to_string(loose.solves) + " loosely, " + std::to_string(tight.solves) +
+                                      " to the tolerance");
+    EXPECT_GE(tight.report.contact_iterations, 4);
+    EXPECT_LT(loose.solves, tight.solves);
+    for (const Run* r : {&loose, &tight}) {
+        EXPECT_EQ(r->report.active_nodes, condensed.report.active_nodes);
+        EXPECT_NEAR(r->report.normal_force, condensed.report.normal_force, 1e-8 * condensed.report.normal_force);
+        EXPECT_NEAR((r->s.u - condensed.s.u).lpNorm<Eigen::Infinity>(), 0,
+                    1e-8 * condensed.s.u.lpNorm<Eigen::Infinity>());
+    }
+}
+
 // GCR's kept directions outlast a communication step: they go only where a state is saved or
 // restored, which replays the same way (ReplaysBitForBit). Left with the slips (most of its
 // directions), GCR made 571 held solves in the 11 steps with a state saved before each (460 in

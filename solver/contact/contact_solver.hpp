@@ -93,6 +93,12 @@ struct ContactSolverOptions {
     // the full generalized Jacobian, as with two tangents (slower in 2D: docs/decisions.md,
     // "The 2D contact solve's reduced Newton"; benchmarks/reduced_newton.py).
     bool reduced_newton = true;
+    // The sparse solve's inexact Newton: GCR's goal for a pattern that the last iteration
+    // changed is this share of the last residual, at most inexact_cap (relative, as the
+    // tolerance); 0: every pattern to the tolerance (docs/decisions.md, "The static start's
+    // load path solves its early patterns loosely").
+    double inexact_forcing = 0.1;
+    double inexact_cap = 1e-2;
 };
 
 struct ContactSolveInfo {

@@ -94,10 +94,11 @@ struct ContactSolverOptions {
     // "The 2D contact solve's reduced Newton"; benchmarks/reduced_newton.py).
     bool reduced_newton = true;
     // The sparse solve's inexact Newton: GCR's goal for a pattern that the last iteration
-    // changed is this share of the last residual, at most inexact_cap (relative, as the
-    // tolerance); 0: every pattern to the tolerance (docs/decisions.md, "The static start's
-    // load path solves its early patterns loosely").
-    double inexact_forcing = 0.1;
+    // changed is this share of the last residual, at most inexact_cap, halved with each such
+    // pattern (relative, as the tolerance); 0: every pattern to the tolerance. A static
+    // start's load path takes 0.1 (docs/decisions.md, "The static start's load path solves its
+    // early patterns loosely").
+    double inexact_forcing = 0;
     double inexact_cap = 1e-2;
 };
 

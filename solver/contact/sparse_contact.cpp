@@ -686,6 +686,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     // accurate solve of the pattern can end: F = 1.2).
     double linear_tolerance = options.tolerance;
     bool unsettled = false;  // the last iteration changed the pattern
+    double loose_cap = options.inexact_cap;
     for (;;) {
         if (info.iterations >= options.max_iterations) {
             Text msg;
@@ -705,15 +706,16 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                 for (int c = 0; c < 2; ++c) newton_shift_[c * n + i] = ratio_[i] * (q[c] - t[c] * along);
             }
         }
-        // Inexact Newton: a pattern that the last iteration changed is solved loosely (its
-        // solution only tells the next pattern), where the factor holds no slipping rows:
-        // with 2D's, the F = 1.2 rectangle's Newton went to another solution
-        // (docs/decisions.md, "The static start's load path solves its early patterns loosely").
+        // Inexact Newton (options.inexact_forcing): a pattern that the last iteration changed
+        // is solved loosely (its solution only tells the next pattern), ever less so, where
+        // the factor holds no slipping rows: with 2D's, the F = 1.2 rectangle's Newton went
+        // to another solution (docs/decisions.md, "The static start's load path solves its
+        // early patterns loosely").
         const bool loose = unsettled && !K.holds_slips();
         const double goal =
-            loose ? std::max(linear_tolerance,
-                             std::min(options.inexact_cap, options.inexact_forcing * info.residual))
+            loose ? std::max(linear_tolerance, std::min(loose_cap, options.inexact_forcing * info.residual))
                   : linear_tolerance;
+        if (loose) loose_cap *= 0.5;
         solve_pattern(K, p, rhs, lambda_trial_.lpNorm<Eigen::Infinity>(), goal);
         double res = residual(K, p, w_new_, lambda_new_, phi_new_);
         double trial_merit = phi_new_.squaredNorm();

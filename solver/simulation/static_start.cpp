@@ -30,7 +30,10 @@ namespace contactbody {
 // with the contact at the midpoint (`timing`, where given, switches the body's contact to the
 // end of the step for the increments and back for it): that state is in static balance with
 // the substep's multipliers to round-off (A u = B^T lambda, the mass terms 1e-15), its active
-// nodes lie on the foundation, and its friction is within the cone the substep allowed. At
+// nodes lie on the foundation, and its friction is within the cone the substep allowed.
+// Without increments (a frictionless curved boundary: its static state does not depend on the
+// path) that substep alone loads from `start`, to 2 top - start, so that its midpoint's top
+// is `top`. At
 // rest every pressed node sticks: it is marked so, and the stick memory then allows it F_s,
 // at least what it had. The body is left there at rest: the first dynamic substep's solution
 // is w = 0 with these multipliers.
@@ -137,9 +140,10 @@ void Simulation::static_initial_state(double top, double force) {
         }
     };
     // Without friction the static state does not depend on the path (the least energy under
-    // the contact): a curved boundary's path is one increment, with its contact at the end of
-    // the step, not ten contact solves whose contact sets differ (docs/decisions.md, "The
-    // factor of a 3D body"). A flat one keeps its ten (its bits).
+    // the contact): a curved boundary's path is its settling substep alone, not ten contact
+    // solves whose contact sets differ (docs/decisions.md, "The factor of a 3D body" and "The
+    // static start's load path solves its early patterns loosely"). A flat one keeps its ten
+    // (its bits).
     const int increments_count = !flat && !(p.friction_coefficient > 0) ? 0 : 10;
     if (!p.force_control) {
         // A top pressed below the gap touches: close the gap rigidly first (above).

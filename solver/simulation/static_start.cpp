@@ -62,8 +62,9 @@ static State quasi_static_path(Body& path, Stepper* timing, double top, double s
         run(path, start + (top - start) * (k - 1) / increments, start + (top - start) * k / increments);
     const Eigen::VectorXd before = s.u;
     if (timing) timing->set_contact_at_end_of_step(false);
-    // Without increments the final substep loads from `start` itself: its midpoint's top is `top`.
-    run(path, increments > 0 ? top : start, increments > 0 ? top : 2 * top - start);
+    // Its midpoint's top is `top`: held there, or loaded from `start` where no increment ran.
+    const double from = increments > 0 ? top : start;
+    run(path, from, 2 * top - from);
     s.u = 0.5 * (before + s.u);  // u^{k+1/2}
     s.v.setZero();
     const Eigen::Index nc = s.sticking.size();
@@ -82,7 +83,8 @@ static std::unique_ptr<Stepper> path_stepper(SceneParameters p) {
     p.modes = 0;
     p.damping_mass = p.damping_stiffness = 0;
     auto path = std::make_unique<Stepper>(p);
-    path->contact_options().inexact_forcing = 0.1;  // its early patterns loosely (decisions.md)
+    // docs/decisions.md, "The static start's load path solves its early patterns loosely"
+    path->contact_options().inexact_forcing = 0.1;
     return path;
 }
 

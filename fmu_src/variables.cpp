@@ -429,8 +429,8 @@ const std::vector<Variable>& all_rows() {
         SOLID_ROW(integer("baseline_kernels", 39, &Values::baseline_kernels, 0, 0, 1,
                           "Where the body's factor is supernodal (from about 1e9 flops of factorization: "
                           "tetrahedral bodies from about 2.7k nodes), its dense kernels: 0 = the fastest "
-                          "this CPU has (x86-64-v3, AVX2 with FMA, where the CPU reports it; the log names "
-                          "the set), whose last bits depend on the CPU; 1 = the architecture's baseline "
+                          "this CPU has (x86-64-v4 with AVX-512, or x86-64-v3 with AVX2 and FMA, where the CPU "
+                          "reports it; the log names the set), whose last bits depend on the CPU; 1 = the architecture's baseline "
                           "ones, the same bits on every machine of an architecture"))
         SOLID_ROW(integer("threads", 40, &Values::threads, 1, 1, 64,
                           "Threads of a supernodal factor's numeric factorization (see baseline_kernels): "

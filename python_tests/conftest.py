@@ -4,6 +4,7 @@ import atexit
 import ctypes
 import os
 import pathlib
+import platform
 import shutil
 import socket
 import subprocess
@@ -134,6 +135,18 @@ def instance(model_description, unzipped):
     inst = Instance(model_description, unzipped)
     yield inst
     inst.close()
+
+
+def fastest_kernels_of_this_cpu():
+    """The supernodal kernel set an x86_64 binary should pick on this machine (linalg/
+    supernodal_dispatch.cpp), from the flags Linux reports: what the log's `contact solve:` line names."""
+    if platform.machine() != "x86_64":
+        return "baseline"
+    flags = set(next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines()
+                     if line.startswith("flags")).split(":")[1].split())
+    if {"avx2", "fma", "avx512f", "avx512dq", "avx512vl", "avx512bw"} <= flags:
+        return "x86-64-v4 (AVX-512)"
+    return "x86-64-v3 (AVX2, FMA)" if {"avx2", "fma"} <= flags else "baseline"
 
 
 def fmu_log(start_values, unzipped):

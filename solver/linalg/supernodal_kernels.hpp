@@ -1,7 +1,7 @@
 // The supernodal Cholesky's dense kernels (linalg/supernodal_cholesky.hpp), compiled once for
 // each instruction set they may run on, behind plain types: the baseline of the architecture
-// (SSE2 on x86_64, NEON on aarch64), and on x86_64 also x86-64-v3 (AVX2 with FMA). The binary
-// picks one set at run time from what the CPU reports (supernodal_kernels()), through function
+// (SSE2 on x86_64, NEON on aarch64), and on x86_64 also x86-64-v3 (AVX2 with FMA) and x86-64-v4
+// (AVX-512). The binary picks one set at run time from what the CPU reports (supernodal_kernels()), through function
 // pointers chosen once: ELF ifunc and target_clones do not work with MinGW. Each set's Eigen lives
 // in a namespace of its own (its file defines Eigen to another name), so that no inline Eigen
 // function compiled for AVX2 can stand in for the baseline's at link time; no Eigen object
@@ -10,12 +10,13 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace contactbody {
 
 // Column-major blocks: a pointer to the first entry and the leading dimension (ld).
 struct SupernodalKernels {
-    const char* name;  // "baseline" or "x86-64-v3 (AVX2, FMA)"
+    const char* name;  // "baseline", "x86-64-v3 (AVX2, FMA)" or "x86-64-v4 (AVX-512)"
     // The n x n lower block a in place of its Cholesky factor: -1, or the column where it is
     // not positive definite (Eigen's blocked LLT).
     std::ptrdiff_t (*cholesky)(double* a, std::ptrdiff_t n, std::ptrdiff_t ld);
@@ -44,10 +45,13 @@ struct SupernodalKernels {
     void (*backward_panel)(const double* l, std::ptrdiff_t rows, std::ptrdiff_t n, double* y, const double* g);
 };
 
+// The sets built that this CPU runs: the baseline first, the fastest last.
+const std::vector<const SupernodalKernels*>& supernodal_kernel_sets();
 // The fastest set this CPU runs, or the baseline (baseline true, or no other set built).
 const SupernodalKernels& supernodal_kernels(bool baseline = false);
 
 extern const SupernodalKernels supernodal_kernels_baseline;
 extern const SupernodalKernels supernodal_kernels_x86_64_v3;
+extern const SupernodalKernels supernodal_kernels_x86_64_v4;
 
 }  // namespace contactbody

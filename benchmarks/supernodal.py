@@ -12,7 +12,8 @@ what a user would pick instead, CHOLMOD's supernodal Cholesky with OpenBLAS on o
 `apt-get install libsuitesparse-dev libopenblas0-serial`; GPL, so never in an FMU) on the same
 K, in its own order and in ours.
 
-Writes benchmarks/results/supernodal.{json,md}. About four minutes; with --large, twenty.
+Writes benchmarks/results/supernodal.{json,md}. About four minutes; with --large, 32 (2026-12-07).
+--tables writes supernodal.md again from supernodal.json.
 
     .venv/bin/python benchmarks/supernodal.py [--build DIR]
 """
@@ -46,18 +47,34 @@ def openblas_gflops(n=2000, repeats=3):
 
 
 def read_bandwidth(megabytes=800, repeats=3):
-    """Bytes a second that one core reads from memory: numpy's sum over an array far larger than
-    the caches, the best of `repeats`."""
+    """Bytes a second that one core reads from memory: the fastest of numpy's sum, max and dot
+    (OpenBLAS's ddot of the array with itself) over an array far larger than the caches, each
+    the best of `repeats`. sum alone is not a floor: on 2026-12-07's machine its pairwise
+    summation read 8.6 GB/s where max read 14.6 and dot 12.7, and the 111k-node solve streamed
+    its factor at 13.7 (docs/decisions.md, "The supernodal factor on several threads")."""
     a = np.ones(megabytes * 2 ** 20 // 8)
     best = 1e30
-    for _ in range(repeats):
-        tic = time.perf_counter()
-        a.sum()
-        best = min(best, time.perf_counter() - tic)
+    for read in (a.sum, a.max, lambda: a.dot(a)):
+        for _ in range(repeats):
+            tic = time.perf_counter()
+            read()
+            best = min(best, time.perf_counter() - tic)
     return a.nbytes / best
 
 
 OPENBLAS = pathlib.Path("/usr/lib/x86_64-linux-gnu/openblas-serial/libopenblas.so.0")
+
+
+def openblas_core():
+    """The OPENBLAS_CORETYPE CHOLMOD's OpenBLAS runs with: Debian's 0.3.21 takes a CPU newer than
+    it knows for Prescott (SSE3; 2026-12-07's Xeon, family 6 model 207, factored at 10-13 GFlop/s
+    there), so the kernels are named from the CPU's flags: SkylakeX with AVX-512, Haswell with
+    AVX2 and FMA."""
+    flags = set(next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines()
+                     if line.startswith("flags")).split(":")[1].split())
+    if {"avx512f", "avx512dq", "avx512vl", "avx512bw"} <= flags:
+        return "SkylakeX"
+    return "Haswell" if {"avx2", "fma"} <= flags else "Prescott"
 
 
 def build_cholmod(folder):
@@ -76,7 +93,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=str(ROOT / "build"))
     parser.add_argument("--large", action="store_true", help="also the 111k-node hemisphere")
+    parser.add_argument("--tables", action="store_true",
+                        help="only write supernodal.md again from supernodal.json")
     args = parser.parse_args()
+    if args.tables:
+        write_tables(json.loads((OUT / "supernodal.json").read_text())["rows"])
+        return
     program = pathlib.Path(args.build) / "bench_supernodal"
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -103,12 +125,18 @@ def main():
             rows.append({"body": name, "dimension": dim, "openblas_gflops": gemm,
                          "read_bandwidth_gb": bandwidth * 1e-9, **json.loads(out)})
             if dim == 3:
+                core = openblas_core()
                 out = subprocess.run([str(cholmod), prefix + ".mtx", prefix + ".perm", extra[0] if extra else "3"],
-                                     check=True, capture_output=True, text=True).stdout
-                rows[-1]["cholmod_openblas"] = json.loads(out)
+                                     check=True, capture_output=True, text=True,
+                                     env={**os.environ, "OPENBLAS_CORETYPE": core}).stdout
+                rows[-1]["cholmod_openblas"] = {**json.loads(out), "openblas_core": core}
             print(json.dumps(rows[-1]), flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "supernodal.json").write_text(json.dumps({"rows": rows}, indent=1))
+    write_tables(rows)
+
+
+def write_tables(rows):
     lines = ["# The supernodal Cholesky against the body's factor today", "",
              "`benchmarks/supernodal.py`: K = A + 4/dt² M (dt = 1e-6 s) on the free dofs, the "
              "factors in CHOLMOD's fill-reducing order, one process per body; a factorization the "
@@ -118,7 +146,10 @@ def main():
              "numpy's OpenBLAS at n = 2000 on one thread just before. Supernodal: the baseline "
              "kernels / the fastest this CPU has; then the fastest on two threads (this machine's "
              "two cores), whose solution must equal the one thread's bit for bit. Top share: the "
-             "flops of the supernodes above the subtrees that run side by side.", "",
+             "flops of the supernodes above the subtrees that run side by side. Peak MB: the process's "
+             "peak before the supernodal LU of the same K that runs after the Cholesky "
+             "(`cholesky_peak_memory_mb`); in a row without that field (2026-12-07's run and before) the "
+             "whole process's, with that LU's twice as large factor.", "",
              "| body | unknowns | supernodes | factor s: simplicial / LU / supernodal | "
              "supernodal over simplicial / over LU | fast kernels: set, factor s | "
              "GFlop/s: supernodal / fast / Eigen GEMM / OpenBLAS GEMM | "
@@ -149,14 +180,17 @@ def main():
             f"{s['difference']:.1e} / {fast['difference_to_baseline']:.1e} | "
             f"{two['factor_seconds']:.3g}, {fast['factor_seconds'] / two['factor_seconds']:.2f}×, "
             f"{'yes' if two['same_bits_as_one_thread'] else 'NO'} | {two['top_share']:.2f} | "
-            f"{r['peak_memory_mb']:.0f} |")
+            f"{r.get('cholesky_peak_memory_mb', r['peak_memory_mb']):.0f} |")
     lines += ["", "## Against CHOLMOD's supernodal Cholesky with OpenBLAS, and a solve against memory", "",
-              "The same K; CHOLMOD (Debian's libcholmod3 with libopenblas0-serial, one thread) in its "
+              "The same K; CHOLMOD (Debian's libcholmod3 with libopenblas0-serial, one thread; OpenBLAS's "
+              "kernels named by OPENBLAS_CORETYPE from the CPU's flags, `openblas_core`, where a row has "
+              "that field; a row without it ran what OpenBLAS 0.3.21 detected, Prescott (SSE3) on "
+              "2026-12-07's Xeon, which it does not know) in its "
               "own order (its analysis picks it; ours is CHOLMOD's simplicial analysis's order, so the "
               "flops may differ), a factorization the best of three (one at 111k nodes). Ours: the "
               "fastest kernels, one thread and two. A solve streams the factor twice (forward and "
               "backward): its floor is 2 × 8 bytes × nonzeros over the read bandwidth measured just "
-              "before (numpy's sum over 800 MB, one core).", "",
+              "before (the fastest of numpy's sum, max and dot over 800 MB, one core).", "",
               "| body | unknowns | CHOLMOD: analysis s, factor s, GFlop | ours: factor s, GFlop | "
               "ours over CHOLMOD: 1 thread / 2 threads | solve ms: CHOLMOD / ours | "
               "read GB/s | our solve over streaming the factor twice |",

@@ -31,15 +31,12 @@ SCENE = {"friction_coefficient": 0.0, "initial_state": 1, "top_displacement": -2
 
 def run(description, unzipped, start):
     """(set-up s, substep s, the log's kernel set) of one instance."""
-    types = {v.name: (v.type, v.valueReference) for v in description.modelVariables}
     tic = time.perf_counter()
     inst = Instance(description, unzipped, "kernels", logging_on=True)
     try:
         inst.setupExperiment(startTime=0)
         inst.enterInitializationMode()
-        for name, value in start.items():
-            kind, vr = types[name]
-            {"String": inst.setString, "Real": inst.setReal}.get(kind, inst.setInteger)([vr], [value])
+        inst.set_values(start)
         inst.exitInitializationMode()
         setup = time.perf_counter() - tic
         inst.doStep(0, 1e-6)

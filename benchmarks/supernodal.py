@@ -29,6 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 
 from contactbody import meshes
+from contactbody.tools import cpu
 from factor_kernels import HEMISPHERES, RECTANGLES
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -70,11 +71,8 @@ def openblas_core():
     it knows for Prescott (SSE3; 2026-12-07's Xeon, family 6 model 207, factored at 10-13 GFlop/s
     there), so the kernels are named from the CPU's flags: SkylakeX with AVX-512, Haswell with
     AVX2 and FMA."""
-    flags = set(next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines()
-                     if line.startswith("flags")).split(":")[1].split())
-    if {"avx512f", "avx512dq", "avx512vl", "avx512bw"} <= flags:
-        return "SkylakeX"
-    return "Haswell" if {"avx2", "fma"} <= flags else "Prescott"
+    kernels = cpu.fastest_supernodal_kernels()
+    return {"x86-64-v4 (AVX-512)": "SkylakeX", "x86-64-v3 (AVX2, FMA)": "Haswell"}.get(kernels, "Prescott")
 
 
 def build_cholmod(folder):

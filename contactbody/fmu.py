@@ -96,6 +96,7 @@ class Instance:
 
     def __init__(self, model_description, unzipped, name="instance", logging_on=False):
         self.name = f"{name}#{next(_serial)}"
+        self.types = {v.name: (v.type, v.valueReference) for v in model_description.modelVariables}
         self.messages = _messages_by_instance.setdefault(self.name, [])
         self.slave = FMU2Slave(guid=model_description.guid, unzipDirectory=str(unzipped),
                                modelIdentifier=model_description.coSimulation.modelIdentifier,
@@ -110,6 +111,12 @@ class Instance:
 
     def __getattr__(self, name):
         return getattr(self.slave, name)
+
+    def set_values(self, values: dict):
+        """Sets each variable of `values` by name, with the setter of its type."""
+        for name, value in values.items():
+            kind, vr = self.types[name]
+            {"String": self.slave.setString, "Real": self.slave.setReal}.get(kind, self.slave.setInteger)([vr], [value])
 
     def text(self):
         return "\n".join(m[2] for m in self.messages)

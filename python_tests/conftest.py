@@ -4,7 +4,6 @@ import atexit
 import ctypes
 import os
 import pathlib
-import platform
 import shutil
 import socket
 import subprocess
@@ -15,6 +14,7 @@ import fmpy
 import pytest
 
 from contactbody.tools import platforms
+from contactbody.tools.cpu import fastest_supernodal_kernels as fastest_kernels_of_this_cpu  # noqa: F401
 
 # An fmpy FMU2Slave that keeps its log messages in .messages (status, category, text).
 from contactbody.fmu import Instance  # noqa: F401
@@ -137,33 +137,18 @@ def instance(model_description, unzipped):
     inst.close()
 
 
-def fastest_kernels_of_this_cpu():
-    """The supernodal kernel set an x86_64 binary should pick on this machine (linalg/
-    supernodal_dispatch.cpp), from the flags Linux reports: what the log's `contact solve:` line names."""
-    if platform.machine() != "x86_64":
-        return "baseline"
-    flags = set(next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines()
-                     if line.startswith("flags")).split(":")[1].split())
-    if {"avx2", "fma", "avx512f", "avx512dq", "avx512vl", "avx512bw"} <= flags:
-        return "x86-64-v4 (AVX-512)"
-    return "x86-64-v3 (AVX2, FMA)" if {"avx2", "fma"} <= flags else "baseline"
-
-
 def fmu_log(start_values, unzipped):
     """(raised error or None, every log message) of an initialization and a first step with
     these values on the extracted FMU `unzipped` (its own model description), on an instance
     of our own that is freed whatever happens."""
     from fmpy.fmi1 import FMICallException
     description = fmpy.read_model_description(unzipped)
-    types = {v.name: (v.type, v.valueReference) for v in description.modelVariables}
     inst = Instance(description, unzipped, "mesh_log")
     try:
         inst.setDebugLogging(True, [])
         inst.setupExperiment(startTime=0)
         inst.enterInitializationMode()
-        for name, value in start_values.items():
-            kind, vr = types[name]
-            {"String": inst.setString, "Real": inst.setReal}.get(kind, inst.setInteger)([vr], [value])
+        inst.set_values(start_values)
         try:
             inst.exitInitializationMode()
             inst.doStep(0, 1e-5)

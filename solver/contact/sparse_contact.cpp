@@ -711,11 +711,14 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         // the factor holds no slipping rows: with 2D's, the F = 1.2 rectangle's Newton went
         // to another solution (docs/decisions.md, "The static start's load path solves its
         // early patterns loosely").
-        const bool loose = unsettled && !K.holds_slips();
+        const bool loose = options.inexact_forcing > 0 && unsettled && !K.holds_slips();
         const double goal =
             loose ? std::max(linear_tolerance, std::min(loose_cap, options.inexact_forcing * info.residual))
                   : linear_tolerance;
         if (loose) loose_cap *= 0.5;
+        // residual() measures the contact law at the solved iterate, taking its body equation
+        // as exact: a loosely solved one is not, so it never ends the solve.
+        const bool loosely_solved = goal > linear_tolerance;
         solve_pattern(K, p, rhs, lambda_trial_.lpNorm<Eigen::Infinity>(), goal);
         double res = residual(K, p, w_new_, lambda_new_, phi_new_);
         double trial_merit = phi_new_.squaredNorm();
@@ -742,7 +745,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
                 trial_merit = phi_new_.squaredNorm();
             }
         }
-        unsettled = !(trial_pattern_ == pattern_);
+        unsettled = !(trial_pattern_ == pattern_) && !(loosely_solved && res <= options.tolerance);
         if (trial_pattern_ == pattern_ && res > 0.5 * info.residual && info.iterations > 1)
             linear_tolerance = std::max(0.1 * linear_tolerance, 1e-6 * options.tolerance);
         w.swap(w_new_);
@@ -756,7 +759,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
         }
         merit = trial_merit;
         info.residual = res;
-        if (res <= options.tolerance) {
+        if (res <= options.tolerance && !loosely_solved) {
             last_patterns_[2].swap(last_patterns_[1]);
             last_patterns_[1].swap(last_patterns_[0]);
             last_patterns_[0] = pattern_;

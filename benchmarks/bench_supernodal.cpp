@@ -8,7 +8,7 @@
 // With WRITE_K=PREFIX in the environment it also writes K's lower triangle (PREFIX.mtx, Matrix
 // Market) and CHOLMOD's order (PREFIX.perm: factor position -> unknown, a line each) for
 // cholmod_supernodal.c.
-//   bench_supernodal MESH|rect:NX DIMENSION [REPEATS [ONLY]]
+//   bench_supernodal MESH|rect:NX DIMENSION [REPEATS [ONLY]]   (ONLY: supernodal, or fast)
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -32,7 +32,9 @@ int main(int argc, char** argv) {
     const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
     // ONLY = supernodal: the supernodal Cholesky alone (CHOLMOD's order), for bodies where
     // today's factors take tens of minutes.
-    const bool only_supernodal = argc > 4 && std::strcmp(argv[4], "supernodal") == 0;
+    // ONLY = fast: that, and of it the fast kernels on one thread alone (for perf).
+    const bool only_fast = argc > 4 && std::strcmp(argv[4], "fast") == 0;
+    const bool only_supernodal = only_fast || (argc > 4 && std::strcmp(argv[4], "supernodal") == 0);
     const SparseMatrix lower = K.triangularView<Eigen::Lower>();
     const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
     // The machine's dense rate, in this run.
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
     // one thread and on two (whose solution must be the one thread's bit for bit).
     Eigen::VectorXd baseline_x, one_thread_x;
     for (const auto& [baseline, threads] : {std::pair{true, 1}, std::pair{false, 1}, std::pair{false, 2}}) {
+        if (only_fast && (baseline || threads > 1)) continue;
         // Each repeat a factor of its own: a refactorization of the same values redoes nothing
         // (only what changed), so the same object would time no work after the first.
         double analysis = 0, best = 1e30;
@@ -127,7 +130,8 @@ int main(int argc, char** argv) {
         const double solve = mean_solve_seconds(s, b, x, 10);
         if (baseline) baseline_x = x;
         if (!baseline && threads == 1) one_thread_x = x;
-        const Eigen::VectorXd& against = reference_x.size() ? reference_x : baseline_x;
+        const Eigen::VectorXd& against = reference_x.size() ? reference_x : baseline_x.size() ? baseline_x : x;
+        const Eigen::VectorXd& baseline_or_x = baseline_x.size() ? baseline_x : x;
         std::printf(
             ", \"%s\": {\"kernel_set\": \"%s\", \"analysis_seconds\": %.6g, \"factor_seconds\": %.6g, "
             "\"solve_seconds\": %.6g, \"supernodes\": %ld, \"nonzeros\": %.6g, \"flops\": %.6g, "
@@ -139,12 +143,16 @@ int main(int argc, char** argv) {
             s.kernel_set(), analysis, best, solve, static_cast<long>(s.supernodes()), s.factor_nonzeros(),
             s.factor_flops(), s.factor_flops() / best * 1e-9,
             (x - against).lpNorm<Eigen::Infinity>() / against.lpNorm<Eigen::Infinity>(),
-            (x - baseline_x).lpNorm<Eigen::Infinity>() / baseline_x.lpNorm<Eigen::Infinity>(), threads,
+            (x - baseline_or_x).lpNorm<Eigen::Infinity>() / baseline_or_x.lpNorm<Eigen::Infinity>(), threads,
             s.top_share(), 8e-6 * s.buffer_values(),
             threads > 1 ? (x == one_thread_x ? "true" : "false") : "null");
     }
     // The process's peak before the LU below, whose twice as large factor raises it.
     std::printf(", \"cholesky_peak_memory_mb\": %.1f", peak_rss_mb());
+    if (only_fast) {
+        std::printf("}\n");
+        return 0;
+    }
     // The LU without pivoting on the same supernodes (the held operator's slipping rows), of K
     // itself: twice the Cholesky's flops, its solution the Cholesky's to round-off.
     {

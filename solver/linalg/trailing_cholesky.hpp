@@ -61,7 +61,11 @@ public:
     Kernel kernel() const {
         return supernodal_ ? Kernel::supernodal : lu_ ? Kernel::supernodal_lu : Kernel::simplicial;
     }
+#ifdef CONTACTBODY_SUPERNODAL_FLOPS  // a measurement's build (benchmarks/factor_crossover.py)
+    static constexpr double supernodal_flops = CONTACTBODY_SUPERNODAL_FLOPS;
+#else
     static constexpr double supernodal_flops = 1e9;
+#endif
     // The kernel set a supernodal factor would run (linalg/supernodal_kernels.hpp), or null in
     // a build without one (the 2D FMU's binaries).
     static const char* supernodal_kernel_set(bool baseline_kernels);

@@ -427,8 +427,8 @@ const std::vector<Variable>& all_rows() {
                 "with redistributed_both, whose tangential dofs have no mass); by_variant takes the default "
                 "measured for each mass_matrix: tangential_mass for 0, 3 and 4, massless for 1 and 2")),
         SOLID_ROW(integer("baseline_kernels", 39, &Values::baseline_kernels, 0, 0, 1,
-                          "Where the body's factor is supernodal (from about 1e9 flops of factorization: "
-                          "tetrahedral bodies from about 2.7k nodes), its dense kernels: 0 = the fastest "
+                          "Where the body's factor is supernodal (a tetrahedral body's from 1e8 flops of "
+                          "factorization, about a thousand nodes; others' from 1e9), its dense kernels: 0 = the fastest "
                           "this CPU has (x86-64-v4 with AVX-512, or x86-64-v3 with AVX2 and FMA, where the CPU "
                           "reports it; the log names the set), whose last bits depend on the CPU; 1 = the architecture's baseline "
                           "ones, the same bits on every machine of an architecture"))

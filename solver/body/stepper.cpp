@@ -271,8 +271,9 @@ std::string Stepper::summary() const {
     msg << ")";
     // (which factors are supernodal is known once they are made)
     if (const char* kernels = TrailingCholesky::supernodal_kernel_set(params_.baseline_kernels))
-        msg << "; a supernodal factor's kernels (from " << TrailingCholesky::supernodal_flops
-            << " flops of factorization): " << kernels << ", " << params_.threads
+        msg << "; a supernodal factor's kernels (from " << TrailingCholesky::dense_supernodal_flops << " flops at "
+            << TrailingCholesky::dense_flops_per_nonzero << " per factor nonzero, else "
+            << TrailingCholesky::supernodal_flops << " flops of factorization): " << kernels << ", " << params_.threads
             << (params_.threads == 1 ? " thread" : " threads");
     return msg.str();
 }

@@ -205,8 +205,8 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
         c_->check("analysis");
         factor_flops_ = c.fl;
         const Kernel chosen = kernel != Kernel::automatic                               ? kernel
-                              : solid_bodies_built && factor_flops_ >= supernodal_flops ? Kernel::supernodal
-                                                                                        : Kernel::simplicial;
+                              : solid_bodies_built && supernodal_pays(factor_flops_, c.lnz) ? Kernel::supernodal
+                                                                                            : Kernel::simplicial;
         if (chosen == Kernel::supernodal) {
             // (only in builds with solid bodies: the 2D FMU's binaries leave its code out)
             if constexpr (!solid_bodies_built)

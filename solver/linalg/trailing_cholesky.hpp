@@ -61,11 +61,20 @@ public:
     Kernel kernel() const {
         return supernodal_ ? Kernel::supernodal : lu_ ? Kernel::supernodal_lu : Kernel::simplicial;
     }
+    // The rule: supernodal from supernodal_flops, and from dense_supernodal_flops where the
+    // panels are dense (dense_flops_per_nonzero flops per factor nonzero or more: tetrahedral
+    // bodies; docs/decisions.md, "The rule on whole substeps").
 #ifdef CONTACTBODY_SUPERNODAL_FLOPS  // a measurement's build (benchmarks/factor_crossover.py)
     static constexpr double supernodal_flops = CONTACTBODY_SUPERNODAL_FLOPS;
+    static constexpr double dense_supernodal_flops = CONTACTBODY_SUPERNODAL_FLOPS;
 #else
-    static constexpr double supernodal_flops = 1e9;
+    static constexpr double supernodal_flops = 1e9, dense_supernodal_flops = 1e8;
 #endif
+    static constexpr double dense_flops_per_nonzero = 200;
+    static bool supernodal_pays(double flops, double nonzeros) {
+        return flops >= supernodal_flops ||
+               (flops >= dense_supernodal_flops && flops >= dense_flops_per_nonzero * nonzeros);
+    }
     // The kernel set a supernodal factor would run (linalg/supernodal_kernels.hpp), or null in
     // a build without one (the 2D FMU's binaries).
     static const char* supernodal_kernel_set(bool baseline_kernels);

@@ -361,3 +361,22 @@ TEST(SupernodalCholesky, ARefactorizationRedoesOnlyWhatChangedWithTheSameBits) {
         EXPECT_LE((x - expected).lpNorm<Eigen::Infinity>(), 1e-10 * expected.lpNorm<Eigen::Infinity>());
     }
 }
+
+// The rule (TrailingCholesky::supernodal_pays, docs/decisions.md "The rule on whole substeps"):
+// below 1e9 flops the refactorable factor is the supernodal one only where its panels are
+// dense. A 3D grid between 1e8 and 1e9 flops takes it; the 2D rectangle at nx = 160, as many
+// flops on thin panels (where its substeps measured slower), keeps CHOLMOD's simplicial one.
+TEST(SupernodalCholesky, TheRuleTakesTheSupernodalFactorBelow1e9FlopsOnlyOnDensePanels) {
+    const SparseMatrix grid = grid_laplacian(22);
+    const SparseMatrix rectangle = body_matrix(2, 160);
+    for (const auto& [matrix, dense] : {std::pair{&grid, true}, std::pair{&rectangle, false}}) {
+        const TrailingCholesky f(*matrix, {}, true);
+        const double flops = f.factor_flops();
+        SCOPED_TRACE(dense ? "grid" : "rectangle");
+        ASSERT_GE(flops, TrailingCholesky::dense_supernodal_flops);
+        ASSERT_LT(flops, TrailingCholesky::supernodal_flops);
+        RecordProperty(dense ? "grid_flops_per_nonzero" : "rectangle_flops_per_nonzero",
+                       std::to_string(flops / f.factor_nonzeros()));
+        EXPECT_EQ(f.kernel(), dense ? TrailingCholesky::Kernel::supernodal : TrailingCholesky::Kernel::simplicial);
+    }
+}

@@ -365,7 +365,7 @@ TEST(SupernodalCholesky, ARefactorizationRedoesOnlyWhatChangedWithTheSameBits) {
 // The rule (TrailingCholesky::supernodal_pays, docs/decisions.md "The rule on whole substeps"):
 // below 1e9 flops the refactorable factor is the supernodal one only where its panels are
 // dense. A 3D grid between 1e8 and 1e9 flops takes it; the 2D rectangle at nx = 160, as many
-// flops on thin panels (where its substeps measured slower), keeps CHOLMOD's simplicial one.
+// flops on thin panels (on which the 2D pad's substeps measured slower), keeps CHOLMOD's one.
 TEST(SupernodalCholesky, TheRuleTakesTheSupernodalFactorBelow1e9FlopsOnlyOnDensePanels) {
     const SparseMatrix grid = grid_laplacian(22);
     const SparseMatrix rectangle = body_matrix(2, 160);

@@ -195,6 +195,7 @@ std::vector<char> serialize(const FmuState& s) {
         for (signed char x : sim.contact_factorization.pattern) w.value<int8_t>(x);
         w.value<uint64_t>(static_cast<uint64_t>(sim.contact_factorization.slip.size()));
         for (double x : sim.contact_factorization.slip) w.value(x);
+        w.value(sim.controlled_substep);
     }
 
     std::vector<char> out(header_size + w.bytes.size());
@@ -365,6 +366,8 @@ FmuState deserialize(const char* bytes, size_t size) {
         for (size_t k = 0; k < f.slip.size(); ++k)
             if (f.slip[k] != 0 && f.pattern[k % f.pattern.size()] != 3)
                 r.fail("a contact factorization slip at a node that holds none");
+        sim.controlled_substep = r.finite("the controller's substep");
+        if (sim.controlled_substep < 0) r.fail("the controller's substep is negative");
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");
     return s;

@@ -352,6 +352,11 @@ const std::vector<Variable>& all_rows() {
         real("min_internal_step", 17, &Values::min_internal_step, "s", 1e-9, 1e-15, inf,
              "Smallest substep: a substep whose contact solve fails is redone as two halves, recursively, "
              "down to this size (at most 20 halvings)"),
+        real("tolerance", 41, &Values::tolerance, "", 0, 0, 0.5,
+             "Substeps chosen by error: the relative local error of each pair of substeps, estimated by "
+             "step doubling (one substep against two halves) in the energy norm of displacement and "
+             "velocity; internal_step is then the largest substep and min_internal_step the smallest "
+             "half. 0 = fixed substeps of at most internal_step"),
         enumeration(
             "input_interpolation", 18, &Values::input_interpolation, "InputInterpolation", 0,
             "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp "

@@ -36,6 +36,7 @@ struct Values {
     int edge_nodes;  // contact nodes (the rectangle's nx + 1): the size of the FMI 3.0 edge arrays
     double internal_step, contact_tolerance, initial_gap;
     double damping_mass, damping_stiffness, min_internal_step;
+    double tolerance;  // 0: fixed substeps
     int input_interpolation;  // InputInterpolation
     int top_control;          // TopControl
     int initial_state;        // InitialState

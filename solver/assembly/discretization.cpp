@@ -94,6 +94,8 @@ void check_parameters(const SceneParameters& p) {
         reject("ny", ">= 2 for a redistributed mass matrix", p.ny);
     require_positive("internal_step", p.internal_step);
     require_positive("min_internal_step", p.min_internal_step);
+    if (!(p.tolerance >= 0 && p.tolerance <= 0.5))
+        reject("tolerance", "in [0, 0.5] (0: fixed substeps)", p.tolerance);
     if (!(p.contact_tolerance > 0 && p.contact_tolerance < 1))
         reject("contact_tolerance", "in (0, 1)", p.contact_tolerance);
     if (p.force_control) require_positive("top_mass", p.top_mass);

@@ -68,6 +68,9 @@ struct SceneParameters {
     MassVariant mass_matrix = MassVariant::redistributed_normal;
     double internal_step = 4e-6;
     double min_internal_step = 1e-9;  // failed contact solves halve a substep down to this
+    // Substeps chosen by a local error estimate (relative, in the energy norm; 0: fixed substeps
+    // of at most internal_step, the same bits as before it existed): simulation/substep_control.cpp.
+    double tolerance = 0;
     double contact_tolerance = 1e-10;
     double initial_gap = 0;
     // Rayleigh damping C = damping_mass M + damping_stiffness A (M: the variant's mass matrix).
@@ -116,6 +119,7 @@ struct SceneParameters {
         f("mass_matrix", rebuild, p.mass_matrix...);
         f("internal_step", keep, p.internal_step...);  // factors are kept per substep size
         f("min_internal_step", keep, p.min_internal_step...);
+        f("tolerance", keep, p.tolerance...);
         f("contact_tolerance", keep, p.contact_tolerance...);
         f("initial_gap", keep, p.initial_gap...);
         f("damping_mass", rebuild, p.damping_mass...);

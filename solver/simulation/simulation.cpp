@@ -177,10 +177,15 @@ void Simulation::do_step(double h, const StepInputs& in) {
     const Observables saved_observables = observables_;
     edge_sum_N_.setZero();
     for (Eigen::VectorXd& sum : edge_sum_T_) sum.setZero();
+    const bool controlled = body_->parameters().tolerance > 0;
+    const double saved_controlled_substep = controlled_substep_;
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
         if (!body_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
-        for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
+        if (controlled)
+            controlled_substeps(in, n, dt, sums);
+        else
+            for (int k = 0; k < n; ++k) advance(in, k * dt, dt, 1.0, sums);
         state_.time = t0 + h;  // no drift from summing substeps
 
         const double share = mesh.edge_share(0);  // boundary length carried by the corner node
@@ -190,7 +195,8 @@ void Simulation::do_step(double h, const StepInputs& in) {
         avg.corner_friction /= n * share;
         for (double& r : avg.top_reaction) r /= n;
         observables_ = avg;
-        observables_.substeps = n + stats.refinements;  // each halving adds one substep
+        // Each halving adds one substep; the controller counts the substeps its pairs advanced.
+        observables_.substeps = controlled ? stats.substeps : n + stats.refinements;
         observables_.substep_refinements = stats.refinements;
         observables_.contact_iterations = stats.contact_iterations;
         observables_.gauss_seidel_sweeps = stats.gauss_seidel_sweeps;
@@ -198,9 +204,13 @@ void Simulation::do_step(double h, const StepInputs& in) {
         energies_current_ = false;
         check_finite(observables());  // no NaN under fmi2OK: every output, every step
         check_plausible();
-        warn_refinements(stats);
+        if (controlled)
+            warn_unmet_tolerance(stats);
+        else
+            warn_refinements(stats);
     } catch (...) {
         state_ = saved_;
+        controlled_substep_ = saved_controlled_substep;
         body_->forget_kept();  // what the failed step kept is not the saved state's
         works_ = saved_works;
         observables_ = saved_observables;
@@ -245,7 +255,7 @@ double Simulation::energy(const State& s) {
     return kinetic + strain;
 }
 
-void Simulation::advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums) {
+SubstepReport Simulation::solve_substep(const StepInputs& in, double s0, double dt) {
     const double s1 = s0 + dt;
     SubstepLoad load;
     load.top_start = in.top_displacement + in.top_velocity * s0;
@@ -256,11 +266,19 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
             in.foundation_velocity[t] + in.foundation_acceleration[t] * 0.5 * (s0 + s1);
     load.top_force = in.top_force + in.top_force_rate * 0.5 * (s0 + s1);
     lambda_before_ = state_.lambda;
+    try {
+        return body_->substep(state_, dt, load);
+    } catch (const ContactSolveError&) {
+        state_.lambda = lambda_before_;  // the substep changed nothing else
+        throw;
+    }
+}
+
+void Simulation::advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums) {
     SubstepReport r;
     try {
-        r = body_->substep(state_, dt, load);
+        r = solve_substep(in, s0, dt);
     } catch (const ContactSolveError& e) {
-        state_.lambda = lambda_before_;  // the substep changed nothing else
         const double half = 0.5 * dt;
         // At most 20 halvings (a millionth of the substep), whatever min_internal_step says.
         if (half < body_->parameters().min_internal_step || weight < 0x1p-19) fail_contact(e, s0, dt, sums);
@@ -271,6 +289,10 @@ void Simulation::advance(const StepInputs& in, double s0, double dt, double weig
         advance(in, s0 + half, half, 0.5 * weight, sums);
         return;
     }
+    add_substep(r, weight, sums);
+}
+
+void Simulation::add_substep(const SubstepReport& r, double weight, StepSums& sums) {
     works_ += r.work;
     const ContactSnapshot& c = body_->last_contact();
     edge_sum_N_ += weight * c.lambda_N;
@@ -309,6 +331,8 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     const ContactFactorization& f = snapshot.contact_factorization;
     if (!(std::isfinite(f.substep) && f.substep >= 0))
         throw std::invalid_argument("the contact factorization's substep must be finite and >= 0");
+    if (!(std::isfinite(snapshot.controlled_substep) && snapshot.controlled_substep >= 0))
+        throw std::invalid_argument("the controller's substep must be finite and >= 0");
     if (!f.pattern.empty() && f.pattern.size() != static_cast<size_t>(nc))
         throw std::invalid_argument("the contact factorization does not fit this mesh");
     for (signed char x : f.pattern)
@@ -324,6 +348,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     body_->forget_kept();
     body_->set_contact_factorization(f);
     state_ = s;
+    controlled_substep_ = snapshot.controlled_substep;
     works_ = snapshot.works;
     initial_energy_ = snapshot.initial_energy;
     observables_ = snapshot.observables;

@@ -1,6 +1,7 @@
 // Communication steps of the body and its observables (docs/contract.md).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -100,6 +101,7 @@ struct SimulationSnapshot {
     std::vector<double> factor_substeps;         // Stepper::cached_substeps()
     EdgeSnapshot edge;                           // the last step's edge (its x is the mesh's)
     ContactFactorization contact_factorization;  // Body::contact_factorization()
+    double controlled_substep = 0;               // the controller's size (tolerance > 0), 0: none yet
 };
 
 // What the last communication step cost.
@@ -111,6 +113,9 @@ struct StepStatistics {
     int contact_iterations = 0;      // Newton iterations, summed over the substeps
     int max_contact_iterations = 0;  // in one substep
     int gauss_seidel_sweeps = 0;     // of the contact solver's fallback, summed
+    // tolerance > 0: the estimates' coarse substeps solved, and the pairs of halves accepted at
+    // the smallest size with their estimate above the tolerance.
+    int estimate_substeps = 0, unmet_tolerance = 0;
 };
 
 // What the static start (initial_state = static) cost: the load path's own body (its
@@ -151,7 +156,8 @@ public:
 
     // Runs n = ceil(h / internal_step) substeps of size h / n. A substep whose contact solve
     // fails is redone from its start as two halves, recursively down to min_internal_step
-    // (and at most 20 times).
+    // (and at most 20 times). With tolerance > 0 the sizes are the controller's instead
+    // (controlled_substeps).
     // On failure (a contact solve at the smallest size, or a non-finite state or output)
     // the state is restored to the start of the step and NumericalFailure propagates, its
     // message naming the time, the sizes tried, the contact state and what to change.
@@ -180,7 +186,8 @@ public:
                 observables_,
                 body_->cached_substeps(),
                 edge_,
-                body_->contact_factorization()};
+                body_->contact_factorization(),
+                controlled_substep_};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -210,6 +217,33 @@ private:
     // One substep over [s0, s0 + dt] of the step (times from its start), halved on failure;
     // weight = dt / nominal substep (a power of two), for the step averages.
     void advance(const StepInputs& in, double s0, double dt, double weight, StepSums& sums);
+    // One substep of state_ over [s0, s0 + dt]; a ContactSolveError leaves state_ as it was.
+    SubstepReport solve_substep(const StepInputs& in, double s0, double dt);
+    // A solved substep's works, edge sums and averages, weight as advance's.
+    void add_substep(const SubstepReport& r, double weight, StepSums& sums);
+    // tolerance > 0: the n nominal substeps of size dt as the controller's pairs of halves
+    // (simulation/substep_control.cpp; docs/decisions.md "Substeps chosen by a tolerance").
+    void controlled_substeps(const StepInputs& in, int n, double dt, StepSums& sums);
+    // The ladder's sizes are the nominal substep over 2^k; positions count its finest sizes, so
+    // that pairs land on the nominal substeps' ends (and the step's) exactly.
+    struct PairLadder {
+        static constexpr int finest_level = 20;
+        double nominal = 0, tick = 0;
+        int deepest = 0;  // the deepest level: its halves at least min_internal_step
+        std::int64_t ticks(int level) const { return std::int64_t{1} << (finest_level - level); }
+    };
+    struct PairOutcome {  // the last pair accepted: its estimate and level
+        double error;
+        int level;
+    };
+    // A pair at this level from position, refined into two of the next level while its
+    // estimate exceeds the tolerance (down to the deepest level, where it is kept); its
+    // outcome is the last pair accepted.
+    PairOutcome controlled_pair(const StepInputs& in, const PairLadder& ladder, std::int64_t position,
+                                int level, StepSums& sums);
+    // The estimate of a pair: |halves - coarse|_E / (3 max(|halves|_E, |start|_E)).
+    double pair_error();
+    void warn_unmet_tolerance(const StepStatistics& stats);
     [[noreturn]] void fail_contact(const ContactSolveError& e, double s0, double dt,
                                    const StepSums& sums) const;
     void check_finite(const Observables& o) const;  // throws NumericalFailure
@@ -242,6 +276,14 @@ private:
     EdgeSnapshot edge_;
     void update_edge(int substeps);
     double nominal_substep_ = 0;
+    // The controller's coarse substep (its pairs' halves are half of it), kept from step to
+    // step; 0 before its first. Its scratch: the pair's start, coarse end and their difference,
+    // and the sums a rejected pair takes back.
+    double controlled_substep_ = 0;
+    State pair_start_, pair_coarse_, pair_difference_;
+    Works pair_works_;
+    Eigen::VectorXd pair_sum_N_;
+    PerTangent<Eigen::VectorXd> pair_sum_T_;
     std::vector<std::string> warnings_;
     bool contact_work_warned_ = false, travel_warned_ = false;
 };

@@ -1,0 +1,117 @@
+"""Substeps chosen by a tolerance (parameter `tolerance`, docs/contract.md): the pairs of
+substeps keep the energy balance, land on the communication points, follow the tolerance, and a
+saved state carries the controller's size."""
+import numpy as np
+
+from conftest import Instance
+
+H = 1.6e-4  # the communication step: internal_step = H lets the controller span a whole step
+OUT = ["energy", "clamp_work", "normal_contact_work", "friction_work", "damping_work",
+       "foundation_work", "friction_dissipation", "normal_force", "friction_force"]
+SLIDING = {"friction_coefficient": 0.3, "damping_stiffness": 4e-6}
+
+
+def start(md, unzipped, values, name="i"):
+    types = {v.name: v.type for v in md.modelVariables}
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    inst = Instance(md, unzipped, name)
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    for k, v in values.items():
+        (inst.setReal if types[k] == "Real" else inst.setInteger)([vr[k]], [v])
+    inst.exitInitializationMode()
+    return inst
+
+
+def read(inst, vr):
+    return dict(zip(OUT, inst.getReal([vr[n] for n in OUT]))) | dict(zip(
+        ["substeps", "substep_refinements"], inst.getInteger([vr["substeps"], vr["substep_refinements"]])))
+
+
+def run(inst, vr, k0, k1):
+    rows = []
+    for k in range(k0, k1):
+        inst.doStep(k * H, H)
+        rows.append(read(inst, vr))
+    return rows
+
+
+def test_the_controlled_substeps_keep_the_energy_balance(model_description, unzipped, vr):
+    """E - E(0) = clamp + normal contact + friction - damping work to 1e-9 relative, with the
+    controller refining pairs (refinements > 0) and advancing by more substeps than one a step."""
+    inst = start(model_description, unzipped, SLIDING | {"internal_step": H, "tolerance": 1e-3})
+    first = read(inst, vr)
+    rows = run(inst, vr, 0, 8)
+    inst.close()
+    for o in rows:
+        balance = o["clamp_work"] + o["normal_contact_work"] + o["friction_work"] - o["damping_work"]
+        scale = max(abs(o["energy"]), abs(first["energy"]), abs(o["foundation_work"]))
+        assert abs(o["energy"] - first["energy"] - balance) <= 1e-9 * scale
+    assert np.all(np.diff([o["friction_dissipation"] for o in rows]) >= 0)
+    assert sum(o["substep_refinements"] for o in rows) > 0
+    assert all(o["substeps"] >= 2 and o["substeps"] % 2 == 0 for o in rows)
+
+
+def test_the_error_follows_the_tolerance(model_description, unzipped, vr):
+    """Damped sliding over 16 steps: against a run at fixed substeps of 2.5e-7 s, the largest
+    error of the normal force, the friction force and the energy (relative to each one's
+    largest value) falls with the tolerance and stays within 10x of it, and a smaller
+    tolerance takes more substeps."""
+    def series(values):
+        inst = start(model_description, unzipped, SLIDING | values)
+        rows = run(inst, vr, 0, 16)
+        inst.close()
+        return {k: np.array([o[k] for o in rows]) for k in rows[0]}
+
+    reference = series({"internal_step": 2.5e-7})
+
+    def error(s):
+        return max(np.max(np.abs(s[k] - reference[k])) / np.max(np.abs(reference[k]))
+                   for k in ("normal_force", "friction_force", "energy"))
+
+    runs = {tol: series({"internal_step": H, "tolerance": tol}) for tol in (1e-2, 1e-3)}
+    errors = {tol: error(s) for tol, s in runs.items()}
+    assert errors[1e-3] < errors[1e-2] / 2, errors
+    for tol, e in errors.items():
+        assert e <= 10 * tol, errors
+    assert runs[1e-3]["substeps"].sum() > runs[1e-2]["substeps"].sum()
+
+
+def test_a_saved_state_carries_the_controller(model_description, unzipped, vr):
+    """Rollback and replay, and a serialized state restored into another instance, give the
+    same bits: the controller's substep size is part of the state (without it the replay would
+    start from the largest size)."""
+    values = SLIDING | {"internal_step": H, "tolerance": 1e-3}
+    inst = start(model_description, unzipped, values, "uninterrupted")
+    run(inst, vr, 0, 4)
+    saved = inst.getFMUstate()
+    blob = inst.serializeFMUstate(saved)
+    expected = run(inst, vr, 4, 10)
+    inst.setFMUstate(saved)
+    assert run(inst, vr, 4, 10) == expected
+    inst.freeFMUstate(saved)
+    inst.close()
+    fresh = start(model_description, unzipped, values, "fresh")
+    fresh.setFMUstate(fresh.deSerializeFMUstate(blob))
+    assert run(fresh, vr, 4, 10) == expected
+    fresh.close()
+
+
+def test_an_impact_is_refined_and_the_free_flight_is_not(model_description, unzipped, vr):
+    """A free body (force control, no force) falling at 1 m/s onto the foundation from 10 um:
+    in flight the pairs keep the largest size (no refinement, one pair a step), the step with
+    the impact refines; the step's end is the communication point."""
+    values = {"friction_coefficient": 0.0, "foundation_velocity": 0.0, "top_control": 1,
+              "top_force": 0.0, "top_displacement": 0.0, "initial_gap": 1e-5,
+              "initial_velocity_y": -1.0, "internal_step": 4e-6, "tolerance": 1e-4}
+    inst = start(model_description, unzipped, values)
+    h = 4e-6
+    rows, touching = [], []
+    for k in range(10):  # 40 us: the gap closes at 10 us
+        inst.doStep(k * h, h)
+        rows.append(read(inst, vr))
+        touching.append(inst.getInteger([vr["active_contact_nodes"]])[0])
+    inst.close()
+    flight = [o for o, t in zip(rows[:2], touching[:2]) if t == 0]
+    assert flight and all(o["substeps"] == 2 and o["substep_refinements"] == 0 for o in flight)
+    assert max(o["substep_refinements"] for o in rows) > 0

@@ -531,13 +531,14 @@ def test_a_state_whose_factor_holds_sliding_nodes_replays_bit_for_bit(unzipped3d
         inst.doStep(k * h, h)
     state = inst.getFMUstate()
     blob = inst.serializeFMUstate(state)
+    end = len(blob) - 8  # the last field: the controller's substep (tolerance)
     def held_slips(k):  # k doubles at the end after their count, after the nodes' pattern
-        at = len(blob) - 8 * k - 8
+        at = end - 8 * k - 8
         nodes = k // 2
         return (k % 2 == 0 and struct.unpack_from("<Q", blob, at)[0] == k and
                 struct.unpack_from("<Q", blob, at - nodes - 8)[0] == nodes)
     slips = next(k for k in range(2, len(blob) // 8, 2) if held_slips(k))
-    directions = struct.unpack_from(f"<{slips}d", blob, len(blob) - 8 * slips)
+    directions = struct.unpack_from(f"<{slips}d", blob, end - 8 * slips)
     assert sum(x != 0 for x in directions) > 100  # the slipping nodes' directions, x then z
     later = []
     for k in range(3, 6):

@@ -2,10 +2,13 @@
 
 The paper's body (nx = ny = 20, redistributed_normal) over 2.56 ms, outputs every 0.16 ms:
   compressed: F = 0, the top held at -2.5e-5 m (the paper's initial state, undamped);
-  damped sliding: F = 0.3, V = 20 m/s, beta = 4e-6 s.
+  damped sliding: F = 0.3, V = 20 m/s, beta = 4e-6 s;
+  free body: the top a plate of 1 kg/m with no force on it (force control), falling at 1 m/s
+  onto the foundation from 0.1 mm: it hits at 0.1 ms, leaves it at 0.52 ms and flies on,
+  vibrating; and the same with beta = 4e-6 s, whose vibrations decay in flight.
 Fixed substeps of 32 down to 1 us against `tolerance` from 1e-2 down (internal_step = the
 communication step, so that the controller's sizes span it). Error: the largest difference of
-the normal force, the friction force and the energy over the outputs, each relative to its
+the normal force, the friction force, the energy and the top's position over the outputs, each relative to its
 largest value, against fixed substeps of 2.5e-7 s (a sixteenth of the finest fixed one and
 below). Time: fmi2DoStep of one warm instance, best of 2; substeps: those that advanced the
 state (the controller's estimates and rejected pairs cost more, counted as `solved`).
@@ -26,13 +29,17 @@ from contactbody.fmu import Model  # noqa: E402
 
 OUT = ROOT / "benchmarks" / "results"
 STOP, INTERVAL, REFERENCE = 2.56e-3, 1.6e-4, 2.5e-7
+FREE = {"friction_coefficient": 0.0, "foundation_velocity": 0.0, "top_control": 1, "top_force": 0.0,
+        "top_displacement": 0.0, "initial_gap": 1e-4, "initial_velocity_y": -1.0}
 SCENES = {  # the scene's values and its tolerances (1e-5 in sliding took 120 s: not run)
     "compressed, F = 0": ({"friction_coefficient": 0.0}, [1e-2, 1e-3, 1e-4, 1e-5]),
     "damped sliding, F = 0.3, beta = 4e-6 s": (
         {"friction_coefficient": 0.3, "damping_stiffness": 4e-6}, [1e-2, 1e-3, 1e-4]),
+    "free body: falls, hits, flies off": (FREE, [1e-2, 1e-3, 1e-4]),
+    "free body, damped: beta = 4e-6 s": (FREE | {"damping_stiffness": 4e-6}, [1e-2, 1e-3, 1e-4]),
 }
 FIXED = [3.2e-5, 1.6e-5, 8e-6, 4e-6, 2e-6, 1e-6]
-SERIES = ["normal_force", "friction_force", "energy"]
+SERIES = ["normal_force", "friction_force", "energy", "top_position"]
 READ = SERIES + ["substeps", "substep_refinements", "contact_iterations"]
 
 

@@ -354,9 +354,9 @@ const std::vector<Variable>& all_rows() {
              "down to this size (at most 20 halvings)"),
         real("tolerance", 41, &Values::tolerance, "", 0, 0, 0.5,
              "Substeps chosen by error: the relative local error of each pair of substeps, estimated by "
-             "step doubling (one substep against two halves) in the energy norm of displacement and "
-             "velocity; internal_step is then the largest substep and min_internal_step the smallest "
-             "half. 0 = fixed substeps of at most internal_step"),
+             "step doubling (two substeps against four of half their size) in the energy norm of "
+             "displacement and velocity; a pair then spans at most internal_step, and its substeps "
+             "are at least min_internal_step. 0 = fixed substeps of at most internal_step"),
         enumeration(
             "input_interpolation", 18, &Values::input_interpolation, "InputInterpolation", 0,
             "How an input set without a derivative enters the step: hold (its value, FMI 2.0) or ramp "

@@ -101,7 +101,7 @@ struct SimulationSnapshot {
     std::vector<double> factor_substeps;         // Stepper::cached_substeps()
     EdgeSnapshot edge;                           // the last step's edge (its x is the mesh's)
     ContactFactorization contact_factorization;  // Body::contact_factorization()
-    double controlled_substep = 0;               // the controller's size (tolerance > 0), 0: none yet
+    double controlled_substep = 0;               // the controller's pair span (tolerance > 0), 0: none yet
 };
 
 // What the last communication step cost.
@@ -113,8 +113,8 @@ struct StepStatistics {
     int contact_iterations = 0;      // Newton iterations, summed over the substeps
     int max_contact_iterations = 0;  // in one substep
     int gauss_seidel_sweeps = 0;     // of the contact solver's fallback, summed
-    // tolerance > 0: the estimates' coarse substeps solved, and the pairs of halves accepted at
-    // the smallest size with their estimate above the tolerance.
+    // tolerance > 0: the estimates' coarse substeps solved, and the pairs accepted at the
+    // smallest size with their estimate above the tolerance.
     int estimate_substeps = 0, unmet_tolerance = 0;
 };
 
@@ -221,7 +221,7 @@ private:
     SubstepReport solve_substep(const StepInputs& in, double s0, double dt);
     // A solved substep's works, edge sums and averages, weight as advance's.
     void add_substep(const SubstepReport& r, double weight, StepSums& sums);
-    // tolerance > 0: the n nominal substeps of size dt as the controller's pairs of halves
+    // tolerance > 0: the n nominal substeps of size dt as the controller's pairs
     // (simulation/substep_control.cpp; docs/decisions.md "Substeps chosen by a tolerance").
     void controlled_substeps(const StepInputs& in, int n, double dt, StepSums& sums);
     // The ladder's sizes are the nominal substep over 2^k; positions count its finest sizes, so
@@ -229,7 +229,7 @@ private:
     struct PairLadder {
         static constexpr int finest_level = 20;
         double nominal = 0, tick = 0;
-        int deepest = 0;  // the deepest level: its halves at least min_internal_step
+        int deepest = 0;  // the deepest level: its fine substeps at least min_internal_step
         std::int64_t ticks(int level) const { return std::int64_t{1} << (finest_level - level); }
     };
     struct PairOutcome {  // the last pair accepted: its estimate and level
@@ -241,7 +241,7 @@ private:
     // outcome is the last pair accepted.
     PairOutcome controlled_pair(const StepInputs& in, const PairLadder& ladder, std::int64_t position,
                                 int level, StepSums& sums);
-    // The estimate of a pair: |halves - coarse|_E / (3 max(|halves|_E, |start|_E)).
+    // The estimate of a pair: |fine - coarse|_E / (3 max(|fine|_E, |start|_E)).
     double pair_error();
     void warn_unmet_tolerance(const StepStatistics& stats);
     [[noreturn]] void fail_contact(const ContactSolveError& e, double s0, double dt,
@@ -276,11 +276,14 @@ private:
     EdgeSnapshot edge_;
     void update_edge(int substeps);
     double nominal_substep_ = 0;
-    // The controller's coarse substep (its pairs' halves are half of it), kept from step to
-    // step; 0 before its first. Its scratch: the pair's start, coarse end and their difference,
-    // and the sums a rejected pair takes back.
+    // The span of the controller's pairs (two coarse substeps, four fine ones), kept from step
+    // to step; 0 before its first. Its scratch: the pair's start, coarse end and their
+    // difference, and the sums a rejected pair takes back.
     double controlled_substep_ = 0;
     State pair_start_, pair_coarse_, pair_difference_;
+    // E of the next pair's start (the last accepted pair's end, or the step's start): every
+    // pair's scale needs it, and a state's E costs as much as a third of a substep at nx = 20.
+    double pair_start_energy_ = 0, pair_end_energy_ = 0;
     Works pair_works_;
     Eigen::VectorXd pair_sum_N_;
     PerTangent<Eigen::VectorXd> pair_sum_T_;

@@ -102,6 +102,22 @@ def test_steady_sliding_and_free_flight_keep_large_substeps(model_description, u
     assert not warnings, warnings[0]
 
 
+@pytest.mark.parametrize("modes", [0, 40])
+def test_the_static_start_runs_under_the_controller(model_description, unzipped, vr, modes):
+    """initial_state = static builds its load path on a body of its own (the standard variant,
+    fixed substeps): the controller's parameters must not reach it (that body once refused
+    tolerance > 0). Both bodies start and keep the energy balance."""
+    inst = start(model_description, unzipped, SLIDING | {"internal_step": H, "tolerance": 1e-3,
+                                                         "initial_state": 1, "modes": modes})
+    first = read(inst, vr)
+    rows = run(inst, vr, 0, 4)
+    inst.close()
+    o = rows[-1]
+    balance = o["clamp_work"] + o["normal_contact_work"] + o["friction_work"] - o["damping_work"]
+    assert abs(o["energy"] - first["energy"] - balance) <= 1e-9 * max(abs(o["energy"]), abs(o["foundation_work"]))
+    assert all(r["substeps"] >= PAIR for r in rows)
+
+
 def test_the_error_follows_the_tolerance(model_description, unzipped, vr):
     """Damped sliding over 16 steps: against a run at fixed substeps of 2.5e-7 s, the largest
     error of the normal force, the friction force and the energy (relative to each one's

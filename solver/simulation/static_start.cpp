@@ -81,6 +81,7 @@ static State quasi_static_path(Body& path, Stepper* timing, double top, double s
 static std::unique_ptr<Stepper> path_stepper(SceneParameters p) {
     p.mass_matrix = MassVariant::standard;
     p.modes = 0;
+    p.tolerance = 0;  // the path takes its own substeps (and the controller refuses this variant)
     p.damping_mass = p.damping_stiffness = 0;
     auto path = std::make_unique<Stepper>(p);
     // docs/decisions.md, "The static start's load path solves its early patterns loosely"

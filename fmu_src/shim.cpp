@@ -36,7 +36,10 @@ void log_step(Instance* instance, const char* function, Simulation& sim) {
     if (s.refinements > 0) {
         Text msg;
         msg << "step to t = " << sim.time() << ": " << s.refinements
-            << " substeps redone as halves after a failed contact solve (smallest substep "
+            << (sim.body().parameters().tolerance > 0
+                    ? " pairs of substeps redone at half their span, their estimate above tolerance or "
+                      "a contact solve failed (smallest substep "
+                    : " substeps redone as halves after a failed contact solve (smallest substep ")
             << s.smallest_substep << " s)";
         instance->log(Status::ok, LogCategory::events, msg.str());
     }

@@ -196,6 +196,7 @@ std::vector<char> serialize(const FmuState& s) {
         w.value<uint64_t>(static_cast<uint64_t>(sim.contact_factorization.slip.size()));
         for (double x : sim.contact_factorization.slip) w.value(x);
         w.value(sim.controlled_substep);
+        w.value(sim.declined_savings);
     }
 
     std::vector<char> out(header_size + w.bytes.size());
@@ -368,6 +369,8 @@ FmuState deserialize(const char* bytes, size_t size) {
                 r.fail("a contact factorization slip at a node that holds none");
         sim.controlled_substep = r.finite("the controller's substep");
         if (sim.controlled_substep < 0) r.fail("the controller's substep is negative");
+        sim.declined_savings = r.finite("the controller's declined savings");
+        if (sim.declined_savings < 0) r.fail("the controller's declined savings are negative");
     }
     if (!r.at_end()) r.fail("trailing bytes after the state");
     return s;

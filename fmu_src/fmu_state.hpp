@@ -15,7 +15,7 @@ struct FmuState {
     ModelState model;
 };
 
-constexpr unsigned state_format_version = 18;  // 2: String variables, field output; 3: damping,
+constexpr unsigned state_format_version = 19;  // 2: String variables, field output; 3: damping,
                                                // works; 4: cached substep sizes; 5: ramp start; 6: top force;
                                                // 7: sticking nodes; 8: edge history;
                                                // 9: the edge arrays, edge_nodes; 10: the slip-rate law;
@@ -23,7 +23,7 @@ constexpr unsigned state_format_version = 18;  // 2: String variables, field out
 // 13: the reduced body's contact factorization;
 // 14: z outputs and input (ContactBody3D's own magic); 15: baseline_kernels (ContactBody3D);
 // 16: threads (ContactBody3D); 17: the contact factorization's held slips (3D slip directions);
-// 18: tolerance and the controller's substep
+// 18: tolerance and the controller's substep; 19: the controller's declined savings
 
 std::vector<char> serialize(const FmuState& state);
 // Throws ModelError naming the defect: wrong magic or version, truncation, checksum, sizes

@@ -33,6 +33,14 @@ void log_step(Instance* instance, const char* function, Simulation& sim) {
             std::string(sim.body().operator_name()) + " (operator " + std::to_string(factorizations) + ")");
     }
     const StepStatistics& s = sim.statistics();
+    if (s.declined_growths > 0) {
+        Text msg;
+        msg << "step to t = " << sim.time() << ": " << s.declined_growths
+            << " pairs of substeps kept their span where the estimate allowed doubling it: the doubled "
+               "span's step operator costs about "
+            << s.new_operator_solves << " solves, more than the declined doublings have saved so far";
+        instance->log(Status::ok, LogCategory::events, msg.str());
+    }
     if (s.refinements > 0) {
         Text msg;
         msg << "step to t = " << sim.time() << ": " << s.refinements

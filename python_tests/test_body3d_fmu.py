@@ -425,6 +425,37 @@ def test_the_reduced_pad_that_is_slower_than_the_full_one_is_warned_about(tmp_pa
     assert not warned(0)
 
 
+def test_the_controller_weighs_a_new_factorization_before_doubling_its_span(unzipped3d, md3d):
+    """The block falls onto the foundation under tolerance = 1e-2 (decisions.md, "Substeps
+    chosen by a tolerance"). Once the estimate allows doubling the span, the doubled span's
+    factorization (about 30 solves on this block) is not made at once: the log says the pairs
+    kept their span and what the operator costs. After enough declined doublings have forgone
+    that many substeps, the span doubles, and the steps take fewer substeps."""
+    inst = Instance(md3d, unzipped3d, "weigh")
+    inst.setDebugLogging(True, [])
+    vr = {v.name: v.valueReference for v in md3d.modelVariables}
+    inst.setupExperiment(startTime=0)
+    inst.enterInitializationMode()
+    inst.set_values({"friction_coefficient": 0.0, "foundation_velocity": 0.0, "top_control": 1,
+                     "top_force": 0.0, "initial_gap": 1e-4, "initial_velocity_y": -1.0,
+                     "damping_stiffness": 4e-6, "internal_step": H, "tolerance": 1e-2})
+    inst.exitInitializationMode()
+    substeps, kept = [], []
+    for k in range(30):
+        before = len(inst.messages)
+        inst.doStep(k * H, H)
+        substeps.append(inst.getInteger([vr["substeps"]])[0])
+        kept.append(any("kept their span" in m[2] for m in inst.messages[before:]))
+    messages = [m[2] for m in inst.messages if "kept their span" in m[2]]
+    inst.close()
+    assert messages and re.search(r"costs about [0-9.]+ solves", messages[0]), messages
+    cost = float(re.search(r"costs about ([0-9.]+) solves", messages[0]).group(1))
+    assert cost > 6  # more than one declined doubling forgoes
+    first = kept.index(True)
+    assert sum(kept) * 6 >= cost  # declined until the forgone substeps reached the cost
+    assert min(substeps[first + 1:]) < substeps[first], substeps
+
+
 @pytest.mark.skipif(SANITIZED, reason="dask workers do not load the sanitized FMU (as test_study.py)")
 def test_a_study_runs_on_the_3d_body_with_its_units(tmp_path):
     """contactbody.study on ContactBody3D: two points sliding along x and along z; the z
@@ -531,7 +562,7 @@ def test_a_state_whose_factor_holds_sliding_nodes_replays_bit_for_bit(unzipped3d
         inst.doStep(k * h, h)
     state = inst.getFMUstate()
     blob = inst.serializeFMUstate(state)
-    end = len(blob) - 8  # the last field: the controller's substep (tolerance)
+    end = len(blob) - 16  # the last fields: the controller's substep and declined savings
     def held_slips(k):  # k doubles at the end after their count, after the nodes' pattern
         at = end - 8 * k - 8
         nodes = k // 2

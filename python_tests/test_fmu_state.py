@@ -160,14 +160,15 @@ def corruptions(blob, md):
     flipped = bytearray(blob)
     flipped[HEADER + 100] ^= 0x40
     # The last fields: the contact factorization's substep, node pattern and held slips (both
-    # empty here), and the controller's substep (tolerance).
-    factorization = len(blob) - HEADER - 32
-    controller = len(blob) - HEADER - 8
+    # empty here), the controller's substep and its declined savings (tolerance).
+    factorization = len(blob) - HEADER - 40
+    controller = len(blob) - HEADER - 16
+    declined = len(blob) - HEADER - 8
     nodes = struct.unpack_from("<i", blob, HEADER + o["edge_nodes"])[0]
 
     def pattern(states, slips=()):
-        return reseal(blob[:-24] + struct.pack("<Q", len(states)) + bytes(states) +
-                      struct.pack("<Q", len(slips)) + struct.pack(f"<{len(slips)}d", *slips) + blob[-8:])
+        return reseal(blob[:-32] + struct.pack("<Q", len(states)) + bytes(states) +
+                      struct.pack("<Q", len(slips)) + struct.pack(f"<{len(slips)}d", *slips) + blob[-16:])
 
     return {
         "contact factorization slips without its nodes": pattern([], [1.0] * nodes),
@@ -181,12 +182,15 @@ def corruptions(blob, md):
         "contact factorization node state 5": pattern([1] * (nodes - 1) + [5]),
         "controller substep NaN": patch(blob, controller, "<d", float("nan")),
         "controller substep negative": patch(blob, controller, "<d", -1e-6),
+        "controller declined savings NaN": patch(blob, declined, "<d", float("nan")),
+        "controller declined savings negative": patch(blob, declined, "<d", -6.0),
         "empty": b"",
         "one byte": blob[:1],
         "header only, short": blob[:HEADER - 1],
         "header only": blob[:HEADER],
         "wrong magic": b"X" + blob[1:],
-        "version 19": blob[:8] + struct.pack("<I", 19) + blob[12:],
+        "version 20": blob[:8] + struct.pack("<I", 20) + blob[12:],
+        "version 18 (before the controller's declined savings)": blob[:8] + struct.pack("<I", 18) + blob[12:],
         "version 17 (before the controller)": blob[:8] + struct.pack("<I", 17) + blob[12:],
         "version 16 (before the held 3D slips)": blob[:8] + struct.pack("<I", 16) + blob[12:],
         "version 14 (before the 3D model's baseline_kernels)": blob[:8] + struct.pack("<I", 14) + blob[12:],

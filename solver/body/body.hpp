@@ -80,6 +80,9 @@ public:
     virtual std::vector<double> cached_substeps() const = 0;
     virtual void set_cached_substeps(const std::vector<double>& sizes) = 0;
     virtual size_t operator_cache_size() const = 0;
+    // What a step operator of a new substep size costs, in solves with the current one (its
+    // factorization's flops over a solve's); 0 where it is cheap (the reduced body's).
+    virtual double new_operator_in_solves() const { return 0; }
     virtual int factorizations() const = 0;  // step operators built over the body's life
     virtual ContactSolverOptions& contact_options() = 0;
     virtual const ContactSolver& contact_solver() const = 0;  // its counters, for profiles

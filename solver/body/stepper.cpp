@@ -224,6 +224,13 @@ Stepper::Factor& Stepper::factor_for(double dt) {
     return *cache_[0];
 }
 
+double Stepper::new_operator_in_solves() const {
+    const Factor* f = cache_[0].get();
+    if (!f) return 0;
+    if (f->held) return f->held->refactorization_in_solves();
+    return f->cholesky->factor_flops() / (4 * f->cholesky->factor_nonzeros());
+}
+
 void Stepper::keep_spare(std::unique_ptr<Factor> f) {
     spare_.insert(spare_.begin(), std::move(f));
     if (spare_.size() > spare_capacity) spare_.pop_back();

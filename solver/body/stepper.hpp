@@ -245,6 +245,7 @@ public:
     void set_cached_substeps(const std::vector<double>& sizes) override;
     static constexpr size_t factor_cache_size = 2;
     size_t operator_cache_size() const override { return factor_cache_size; }
+    double new_operator_in_solves() const override;
     int factorizations() const override { return factorizations_; }  // over the stepper's life
     const char* operator_name() const override { return "factorized 4/dt^2 M + A"; }
     // Which contact solve the factors carry: automatic takes the measured cost model

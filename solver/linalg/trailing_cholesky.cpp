@@ -231,6 +231,7 @@ TrailingCholesky::TrailingCholesky(const SparseMatrix& K, const std::vector<int>
     } else {
         c_->factor = analyze_given(a, *best, c);
         c_->check("analysis");
+        factor_flops_ = c.fl;
         cholmod_factorize(&a, c_->factor, &c);
         const int* given = static_cast<const int*>(c_->factor->Perm);
         perm_.assign(given, given + n);

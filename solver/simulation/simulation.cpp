@@ -178,7 +178,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     edge_sum_N_.setZero();
     for (Eigen::VectorXd& sum : edge_sum_T_) sum.setZero();
     const bool controlled = body_->parameters().tolerance > 0;
-    const double saved_controlled_substep = controlled_substep_;
+    const double saved_controlled_substep = controlled_substep_, saved_declined = declined_savings_;
     try {
         // Held inputs may have jumped since the last step: the clamp moves with them.
         if (!body_->parameters().force_control) move_clamp(in.top_displacement, in.top_velocity);
@@ -211,6 +211,7 @@ void Simulation::do_step(double h, const StepInputs& in) {
     } catch (...) {
         state_ = saved_;
         controlled_substep_ = saved_controlled_substep;
+        declined_savings_ = saved_declined;
         body_->forget_kept();  // what the failed step kept is not the saved state's
         works_ = saved_works;
         observables_ = saved_observables;
@@ -333,6 +334,8 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
         throw std::invalid_argument("the contact factorization's substep must be finite and >= 0");
     if (!(std::isfinite(snapshot.controlled_substep) && snapshot.controlled_substep >= 0))
         throw std::invalid_argument("the controller's substep must be finite and >= 0");
+    if (!(std::isfinite(snapshot.declined_savings) && snapshot.declined_savings >= 0))
+        throw std::invalid_argument("the controller's declined savings must be finite and >= 0");
     if (!f.pattern.empty() && f.pattern.size() != static_cast<size_t>(nc))
         throw std::invalid_argument("the contact factorization does not fit this mesh");
     for (signed char x : f.pattern)
@@ -349,6 +352,7 @@ void Simulation::restore(const SimulationSnapshot& snapshot) {
     body_->set_contact_factorization(f);
     state_ = s;
     controlled_substep_ = snapshot.controlled_substep;
+    declined_savings_ = snapshot.declined_savings;
     works_ = snapshot.works;
     initial_energy_ = snapshot.initial_energy;
     observables_ = snapshot.observables;

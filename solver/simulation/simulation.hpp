@@ -102,6 +102,7 @@ struct SimulationSnapshot {
     EdgeSnapshot edge;                           // the last step's edge (its x is the mesh's)
     ContactFactorization contact_factorization;  // Body::contact_factorization()
     double controlled_substep = 0;               // the controller's pair span (tolerance > 0), 0: none yet
+    double declined_savings = 0;                 // substeps its declined doublings forwent
 };
 
 // What the last communication step cost.
@@ -116,6 +117,11 @@ struct StepStatistics {
     // tolerance > 0: the estimates' coarse substeps solved, and the pairs accepted at the
     // smallest size with their estimate above the tolerance.
     int estimate_substeps = 0, unmet_tolerance = 0;
+    // Pairs whose estimate allowed a doubled span that was not taken yet: its new step
+    // operator costs more solves (new_operator_solves) than the declined doublings have
+    // forgone so far (Simulation::declined_savings_).
+    int declined_growths = 0;
+    double new_operator_solves = 0;
 };
 
 // What the static start (initial_state = static) cost: the load path's own body (its
@@ -187,7 +193,8 @@ public:
                 body_->cached_substeps(),
                 edge_,
                 body_->contact_factorization(),
-                controlled_substep_};
+                controlled_substep_,
+                declined_savings_};
     }
     // Throws std::invalid_argument if the snapshot does not fit this discretization.
     void restore(const SimulationSnapshot& snapshot);
@@ -280,6 +287,9 @@ private:
     // to step; 0 before its first. Its scratch: the pair's start, coarse end and their
     // difference, and the sums a rejected pair takes back.
     double controlled_substep_ = 0;
+    // The substeps the doublings declined at this span have forgone (substep_control.cpp); 0
+    // after a change of span.
+    double declined_savings_ = 0;
     State pair_start_, pair_coarse_, pair_difference_;
     // E of the next pair's start (the last accepted pair's end, or the step's start): every
     // pair's scale needs it, and a state's E costs as much as a third of a substep at nx = 20.

@@ -22,6 +22,7 @@ constexpr double grow_below = 1.0 / 16;
 // Coarse substeps a pair takes (fine ones: twice as many, each half as long); the fine
 // substeps are nominal / 2^(level + pair_levels).
 constexpr int pair_substeps = 2, pair_levels = 2;
+constexpr double solved_per_pair = 3 * pair_substeps;  // coarse and fine
 }  // namespace
 
 double Simulation::pair_error() {
@@ -115,9 +116,25 @@ void Simulation::controlled_substeps(const StepInputs& in, int n, double dt, Ste
         position += ladder.ticks(level);
         // The next pair at the last accepted one's size, doubled where its estimate leaves room
         // (and the double lands on the ladder).
+        if (last.level != level) declined_savings_ = 0;
         level = last.level;
-        if (last.error <= grow_below * p.tolerance && level > 0 && position % ladder.ticks(level - 1) == 0)
-            --level;
+        if (last.error <= grow_below * p.tolerance && level > 0 && position % ladder.ticks(level - 1) == 0) {
+            // The doubled span brings in a coarse substep of this span: on a large body a new
+            // factorization. It is taken once the doublings declined at this span have forgone
+            // as many substeps as it costs solves (each forgoes a pair's: the two pairs to the
+            // next chance solve twice what one doubled pair does), as one rents skis until the
+            // rent reaches the price. Whether a factor of that size is kept is not asked: a
+            // restored state must choose the same (the sum is part of it).
+            const double cost = body_->new_operator_in_solves();
+            if (declined_savings_ >= cost) {
+                --level;
+                declined_savings_ = 0;
+            } else {
+                declined_savings_ += solved_per_pair;
+                ++sums.stats.declined_growths;
+                sums.stats.new_operator_solves = cost;
+            }
+        }
     }
     controlled_substep_ = std::ldexp(dt, -level);
 }

@@ -15,12 +15,12 @@ namespace contactbody {
 
 namespace {
 // The midpoint scheme is of order 2: the fine substeps' error is their difference to the coarse
-// substep over 2^2 - 1, and doubling the size multiplies a pair's estimate by about 8.
+// ones over 2^2 - 1, and doubling the span multiplies a smooth pair's estimate by about 8.
 constexpr double richardson_divisor = 3;
 // A pair grows its size where 8 times its estimate stays below half the tolerance.
 constexpr double grow_below = 1.0 / 16;
 // Coarse substeps a pair takes (fine ones: twice as many, each half as long); the fine
-// substeps are nominal / 2^(level + pair_levels).
+// substeps are nominal / 2^(level + pair_levels), pair_levels = log2(2 pair_substeps).
 constexpr int pair_substeps = 2, pair_levels = 2;
 constexpr double solved_per_pair = 3 * pair_substeps;  // coarse and fine
 }  // namespace

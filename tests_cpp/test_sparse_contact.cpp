@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -477,4 +478,51 @@ TEST(SparseContactSolve, KeptDirectionsOutlastCommunicationSteps) {
     EXPECT_LT(2 * kept.krylov, dropped.krylov);
     EXPECT_LE((kept.lambda - dropped.lambda).cwiseAbs().maxCoeff(),
               10 * SceneParameters{}.contact_tolerance * dropped.lambda.cwiseAbs().maxCoeff());
+}
+
+// On a supernodal factor of options.wide_span_nonzeros nonzeros or more GCR keeps up to
+// wide_span_directions directions instead of max_directions, so that once they span the
+// slipping nodes' unknowns a Newton iteration needs few held solves, and their images are
+// orthonormalized all at once in the factor's dense kernels (orthonormalize_all;
+// docs/decisions.md, "GCR's kept directions span the slips"). Undamped sliding on the 156-node
+// hemisphere, whose slips have a rho above max_held_ratio (GCR's), its factor made supernodal:
+// the same normal force and energies as with max_directions, in fewer held solves.
+TEST(SparseContactSolve, AWideSpanOfKeptDirectionsSolvesTheSlipsInFewerHeldSolves) {
+    SceneParameters p;
+    p.mesh = data("hemisphere_156.msh");
+    p.dimension = 3;
+    p.friction_coefficient = 0.3;
+    p.internal_step = 1e-6;
+    p.static_initial_state = true;
+    const double top = -2e-4;
+    struct Run {
+        long solves;
+        Observables observables;
+    };
+    const auto slide = [&](double wide_span_nonzeros) {
+        auto owned = stepper_on(p, Stepper::ContactPath::automatic);
+        owned->set_supernodal_factor(true);
+        owned->contact_options().wide_span_nonzeros = wide_span_nonzeros;
+        Stepper& body = *owned;
+        Simulation sim(std::move(owned), top);
+        StepInputs in;
+        in.foundation_velocity[0] = 20;
+        in.top_displacement = top;
+        sim.do_step(1e-5, in);  // the start of sliding
+        const long before = body.sparse_solver().solves();
+        for (int k = 0; k < 6; ++k) sim.do_step(1e-5, in);
+        EXPECT_TRUE(body.sparse_contact());
+        EXPECT_EQ(body.last_factor().kernel(), TrailingCholesky::Kernel::supernodal);
+        return Run{body.sparse_solver().solves() - before, sim.observables()};
+    };
+    const Run wide = slide(0), narrow = slide(std::numeric_limits<double>::infinity());
+    RecordProperty("held_solves", std::to_string(wide.solves) + " with the wide span, " +
+                                      std::to_string(narrow.solves) + " with max_directions");
+    EXPECT_GT(narrow.observables.normal_force, 0);
+    EXPECT_NEAR(wide.observables.normal_force, narrow.observables.normal_force,
+                1e-8 * narrow.observables.normal_force);
+    const double energy = std::abs(narrow.observables.energy);
+    EXPECT_NEAR(wide.observables.energy, narrow.observables.energy, 1e-9 * energy);
+    EXPECT_NEAR(wide.observables.friction_dissipation, narrow.observables.friction_dissipation, 1e-9 * energy);
+    EXPECT_LT(3 * wide.solves, 2 * narrow.solves);
 }

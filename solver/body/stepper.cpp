@@ -370,6 +370,11 @@ void Stepper::set_contact_path(ContactPath path) {
     problem_factor_ = 0;
 }
 
+void Stepper::set_supernodal_factor(bool supernodal) {
+    supernodal_factor_ = supernodal;
+    set_contact_path(contact_path_);  // the factors made again
+}
+
 std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
     const bool sparse = wants_sparse();
     for (auto it = spare_.begin(); it != spare_.end(); ++it) {
@@ -397,7 +402,7 @@ std::unique_ptr<Stepper::Factor> Stepper::make_factor(double dt) {
         const int per_node = held_unknowns_per_node(params_.friction_coefficient);
         contact_dofs.resize(static_cast<size_t>(per_node * nc));
         f->held = std::make_unique<HeldOperator>(K, contact_dofs, per_node,
-                                                 FactorOptions{params_.baseline_kernels, params_.threads});
+                                                 FactorOptions{params_.baseline_kernels, params_.threads, supernodal_factor_});
         f->held->set_slip_coefficient(slip_coefficient());
         return f;
     }

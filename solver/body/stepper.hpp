@@ -258,6 +258,8 @@ public:
     // friction left to GCR: the solve before the factor held them; benchmarks compare).
     enum class ContactPath { automatic, condensed, sparse, sparse_gcr };
     void set_contact_path(ContactPath path);
+    // Tests: the sparse solve's factor is the supernodal one whatever its flops.
+    void set_supernodal_factor(bool supernodal);
     // Whether the last substep's factor solves the contact on the sparse system.
     bool sparse_contact() const;
     // The cost model: the sparse solve where the condensed one's dense work per substep,
@@ -302,6 +304,7 @@ private:
     ContactSolver solver_;
     SparseContactSolver sparse_solver_;
     ContactPath contact_path_ = ContactPath::automatic;
+    bool supernodal_factor_ = false;
     bool wants_sparse() const;
     ContactProblem problem_;
     // Most recent first: masters alternate step sizes. Two, as before refinement existed: which

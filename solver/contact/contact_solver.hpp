@@ -100,6 +100,12 @@ struct ContactSolverOptions {
     // early patterns loosely").
     double inexact_forcing = 0;
     double inexact_cap = 1e-2;
+    // The sparse solve keeps up to SparseContactSolver::wide_span_directions GCR directions
+    // (else max_directions) on a supernodal factor of this many nonzeros or more, where a solve
+    // costs more than the dense algebra on them. A static start's load path takes none: its
+    // growing contact set refactors before a wide span pays (docs/decisions.md, "GCR's kept
+    // directions span the slips").
+    double wide_span_nonzeros = 4e6;
 };
 
 struct ContactSolveInfo {

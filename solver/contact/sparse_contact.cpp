@@ -7,6 +7,7 @@
 
 #include "contact/friction_law.hpp"
 #include "linalg/pattern_lu.hpp"
+#include "linalg/supernodal_kernels.hpp"
 #include "linalg/trailing_cholesky.hpp"
 #include "util/build_features.hpp"
 #include "util/text.hpp"
@@ -100,7 +101,7 @@ void SparseContactSolver::held_set(const ContactProblem& p, const HeldOperator& 
         Eigen::Index held = 0;
         for (Eigen::Index i = 0; i < n; ++i)
             held += holds_slip(slip_, static_cast<size_t>(i), static_cast<size_t>(n));
-        if (tangents * held <= max_directions) std::fill(slip_.begin(), slip_.end(), 0.0);
+        if (tangents * held <= std::max(max_directions, kept_capacity_ / 2)) std::fill(slip_.begin(), slip_.end(), 0.0);
     }
 }
 
@@ -281,20 +282,61 @@ bool SparseContactSolver::orthonormalize(int slot, Eigen::Index q, double depend
 // responses (the pattern or the coefficients changed) and orthonormalized, those that depend
 // on the others dropped.
 void SparseContactSolver::remake_images(const HeldOperator& K, const ContactProblem& p, int first) {
-    const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
+    const Eigen::Index q = static_cast<Eigen::Index>(coupling_.size());
     int kept = 0;
-    for (int j = first; j < kept_; ++j) {
+    for (int j = first; j < kept_; ++j, ++kept)
+        if (j != kept) move_direction(j, kept);
+    kept_ = kept;
+    make_images(K, p);
+    if (const SupernodalKernels* kernels = K.dense_kernels(); kernels && orthonormalize_all(*kernels, q)) return;
+    make_images(K, p);  // one by one (what orthonormalize_all may have begun on is made again)
+    kept = 0;
+    for (int j = 0; j < kept_; ++j) {
         if (kept != j) {
-            directions_.col(kept) = directions_.col(j);
-            responses_.col(kept) = responses_.col(j);
-            solutions_.col(kept) = solutions_.col(j);
-            solution_size_[kept] = solution_size_[j];
+            move_direction(j, kept);
+            images_.col(kept).head(q) = images_.col(j).head(q);
         }
-        coupled_responses(kept, n, response_.head(3 * q));
-        equations(K, p, response_.head(3 * q), true, images_.col(kept).head(q));
-        if (orthonormalize(kept, q, 1e-10)) ++kept;  // else dependent on the others now: dropped
+        if (orthonormalize(kept, q, 1e-10)) ++kept;
     }
     kept_ = kept;
+}
+
+void SparseContactSolver::make_images(const HeldOperator& K, const ContactProblem& p) {
+    const Eigen::Index n = p.gap_limit.size(), q = static_cast<Eigen::Index>(coupling_.size());
+    for (int j = 0; j < kept_; ++j) {
+        coupled_responses(j, n, response_.head(3 * q));
+        equations(K, p, response_.head(3 * q), true, images_.col(j).head(q));
+    }
+}
+
+// The kept images orthonormalized all at once, by the Cholesky QR twice (images = Q R, the
+// Gram matrix's Cholesky factor R^T, so that Q = images R^-1 and the combinations are R^-1) in
+// the factor's dense kernels: the same orthonormal images as Gram-Schmidt's, at the speed of
+// matrix products (docs/decisions.md, "GCR's kept directions span the slips"). False, the
+// images left to Gram-Schmidt, where some image is near the others' span (its part outside
+// it below 1e-6 of it: there the Gram matrix loses the digits that Gram-Schmidt keeps).
+bool SparseContactSolver::orthonormalize_all(const SupernodalKernels& kernels, Eigen::Index q) {
+    const Eigen::Index k = kept_, ld = images_.rows();
+    if (k == 0) return true;
+    if (k > q) return false;
+    // Compact k x q and k x k blocks in workspace sized once (solve).
+    Eigen::Map<Eigen::MatrixXd> transposed(transposed_.data(), k, q);
+    Eigen::Map<Eigen::MatrixXd> factors[2] = {{gram_first_.data(), k, k}, {gram_second_.data(), k, k}};
+    for (int pass = 0; pass < 2; ++pass) {
+        Eigen::Map<Eigen::MatrixXd>& l = factors[pass];
+        transposed = images_.topLeftCorner(q, k).transpose();
+        kernels.lower_product(transposed.data(), k, k, q, l.data(), k);
+        if (pass == 0)
+            for (Eigen::Index j = 0; j < k; ++j) image_norm_[j] = std::sqrt(l(j, j));
+        if (kernels.cholesky(l.data(), k, k) >= 0) return false;
+        for (Eigen::Index j = 0; j < k && pass == 0; ++j)
+            if (!(l(j, j) > 1e-6 * image_norm_[j])) return false;
+        kernels.solve_right(l.data(), k, k, images_.data(), q, ld);
+    }
+    auto t = combinations_.topLeftCorner(k, k);
+    t.setIdentity();
+    for (const auto& l : factors) kernels.solve_right(l.data(), k, k, t.data(), k, combinations_.rows());
+    return true;
 }
 
 // xi += the kept directions combined by coefficients_ (over the directions as made), and with
@@ -363,7 +405,7 @@ void SparseContactSolver::eliminate_uncoupled() {
             solution_size_[j] += std::abs(f) * solution_size_[pivot];
             directions_(u, j) = 0;
         }
-        const int slot = max_directions - parked_ - 1;
+        const int slot = kept_capacity_ - parked_ - 1;
         if (slot >= kept_) {  // else no room: dropped
             move_direction(pivot, slot);
             ++parked_;
@@ -375,7 +417,7 @@ void SparseContactSolver::eliminate_uncoupled() {
 // The parked directions without an entry at an uncoupled unknown, back among the kept ones.
 void SparseContactSolver::unpark() {
     const Eigen::Index m = directions_.rows();
-    for (int slot = max_directions - parked_; slot < max_directions;) {
+    for (int slot = kept_capacity_ - parked_; slot < kept_capacity_;) {
         bool valid = true;
         for (Eigen::Index u = 0; u < m && valid; ++u)
             valid = directions_(u, slot) == 0 || coupling_of_[static_cast<size_t>(u)] >= 0;
@@ -384,7 +426,7 @@ void SparseContactSolver::unpark() {
             continue;
         }
         move_direction(slot, kept_++);
-        const int first = max_directions - parked_--;  // the parked slots stay together
+        const int first = kept_capacity_ - parked_--;  // the parked slots stay together
         if (slot != first)
             move_direction(first, slot);
         else
@@ -541,11 +583,11 @@ bool SparseContactSolver::solve_coupled(HeldOperator& K, const ContactProblem& p
                         << " N/m left)";
                     throw ContactSolveError(msg.str());
                 }
-                if (kept_ + parked_ == max_directions && parked_ > 0) {
+                if (kept_ + parked_ == kept_capacity_ && parked_ > 0) {
                     parked_ = 0;                       // the parked ones go first
-                } else if (kept_ == max_directions) {  // the older half goes (the rest orthonormalized again)
+                } else if (kept_ == kept_capacity_) {  // the older half goes (the rest orthonormalized again)
                     add_directions(q, true);
-                    remake_images(K, p, max_directions / 2);
+                    remake_images(K, p, kept_capacity_ / 2);
                 }
                 const int slot = kept_;
                 auto v = direction_coupled_.head(q);
@@ -628,17 +670,28 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
     direction_coupled_.resize(m2);
-    if (solutions_.rows() != nf) {  // another body size: the kept directions are not its
-        solutions_.resize(nf, max_directions);
+    // GCR's kept directions: enough to span a large body's slips, where its solves cost more
+    // than the dense algebra on them (docs/decisions.md, "GCR's kept directions span the slips").
+    const int capacity = K.dense_kernels() && K.factor_nonzeros() >= options.wide_span_nonzeros
+                             ? wide_span_directions
+                             : max_directions;
+    if (solutions_.rows() != nf || capacity != kept_capacity_) {  // another body size: the kept directions are not its
+        kept_capacity_ = capacity;
+        solutions_.resize(nf, kept_capacity_);
+        images_.resize(0, 0);
         kept_ = parked_ = 0;
     }
     if (images_.rows() != m2) {
-        responses_.resize(2 * m2, max_directions);
-        solution_size_.resize(max_directions);
-        images_.resize(m2, max_directions);
-        directions_.resize(m2, max_directions);
-        combinations_.setZero(max_directions, max_directions);
-        coefficients_.setZero(max_directions);
+        responses_.resize(2 * m2, kept_capacity_);
+        solution_size_.resize(kept_capacity_);
+        image_norm_.resize(kept_capacity_);
+        transposed_.resize(kept_capacity_, m2);
+        gram_first_.resize(kept_capacity_, kept_capacity_);
+        gram_second_.resize(kept_capacity_, kept_capacity_);
+        images_.resize(m2, kept_capacity_);
+        directions_.resize(m2, kept_capacity_);
+        combinations_.setZero(kept_capacity_, kept_capacity_);
+        coefficients_.setZero(kept_capacity_);
         kept_ = parked_ = 0;
     }
     // The first pattern from the State: the last substep's pressed nodes, sticking where its

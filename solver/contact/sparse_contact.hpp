@@ -39,6 +39,8 @@
 
 namespace contactbody {
 
+struct SupernodalKernels;
+
 class SparseContactSolver {
 public:
     // Solves K w = rhs + B^T lambda with the contact conditions of `problem` (its gap limits,
@@ -69,6 +71,11 @@ public:
     long warm_starts() const { return warm_starts_; }  // Newton iterations without a held solve of their own
 
     static constexpr int max_directions = 96;  // GCR's kept directions, and its iterations
+    // GCR's kept directions on a supernodal factor of options.wide_span_nonzeros or more:
+    // there a solve costs more than orthonormalizing this many images again at each Newton
+    // iteration (orthonormalize_all), and they span most of a 3D contact zone's slips
+    // (docs/decisions.md, "GCR's kept directions span the slips").
+    static constexpr int wide_span_directions = 768;
     // More dofs differing from the factor's held set than this: refactor to the pattern's,
     // unless the factor holds nothing and a refactorization costs more than max_directions
     // held solves: then the pattern is tried on the factor first, until such detours have
@@ -126,6 +133,8 @@ private:
                    Eigen::Ref<Eigen::VectorXd> e) const;
     bool orthonormalize(int slot, Eigen::Index q, double dependent);
     void remake_images(const HeldOperator& K, const ContactProblem& p, int first);
+    void make_images(const HeldOperator& K, const ContactProblem& p);
+    bool orthonormalize_all(const SupernodalKernels& kernels, Eigen::Index q);
     void add_directions(Eigen::Index q, bool solutions);
     void coupled_responses(int slot, Eigen::Index n, Eigen::Ref<Eigen::VectorXd> out) const;
     void eliminate_uncoupled();
@@ -154,6 +163,10 @@ private:
     // pattern and coefficients, and which combination of the directions each one's is
     // (combinations_: upper triangular). coefficients_: GCR's step in the directions as made.
     Eigen::MatrixXd directions_, images_, responses_, combinations_;
+    // orthonormalize_all's: the images transposed, the two Gram matrices' Cholesky factors,
+    // the images' norms.
+    Eigen::MatrixXd transposed_, gram_first_, gram_second_;
+    Eigen::VectorXd image_norm_;
     // The directions' held solves (n_f each), so that the solution after GCR is their
     // combination, not one more held solve; their sizes (max norms, bounds after
     // elimination) and the sizes combined into w_new_ since it was last solved.
@@ -162,6 +175,7 @@ private:
     double combined_ = 0;
     Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
+    int kept_capacity_ = 0;
     int kept_ = 0, parked_ = 0;     // parked_: eliminate_uncoupled's, in the last slots
     Pattern kept_pattern_;
     std::vector<int> kept_unknowns_;  // the coupled unknowns the images are of

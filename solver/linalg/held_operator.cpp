@@ -4,13 +4,15 @@
 #include <stdexcept>
 
 #include "linalg/pattern_lu.hpp"
+#include "linalg/supernodal_kernels.hpp"
 #include "linalg/trailing_cholesky.hpp"
+#include "util/build_features.hpp"
 
 namespace contactbody {
 
 HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs, int unknowns_per_node,
                            FactorOptions options)
-    : K_(K), dofs_(std::move(contact_dofs)) {
+    : K_(K), dofs_(std::move(contact_dofs)), baseline_kernels_(options.baseline_kernels) {
     K_.makeCompressed();
     lower_ = K_.triangularView<Eigen::Lower>();
     lower_.makeCompressed();
@@ -42,7 +44,9 @@ HeldOperator::HeldOperator(const SparseMatrix& K, std::vector<int> contact_dofs,
     rows_.resize(m, nf);
     rows_.setFromTriplets(entries.begin(), entries.end());
     factor_ = std::make_unique<TrailingCholesky>(K_, std::vector<int>{}, true,
-                                                 TrailingCholesky::Kernel::automatic, options);
+                                                 options.supernodal ? TrailingCholesky::Kernel::supernodal
+                                                                     : TrailingCholesky::Kernel::automatic,
+                                                 options);
     held_.assign(static_cast<size_t>(m), 0);
     held_dof_.assign(static_cast<size_t>(nf), 0);
     // For slipping rows: each contact unknown's row entries in K_ (by symmetry, its column's
@@ -192,6 +196,12 @@ void HeldOperator::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
         lu_->solve(b, x);
     else
         factor_->solve(b, x);
+}
+
+const SupernodalKernels* HeldOperator::dense_kernels() const {
+    if constexpr (solid_bodies_built)
+        if (factor_->kernel() == TrailingCholesky::Kernel::supernodal) return &supernodal_kernels(baseline_kernels_);
+    return nullptr;
 }
 
 }  // namespace contactbody

@@ -14,6 +14,7 @@ namespace contactbody {
 
 class TrailingCholesky;
 class PatternLu;
+struct SupernodalKernels;
 
 // K on the free dofs for one substep size, with a set of contact unknowns held.
 class HeldOperator {
@@ -68,6 +69,10 @@ public:
     // 4 per nonzero of L (forward and backward).
     double refactorization_in_solves() const;
     TrailingCholesky& factor() { return *factor_; }
+    // The dense kernels of its supernodal factor (the set its options choose), or null where
+    // the factor is another (a build without solid bodies has none): what the contact solve's
+    // dense algebra on the same body may run.
+    const SupernodalKernels* dense_kernels() const;
 
 private:
     SparseMatrix K_;                   // both triangles: the held columns' entries
@@ -90,6 +95,7 @@ private:
     bool lu_held_ = false, slips_allowed_ = false;
     double slip_coefficient_ = 0;
     int tangents_ = 1;
+    bool baseline_kernels_ = false;
     std::vector<double> slip_;
     std::vector<double> lu_values_;
     std::vector<std::vector<int>> row_positions_;

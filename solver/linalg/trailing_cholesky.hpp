@@ -24,6 +24,7 @@ class SupernodalCholesky;
 struct FactorOptions {
     bool baseline_kernels = false;
     int threads = 1;
+    bool supernodal = false;  // tests: a refactorable factor is the supernodal one whatever its flops
 };
 
 class TrailingCholesky {

@@ -86,6 +86,7 @@ static std::unique_ptr<Stepper> path_stepper(SceneParameters p) {
     auto path = std::make_unique<Stepper>(p);
     // docs/decisions.md, "The static start's load path solves its early patterns loosely"
     path->contact_options().inexact_forcing = 0.1;
+    path->contact_options().wide_span_nonzeros = std::numeric_limits<double>::infinity();
     return path;
 }
 

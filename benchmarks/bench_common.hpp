@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -71,7 +72,9 @@ double mean_solve_seconds(Factor& factor, const Eigen::VectorXd& b, Eigen::Vecto
     return seconds_since(t) / count;
 }
 
-// A contact path by its name on the command line: sparse, sparse_gcr, condensed, else automatic.
+// A contact path by its name on the command line: sparse, sparse_gcr, condensed, else automatic
+// (automatic_narrow: automatic with GCR's kept directions at max_directions on every factor,
+// the solve before the wide span; body_on_path).
 inline contactbody::Stepper::ContactPath contact_path(const char* name) {
     using Path = contactbody::Stepper::ContactPath;
     return std::strcmp(name, "sparse") == 0       ? Path::sparse
@@ -88,6 +91,8 @@ inline std::unique_ptr<contactbody::Body> body_on_path(const contactbody::SceneP
     if (p.modes > 0) return std::make_unique<contactbody::ReducedStepper>(p, p.modes);
     auto s = std::make_unique<contactbody::Stepper>(p);
     s->set_contact_path(contact_path(path));
+    if (std::strcmp(path, "automatic_narrow") == 0)
+        s->contact_options().wide_span_nonzeros = std::numeric_limits<double>::infinity();
     *stepper = s.get();
     return s;
 }

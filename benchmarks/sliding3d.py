@@ -4,13 +4,16 @@ F = 0.3, 1e-6 s substeps, the static start under -0.2 mm, then the foundation at
 (beta = 4e-6 s) and undamped (beta = 0, the FMU's default: rho reaches 0.26 there, so that
 fewer slips are held; on the 2.7k-node mesh only: at 12.6k nodes an undamped substep took
 8.7 s in a run of 20, docs/decisions.md). Each mesh and damping runs
-build/bench_contact_scaling twice, one process each:
+build/bench_contact_scaling once for each solve, one process each:
 
 * "in the factor": the FMU's contact solve (automatic): a slipping node's tangential rows
   K_j - F t_j K_y held in the factor (an LU on the Cholesky's supernodes) along its slip
   direction t, GCR taking the directions' drift;
 * "by GCR": the contact path sparse_gcr, the solve before issue 71 (the factor holds the
   normal dofs; every slip law is GCR's).
+* "in the factor, 96 kept directions" (12.6k nodes only, whose factor has 4e6 nonzeros or
+  more): the FMU's solve with GCR's kept directions at max_directions, the solve before they
+  span the slips (docs/decisions.md, "GCR's kept directions span the slips").
 
 For each: the set-up (discretization, factors, the static start with friction), the held
 solves a substep (exact counts), Newton iterations, wall time a substep, the refactorizations
@@ -35,7 +38,9 @@ from contactbody import meshes
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results"
 MESHES = [(5e-4, 1e-2), (2.5e-4, 1e-2)]  # contact and far element sizes (cost3d.py's)
-SOLVES = {"in the factor": "automatic", "by GCR": "sparse_gcr"}
+SOLVES = {"in the factor": "automatic", "by GCR": "sparse_gcr",
+          "in the factor, 96 kept directions": "automatic_narrow"}
+NARROW_MESHES = (1,)  # where the wide span of kept directions applies (factor nonzeros >= 4e6)
 DAMPINGS = {"": 4e-6, ", undamped": 0.0}  # the rows' slips label: its suffix, and beta [s]
 UNDAMPED_MESHES = (0,)  # indices into MESHES
 
@@ -79,6 +84,8 @@ def main():
                 if beta == 0 and index not in UNDAMPED_MESHES:
                     continue
                 for slips, contact_path in SOLVES.items():
+                    if contact_path == "automatic_narrow" and index not in NARROW_MESHES:
+                        continue
                     case = subprocess.run([str(program), str(path), "0", contact_path, str(count), "0.3", "3",
                                            "-2e-4", "0", "1e-5", "0", str(beta)], check=True,
                                           capture_output=True, text=True).stdout
@@ -115,7 +122,8 @@ def write(rows, factors, out):
              "foundation at 20 m/s; the substeps timed follow a first communication step of 10. "
              "*In the factor*: the FMU's contact solve, the slipping rows held in the factor's LU "
              "along their slip directions; *by GCR*: every slip law left to GCR (the contact path "
-             "`sparse_gcr`, the solve before). Held solves are exact counts; the refactored share is "
+             "`sparse_gcr`, the solve before); *96 kept directions* (12.6k nodes): the FMU's solve with "
+             "GCR keeping 96 directions, as before they spanned the slips. Held solves are exact counts; the refactored share is "
              "the refactorizations' flops over as many whole factorizations'; times are wall "
              "times of one process each, in one run.", "",
              "| nodes | contact nodes | slips | substeps | held solves / substep | Newton iterations / substep | substep [ms] | one solve [ms] | refactorizations | refactored share | static start [s] | substep speed-up | normal force difference |",

@@ -73,8 +73,9 @@ double mean_solve_seconds(Factor& factor, const Eigen::VectorXd& b, Eigen::Vecto
 }
 
 // A contact path by its name on the command line: sparse, sparse_gcr, condensed, else automatic
-// (automatic_narrow: automatic with GCR's kept directions at max_directions on every factor,
-// the solve before the wide span; body_on_path).
+// (body_on_path: automatic_narrow, automatic with GCR's kept directions at max_directions on
+// every factor, the solve before the wide span; automatic_supernodal, with the supernodal factor
+// whatever its flops; automatic_wide, that and the wide span on it).
 inline contactbody::Stepper::ContactPath contact_path(const char* name) {
     using Path = contactbody::Stepper::ContactPath;
     return std::strcmp(name, "sparse") == 0       ? Path::sparse
@@ -93,6 +94,11 @@ inline std::unique_ptr<contactbody::Body> body_on_path(const contactbody::SceneP
     s->set_contact_path(contact_path(path));
     if (std::strcmp(path, "automatic_narrow") == 0)
         s->contact_options().wide_span_nonzeros = std::numeric_limits<double>::infinity();
+    if (std::strcmp(path, "automatic_supernodal") == 0) s->set_supernodal_factor(true);
+    if (std::strcmp(path, "automatic_wide") == 0) {
+        s->contact_options().wide_span_nonzeros = 0;
+        s->set_supernodal_factor(true);
+    }
     *stepper = s.get();
     return s;
 }

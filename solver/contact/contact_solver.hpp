@@ -106,6 +106,12 @@ struct ContactSolverOptions {
     // growing contact set refactors before a wide span pays (docs/decisions.md, "GCR's kept
     // directions span the slips").
     double wide_span_nonzeros = 4e6;
+    // The sparse solve refactors to a pattern that differs from its factor's held set in more
+    // dofs than this, unless the factor holds nothing and a refactorization costs more than
+    // max_directions held solves: then the pattern is tried on the factor first, until such
+    // detours have cost a refactorization (SparseContactSolver::solve_pattern). A static start's
+    // load path takes 1024 (docs/decisions.md, "The static start with friction, traced").
+    int max_differing = 64;
 };
 
 struct ContactSolveInfo {

@@ -210,7 +210,7 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // (a contact set still growing: a static start's load increments) asks for no held slips:
     // it is refactored as the Cholesky, at half the LU's cost, and its slips are GCR's, until
     // the set settles.
-    if (isotropic(p) && differing > max_differing) std::fill(slip_.begin(), slip_.end(), 0.0);
+    if (isotropic(p) && differing > max_differing_) std::fill(slip_.begin(), slip_.end(), 0.0);
     for (Eigen::Index i = 0; i < n && !slip_.empty(); ++i)
         differing += slip_differs(slip_, K.slip(), static_cast<size_t>(i), static_cast<size_t>(n));
     // A pattern that differs from the factor's held set in more than max_differing dofs is
@@ -232,8 +232,8 @@ void SparseContactSolver::solve_pattern(HeldOperator& K, const ContactProblem& p
     // differ than its refactorization costs in solves (docs/decisions.md, "A 2D body's factor
     // holds its slipping nodes").
     const int most = K.slip_coefficient() > 0
-                         ? std::min<int>(max_differing, static_cast<int>(2 * refactorization))
-                         : max_differing;
+                         ? std::min<int>(max_differing_, static_cast<int>(2 * refactorization))
+                         : max_differing_;
     const bool renting = differing > most && costly && detour_solves_ < refactorization;
     // A factor whose held slips are the pattern's but for their directions' drift (a 3D
     // slip's moves with each Newton iteration and substep) is kept, and GCR takes the
@@ -672,6 +672,7 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     direction_coupled_.resize(m2);
     // GCR's kept directions: enough to span a large body's slips, where its solves cost more
     // than the dense algebra on them (docs/decisions.md, "GCR's kept directions span the slips").
+    max_differing_ = options.max_differing;
     const int capacity = K.dense_kernels() && K.factor_nonzeros() >= options.wide_span_nonzeros
                              ? wide_span_directions
                              : max_directions;

@@ -76,11 +76,6 @@ public:
     // iteration (orthonormalize_all), and they span most of a 3D contact zone's slips
     // (docs/decisions.md, "GCR's kept directions span the slips").
     static constexpr int wide_span_directions = 768;
-    // More dofs differing from the factor's held set than this: refactor to the pattern's,
-    // unless the factor holds nothing and a refactorization costs more than max_directions
-    // held solves: then the pattern is tried on the factor first, until such detours have
-    // cost a refactorization (solve_pattern).
-    static constexpr int max_differing = 64;
     static constexpr int max_detour = 16;
     // The solutions combined after GCR are solved again where the sizes combined exceed the
     // combination's by this (digits lost to cancellation that a solve would keep).
@@ -176,6 +171,7 @@ private:
     Eigen::VectorXd response_, direction_coupled_, coefficients_;
     std::vector<int> coupling_of_;  // per contact unknown: its coupling, or -1
     int kept_capacity_ = 0;
+    int max_differing_ = 64;  // the solve's options.max_differing
     int kept_ = 0, parked_ = 0;     // parked_: eliminate_uncoupled's, in the last slots
     Pattern kept_pattern_;
     std::vector<int> kept_unknowns_;  // the coupled unknowns the images are of

@@ -87,6 +87,7 @@ static std::unique_ptr<Stepper> path_stepper(SceneParameters p) {
     // docs/decisions.md, "The static start's load path solves its early patterns loosely"
     path->contact_options().inexact_forcing = 0.1;
     path->contact_options().wide_span_nonzeros = std::numeric_limits<double>::infinity();
+    path->contact_options().max_differing = 1024;
     return path;
 }
 

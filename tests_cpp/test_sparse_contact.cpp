@@ -336,6 +336,17 @@ SlidingRun slide_rectangle(Stepper::ContactPath path, bool snapshots) {
     run.factor_pattern = body.contact_factorization().pattern;
     return run;
 }
+// The 156-contact-node hemisphere sliding undamped at F = 0.3 from the static start (under a
+// top displacement of -2e-4 m).
+SceneParameters hemisphere_sliding() {
+    SceneParameters p;
+    p.mesh = data("hemisphere_156.msh");
+    p.dimension = 3;
+    p.friction_coefficient = 0.3;
+    p.internal_step = 1e-6;
+    p.static_initial_state = true;
+    return p;
+}
 }  // namespace
 
 // A 2D body's factor holds its slipping rows: steady sliding leaves GCR only what differs
@@ -373,12 +384,7 @@ TEST(SparseContactSolve, SlippingRowsInTheFactorSaveMostHeldSolves) {
 // contactbody.meshes.hemisphere(radius=0.05, contact_size=7e-4, far_size=2.5e-2,
 // fine_distance=0.0045, refine_distance=0.015, contact_angle=12.0).
 TEST(SparseContactSolve, UndampedSlidingKeepsItsFactor) {
-    SceneParameters p;
-    p.mesh = data("hemisphere_156.msh");
-    p.dimension = 3;
-    p.friction_coefficient = 0.3;
-    p.internal_step = 1e-6;
-    p.static_initial_state = true;
+    const SceneParameters p = hemisphere_sliding();
     const double top = -2e-4;
     std::unique_ptr<Stepper> automatic = stepper_on(p, Stepper::ContactPath::automatic);
     std::unique_ptr<Stepper> gcr = stepper_on(p, Stepper::ContactPath::sparse_gcr);
@@ -488,12 +494,7 @@ TEST(SparseContactSolve, KeptDirectionsOutlastCommunicationSteps) {
 // hemisphere, whose slips have a rho above max_held_ratio (GCR's), its factor made supernodal:
 // the same normal force and energies as with max_directions, in fewer held solves.
 TEST(SparseContactSolve, AWideSpanOfKeptDirectionsSolvesTheSlipsInFewerHeldSolves) {
-    SceneParameters p;
-    p.mesh = data("hemisphere_156.msh");
-    p.dimension = 3;
-    p.friction_coefficient = 0.3;
-    p.internal_step = 1e-6;
-    p.static_initial_state = true;
+    const SceneParameters p = hemisphere_sliding();
     const double top = -2e-4;
     struct Run {
         long solves;

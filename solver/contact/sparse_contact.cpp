@@ -95,8 +95,8 @@ void SparseContactSolver::held_set(const ContactProblem& p, const HeldOperator& 
         } else
             slip_[static_cast<size_t>(i)] = pattern_[i] > 0 ? 1 : -1;
     }
-    // Where GCR's kept directions can span every slip's unknowns, they solve them without held
-    // solves once made: a 3D factor holds slips only beyond that.
+    // Where half of GCR's kept directions can span every slip's unknowns, they solve them
+    // without held solves once made: a 3D factor holds slips only beyond that.
     if (isotropic(p)) {
         Eigen::Index held = 0;
         for (Eigen::Index i = 0; i < n; ++i)
@@ -670,19 +670,18 @@ ContactSolveInfo SparseContactSolver::solve(HeldOperator& K, const ContactProble
     coupling_of_.resize(static_cast<size_t>(m2));
     response_.resize(3 * m2);
     direction_coupled_.resize(m2);
+    max_differing_ = options.max_differing;
     // GCR's kept directions: enough to span a large body's slips, where its solves cost more
     // than the dense algebra on them (docs/decisions.md, "GCR's kept directions span the slips").
-    max_differing_ = options.max_differing;
     const int capacity = K.dense_kernels() && K.factor_nonzeros() >= options.wide_span_nonzeros
                              ? wide_span_directions
                              : max_directions;
     if (solutions_.rows() != nf || capacity != kept_capacity_) {  // another body size: the kept directions are not its
         kept_capacity_ = capacity;
         solutions_.resize(nf, kept_capacity_);
-        images_.resize(0, 0);
         kept_ = parked_ = 0;
     }
-    if (images_.rows() != m2) {
+    if (images_.rows() != m2 || images_.cols() != kept_capacity_) {
         responses_.resize(2 * m2, kept_capacity_);
         solution_size_.resize(kept_capacity_);
         image_norm_.resize(kept_capacity_);
